@@ -1,0 +1,38 @@
+// Scalar operations core needs, as a traits struct so a fixed-point type can
+// supply its own. The double versions use compiler builtins: no <cmath>
+// (not a freestanding header) and no errno-setting library paths in the
+// common cases.
+#pragma once
+
+namespace kerf {
+
+template <class S>
+struct Scalar;
+
+template <>
+struct Scalar<double> {
+  static constexpr double zero() { return 0.0; }
+  static constexpr double one() { return 1.0; }
+  static constexpr double pi() { return 3.14159265358979323846; }
+  static constexpr double from_int(long v) { return static_cast<double>(v); }
+  static double sqrt(double v) { return __builtin_sqrt(v); }
+  static double abs(double v) { return __builtin_fabs(v); }
+  static double atan2(double y, double x) { return __builtin_atan2(y, x); }
+  static double asin(double v) { return __builtin_asin(v); }
+  static double cos(double v) { return __builtin_cos(v); }
+  static double sin(double v) { return __builtin_sin(v); }
+  static bool is_finite(double v) { return __builtin_isfinite(v); }
+  static constexpr double epsilon() { return 2.220446049250313e-16; }
+  static constexpr double infinity() { return __builtin_huge_val(); }
+};
+
+template <class S>
+constexpr S min_of(S a, S b) {
+  return b < a ? b : a;
+}
+template <class S>
+constexpr S max_of(S a, S b) {
+  return a < b ? b : a;
+}
+
+}  // namespace kerf

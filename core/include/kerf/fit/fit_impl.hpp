@@ -1,0 +1,186 @@
+// Definitions behind fit/fit.hpp. Included by the one translation unit per
+// scalar type that instantiates them (src/fit_double.cpp).
+#pragma once
+
+#include "kerf/fit/esgi.hpp"
+#include "kerf/fit/fit.hpp"
+#include "kerf/fit/min_count.hpp"
+#include "kerf/fit/vertex_pair.hpp"
+
+namespace kerf::fit {
+
+namespace detail {
+
+template <class S>
+struct Oracle {
+  const Vec2<S>* pts;
+  S eps;
+  Method method;
+  AngleSet<S>* set;
+
+  bool operator()(std::uint32_t i, std::uint32_t j) {
+    if (method == Method::optimal)
+      return vertex_pair_witness(pts, i, j, eps) || vertex_pair_set(pts, i, j, eps, *set);
+    const EsgiRule rule = method == Method::esgi_max ? EsgiRule::max : EsgiRule::mean;
+    return !(esgi_arc(rule, pts, i, j, eps, eps).error > eps);
+  }
+};
+
+template <class S>
+AngleSet<S> make_set(Workspace<S> ws) {
+  const std::size_t half = ws.intervals.size() / 2;
+  return AngleSet<S>(ws.intervals.subspan(0, half), ws.intervals.subspan(half, half));
+}
+
+template <class S>
+bool storage_ok(std::size_t n, Workspace<S> ws) {
+  return ws.words.size() >= workspace_words(n) && ws.intervals.size() >= workspace_intervals(n);
+}
+
+// Pieces needed at eps, or 0 when more than `budget`; pred is left in ws.
+template <class S>
+Result<std::uint32_t> count_at(Span<const Vec2<S>> pts, S eps, Method method, Workspace<S> ws,
+                               std::uint32_t budget, std::uint32_t*& pred) {
+  AngleSet<S> set = make_set(ws);
+  Oracle<S> oracle{pts.data(), eps, method, &set};
+  const auto n = static_cast<std::uint32_t>(pts.size());
+  const Result<MinCount> r = min_count(pts.data(), n, eps, oracle, ws.words, budget, pred);
+  if (!r.ok()) return r.status();
+  return r.value().pieces;
+}
+
+template <class S>
+S bbox_diagonal(Span<const Vec2<S>> pts) {
+  Vec2<S> lo = pts[0];
+  Vec2<S> hi = pts[0];
+  for (const Vec2<S>& p : pts) {
+    lo = {min_of(lo.x, p.x), min_of(lo.y, p.y)};
+    hi = {max_of(hi.x, p.x), max_of(hi.y, p.y)};
+  }
+  return (hi - lo).norm();
+}
+
+// Smallest eps in [floor, hi] (to 1e-9 relative) at which `pieces` suffice,
+// given that they suffice at hi. Returns hi, the tightest known feasible eps.
+template <class S>
+Result<S> bisect_tol(Span<const Vec2<S>> pts, std::uint32_t pieces, Method method, Workspace<S> ws,
+                     S hi) {
+  std::uint32_t* pred = nullptr;
+  S lo = bbox_diagonal(pts) * S(1e-12);
+  {
+    const Result<std::uint32_t> c = count_at(pts, lo, method, ws, pieces, pred);
+    if (!c.ok()) return c.status();
+    if (c.value() != 0) return lo;  // exact data: any positive tol is enough
+  }
+  for (int it = 0; it < 200 && hi - lo > hi * S(1e-9); ++it) {
+    const S mid = lo + (hi - lo) / S(2);
+    const Result<std::uint32_t> c = count_at(pts, mid, method, ws, pieces, pred);
+    if (!c.ok()) return c.status();
+    if (c.value() != 0) hi = mid; else lo = mid;
+  }
+  return hi;
+}
+
+// Runs the search at eps within `pieces` and writes the path's pieces.
+template <class S>
+Result<Fit<S>> build(Span<const Vec2<S>> pts, S eps, std::uint32_t pieces, Method method,
+                     Workspace<S> ws, Span<Piece<S>> out) {
+  std::uint32_t* pred = nullptr;
+  const Result<std::uint32_t> c = count_at(pts, eps, method, ws, pieces, pred);
+  if (!c.ok()) return c.status();
+  if (c.value() == 0) return Status::infeasible;
+  const std::uint32_t count = c.value();
+  if (out.size() < count) return Status::capacity_exceeded;
+
+  AngleSet<S> set = make_set(ws);
+  Fit<S> fit{count, S(0), eps};
+  std::uint32_t j = static_cast<std::uint32_t>(pts.size()) - 1;
+  for (std::uint32_t k = count; k-- > 0;) {
+    const std::uint32_t i = pred[j];
+    const Vec2<S>* p = pts.data();
+    bool line;
+    Vec2<S> centre;
+    S error;
+    if (method == Method::optimal) {
+      const PairFit<S> f = best_vertex_pair(p, i, j, eps, set);
+      line = f.line;
+      centre = f.centre;
+      error = f.error;
+    } else {
+      const EsgiRule rule = method == Method::esgi_max ? EsgiRule::max : EsgiRule::mean;
+      const EsgiArc<S> a = esgi_arc(rule, p, i, j, Scalar<S>::infinity(), S(-1));
+      line = a.line;
+      centre = a.centre;
+      error = a.error;
+    }
+    const Chord<S> chord(p[i], p[j]);
+    const Segment<S> seg = make_segment(chord, p + i + 1, j - i - 1, line, centre, eps);
+    out[k] = Piece<S>{i, j, seg, error};
+    fit.max_error = max_of(fit.max_error, error);
+    j = i;
+  }
+  return fit;
+}
+
+template <class S>
+bool tol_ok(S tol) {
+  return Scalar<S>::is_finite(tol) && tol > S(0);
+}
+
+}  // namespace detail
+
+template <class S>
+Status validate_points(Span<const Vec2<S>> pts, std::size_t& where) {
+  for (std::size_t k = 0; k < pts.size(); ++k) {
+    where = k;
+    if (!Scalar<S>::is_finite(pts[k].x) || !Scalar<S>::is_finite(pts[k].y))
+      return Status::invalid_argument;
+    if (k > 0 && pts[k] == pts[k - 1]) return Status::degenerate;
+  }
+  where = pts.size();
+  return pts.size() < 2 ? Status::invalid_argument : Status::ok;
+}
+
+template <class S>
+Result<std::uint32_t> count_min(Span<const Vec2<S>> pts, S tol, Method method, Workspace<S> ws) {
+  std::size_t where = 0;
+  if (const Status s = validate_points(pts, where); s != Status::ok) return s;
+  if (!detail::tol_ok(tol)) return Status::invalid_argument;
+  if (!detail::storage_ok(pts.size(), ws)) return Status::capacity_exceeded;
+  std::uint32_t* pred = nullptr;
+  return detail::count_at(pts, tol, method, ws, static_cast<std::uint32_t>(pts.size()), pred);
+}
+
+template <class S>
+Result<Fit<S>> fit_min_count(Span<const Vec2<S>> pts, S tol, Method method, Workspace<S> ws,
+                             Span<Piece<S>> out) {
+  const Result<std::uint32_t> count = count_min(pts, tol, method, ws);
+  if (!count.ok()) return count.status();
+  // The tie-break: the smallest tol that still allows this count.
+  const Result<S> best = detail::bisect_tol(pts, count.value(), method, ws, tol);
+  if (!best.ok()) return best.status();
+  Result<Fit<S>> fit = detail::build(pts, best.value(), count.value(), method, ws, out);
+  if (fit.ok()) fit.value().tol = tol;
+  return fit;
+}
+
+template <class S>
+Result<Fit<S>> fit_min_error(Span<const Vec2<S>> pts, std::uint32_t pieces, Method method,
+                             Workspace<S> ws, Span<Piece<S>> out) {
+  std::size_t where = 0;
+  if (const Status s = validate_points(pts, where); s != Status::ok) return s;
+  if (pieces == 0) return Status::invalid_argument;
+  if (!detail::storage_ok(pts.size(), ws)) return Status::capacity_exceeded;
+  // Any positive tol works for n - 1 pieces; the bounding box's diagonal
+  // lets one piece (or two, for a closed loop) through.
+  const S hi = detail::bbox_diagonal(pts) * S(2);
+  std::uint32_t* pred = nullptr;
+  const Result<std::uint32_t> c = detail::count_at(pts, hi, method, ws, pieces, pred);
+  if (!c.ok()) return c.status();
+  if (c.value() == 0) return Status::infeasible;
+  const Result<S> best = detail::bisect_tol(pts, pieces, method, ws, hi);
+  if (!best.ok()) return best.status();
+  return detail::build(pts, best.value(), pieces, method, ws, out);
+}
+
+}  // namespace kerf::fit

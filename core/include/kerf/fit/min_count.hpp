@@ -1,0 +1,90 @@
+// Fewest pieces: breadth-first search over the DAG of feasible pairs i -> j,
+// layer by layer, in O(n) memory beyond the input.
+//
+// Feasibility is not monotone in j (p_i -> p_j may work when p_i -> p_{j-1}
+// does not), so a start point i is given up only when the monotone necessary
+// condition in fit/prefix_guard.hpp fails for it; until then every later j
+// is tried. Layer k+1 is built by walking j upwards from the first start in
+// layer k and asking the live starts of layer k, nearest first, for one that
+// reaches j. The walk ends when every start of layer k is dead, so a node left
+// out of layer k+1 is provably unreachable in k+1 pieces.
+#pragma once
+
+#include <cstdint>
+
+#include "kerf/core/span.hpp"
+#include "kerf/core/status.hpp"
+#include "kerf/fit/prefix_guard.hpp"
+
+namespace kerf::fit {
+
+constexpr std::uint32_t unreached = 0xFFFFFFFFu;
+
+// Words of index storage the search needs for n points.
+constexpr std::size_t min_count_words(std::size_t n) { return 4 * n; }
+
+struct MinCount {
+  std::uint32_t pieces = 0;  // 0 when the budget was exceeded
+};
+
+// Oracle: bool feasible(i, j) for i < j. pred receives, for each reached
+// node, the start of its last piece. Stops with pieces = 0 as soon as more
+// than `budget` pieces would be needed.
+template <class S, class Oracle>
+Result<MinCount> min_count(const Vec2<S>* pts, std::uint32_t n, S eps, Oracle& feasible,
+                           Span<std::uint32_t> words, std::uint32_t budget, std::uint32_t*& pred_out) {
+  if (n < 2) return Status::invalid_argument;
+  if (words.size() < min_count_words(n)) return Status::capacity_exceeded;
+  std::uint32_t* dist = words.data();
+  std::uint32_t* pred = dist + n;
+  std::uint32_t* cur = pred + n;   // live starts of layer k, ascending
+  std::uint32_t* next = cur + n;   // layer k + 1, ascending
+  for (std::uint32_t k = 0; k < n; ++k) dist[k] = unreached;
+  dist[0] = 0;
+  pred[0] = 0;
+  pred_out = pred;
+  cur[0] = 0;
+  std::uint32_t cur_size = 1;
+
+  for (std::uint32_t layer = 0; dist[n - 1] == unreached; ++layer) {
+    if (layer >= budget || cur_size == 0) return MinCount{0};
+    std::uint32_t next_size = 0;
+    std::uint32_t below = 0;  // starts cur[0..below) lie before j
+    for (std::uint32_t j = cur[0] + 1; j < n && cur_size > 0; ++j) {
+      while (below < cur_size && cur[below] < j) ++below;
+      if (dist[j] != unreached) continue;
+      bool died = false;
+      for (std::uint32_t s = below; s-- > 0;) {
+        const std::uint32_t i = cur[s];
+        if (i == unreached) continue;
+        if (!prefix_guard(pts, i, j, eps)) {
+          cur[s] = unreached;
+          died = true;
+          continue;
+        }
+        if (feasible(i, j)) {
+          dist[j] = layer + 1;
+          pred[j] = i;
+          next[next_size++] = j;
+          break;
+        }
+      }
+      if (died) {  // drop dead starts, keeping order
+        std::uint32_t w = 0;
+        std::uint32_t new_below = 0;
+        for (std::uint32_t s = 0; s < cur_size; ++s) {
+          if (cur[s] == unreached) continue;
+          if (s < below) ++new_below;
+          cur[w++] = cur[s];
+        }
+        cur_size = w;
+        below = new_below;
+      }
+    }
+    for (std::uint32_t s = 0; s < next_size; ++s) cur[s] = next[s];
+    cur_size = next_size;
+  }
+  return MinCount{dist[n - 1]};
+}
+
+}  // namespace kerf::fit

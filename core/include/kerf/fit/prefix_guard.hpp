@@ -1,0 +1,67 @@
+// A monotone necessary condition for the vertex criterion, used to stop
+// looking at a start point i once no later end point can work.
+//
+// If p_i -> p_j is feasible, one circle C through p_i passes within eps of
+// every p_k, i < k <= j. So for every j' <= j and any three points a, b, c in
+// (i, j'], "some circle through p_i passes within eps of p_a, p_b and p_c"
+// holds. The guard checks that for (a, b, c) = the thirds of (i, j'] and j'
+// itself, at the j' it is asked about, and stays false once it fails: the
+// conjunction over the j' seen so far is necessary for every later j and can
+// only shrink as j grows. Skipping some j' only weakens it, which stays safe.
+//
+// The check itself: map q = p - p_i to z = q / (|q|^2 - eps^2). Circles and
+// lines through p_i become lines, and "within eps" (for radii >= eps) becomes
+// "the line meets the disc of radius eps / (|q|^2 - eps^2) around z". A line
+// meets three discs iff the three pairwise conditions |beta.(z_a - z_b)| <=
+// e_a + e_b share a unit normal beta, which is an intersection of three arcs
+// of directions (mod pi). A circle through p_i with r < eps keeps every
+// point within 3 eps of p_i, so a point that close makes the guard pass.
+#pragma once
+
+#include <cstdint>
+
+#include "kerf/fit/angle_set.hpp"
+#include "kerf/geom/vec2.hpp"
+
+namespace kerf::fit {
+
+template <class S>
+bool circle_through_near_three(Vec2<S> origin, const Vec2<S> pts[3], S eps) {
+  using M = Scalar<S>;
+  Vec2<S> z[3];
+  S e[3];
+  for (int k = 0; k < 3; ++k) {
+    const Vec2<S> q = pts[k] - origin;
+    const S s = q.norm2() - eps * eps;
+    if (!(q.norm2() > S(9) * eps * eps)) return true;
+    z[k] = q * (S(1) / s);
+    e[k] = eps / s;
+  }
+  Interval<S> buf_a[4];
+  Interval<S> buf_b[4];
+  AngleSet<S> set{Span<Interval<S>>(buf_a), Span<Interval<S>>(buf_b)};
+  const int pairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
+  for (const auto& pr : pairs) {
+    const Vec2<S> w = z[pr[0]] - z[pr[1]];
+    const S lim = e[pr[0]] + e[pr[1]];
+    const S len = w.norm();
+    if (!(len > lim)) continue;
+    // |beta . w| <= lim: beta within asin(lim/len) of the normal of w.
+    const S centre = M::atan2(w.y, w.x) + M::pi() / S(2);
+    set.intersect_arc(centre, M::asin(lim / len));
+    if (set.empty()) return false;
+  }
+  return true;
+}
+
+// Stateless apart from the caller's "alive" flag: check(i, j) is evaluated
+// at the j the search asks about and the caller keeps i dead once it fails.
+template <class S>
+bool prefix_guard(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, S eps) {
+  if (j < i + 3) return true;
+  const std::uint32_t span = j - i;
+  const Vec2<S> three[3] = {pts[i + span / 3], pts[i + (2 * span) / 3], pts[j]};
+  return circle_through_near_three(pts[i], three, eps);
+}
+
+}  // namespace kerf::fit

@@ -1,0 +1,182 @@
+// The exact vertex criterion for one candidate piece p_i -> p_j: does a circle
+// (or the line) through both end points pass within eps of every point in
+// between, and which one passes closest?
+//
+// Derivation (see fit/chord.hpp for phi). For an inner point p with
+// v = p - mid, A = |v|^2 - h^2 and B = v.n, the power of p is linear in t:
+//   |p - c(t)|^2 - r(t)^2 = A - 2 t B.
+// The annulus condition (r - eps)^2 <= |p - c|^2 <= (r + eps)^2 reads
+//   |A - eps^2 - 2 t B| <= 2 eps r(t),
+// and multiplying by sin(phi) > 0 (r = h / sin(phi), t = h cot(phi)):
+//   |(A - eps^2) sin(phi) - 2 h B cos(phi)| <= 2 eps h,
+//   i.e. |R sin(phi - psi)| <= 2 eps h  with R cos(psi) = A - eps^2, R sin(psi) = 2 h B.
+// So each inner point allows one arc of phi, centred on psi (mod pi), of half
+// width asin(2 eps h / R); phi = 0 (the line) is allowed exactly when |B| <= eps.
+//
+// The annulus equals the true condition |d - r| <= eps whenever r >= eps. A
+// circle with r < eps also accepts points with d <= eps - r near its centre;
+// that needs h < eps (r >= h) and is added explicitly, so the test is exact.
+#pragma once
+
+#include <cstdint>
+
+#include "kerf/fit/angle_set.hpp"
+#include "kerf/fit/chord.hpp"
+
+namespace kerf::fit {
+
+namespace detail {
+
+// Sorts up to four intervals by lo and merges overlaps, in place.
+template <class S>
+std::size_t normalise(Interval<S>* v, std::size_t n) {
+  for (std::size_t i = 1; i < n; ++i)
+    for (std::size_t k = i; k > 0 && v[k].lo < v[k - 1].lo; --k) {
+      const Interval<S> t = v[k];
+      v[k] = v[k - 1];
+      v[k - 1] = t;
+    }
+  std::size_t out = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (out > 0 && !(v[out - 1].hi < v[i].lo))
+      v[out - 1].hi = max_of(v[out - 1].hi, v[i].hi);
+    else
+      v[out++] = v[i];
+  }
+  return out;
+}
+
+}  // namespace detail
+
+// Narrows `set` to the phi at which p is within eps of the circle.
+template <class S>
+Status constrain(AngleSet<S>& set, const Chord<S>& chord, Vec2<S> p, S eps) {
+  using M = Scalar<S>;
+  const Vec2<S> v = p - chord.mid;
+  const S h = chord.h;
+  const S a = v.norm2() - h * h - eps * eps;
+  const S b = S(2) * h * v.dot(chord.n);
+  const S r = M::sqrt(a * a + b * b);
+  const S lim = S(2) * eps * h;
+  if (!(r > lim)) return Status::ok;  // every circle through a and b passes close enough
+  const S half = M::asin(lim / r);
+  const S psi = M::atan2(b, a);
+  if (!(h < eps)) return set.intersect_arc(psi, half);
+
+  // Tiny circles (r < eps, i.e. sin(phi) > h / eps) also accept the point when
+  // d <= eps - r, which is R sin(phi - psi) <= -2 eps h on phi in (0, pi).
+  Interval<S> parts[4];
+  std::size_t n = arc_parts(psi, half, parts);
+  const S pi = M::pi();
+  const S gamma = M::asin(h / eps);
+  for (int m = -1; m <= 0; ++m) {
+    const S lo = max_of(psi + pi + half + S(2) * pi * S(m), gamma);
+    const S hi = min_of(psi + S(2) * pi - half + S(2) * pi * S(m), pi - gamma);
+    if (!(hi < lo)) parts[n++] = {lo, hi};
+  }
+  n = detail::normalise(parts, n);
+  return set.intersect(parts, n);
+}
+
+// Narrows `set` to the circles through p_i and p_j within eps of every inner
+// point. Stops as soon as the set is empty. Returns false when it is (or when
+// storage ran out, which callers size so that it cannot).
+template <class S>
+bool vertex_pair_set(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, S eps, AngleSet<S>& set) {
+  set.reset();
+  if (j <= i + 1) return true;
+  const Chord<S> chord(pts[i], pts[j]);
+  if (!(chord.h > S(0))) {
+    set.intersect(nullptr, 0);  // a closed loop has no unique arc
+    return false;
+  }
+  // A few spread points first: an infeasible pair usually fails on them.
+  const std::uint32_t m = j - i - 1;
+  const std::uint32_t probes[3] = {i + 1 + m / 2, i + 1 + m / 4, i + 1 + (3 * m) / 4};
+  for (std::uint32_t k : probes) {
+    if (constrain(set, chord, pts[k], eps) != Status::ok || set.empty()) return false;
+  }
+  for (std::uint32_t k = i + 1; k < j; ++k) {
+    if (constrain(set, chord, pts[k], eps) != Status::ok || set.empty()) return false;
+  }
+  return true;
+}
+
+// A cheap sufficient test: the circle through p_i, the middle point and p_j
+// (or the line, if they are collinear), checked with squared distances.
+template <class S>
+bool vertex_pair_witness(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, S eps) {
+  if (j <= i + 2) return true;  // a line, or the circle through all three points
+  const Vec2<S> a = pts[i];
+  const Vec2<S> b = pts[j];
+  const Vec2<S> d = b - a;
+  if (d.norm2() == S(0)) return false;
+  const Vec2<S> m = pts[(i + j) / 2];
+  const Vec2<S> u = m - a;
+  const S det = S(2) * d.cross(u);
+  if (det == S(0)) {  // collinear: the line
+    const S lim2 = eps * eps * d.norm2();
+    for (std::uint32_t k = i + 1; k < j; ++k) {
+      const S c = d.cross(pts[k] - a);
+      if (c * c > lim2) return false;
+    }
+    return true;
+  }
+  const S dd = d.norm2();
+  const S uu = u.norm2();
+  const Vec2<S> c{(u.y * dd - d.y * uu) / det, (d.x * uu - u.x * dd) / det};  // relative to a
+  const S r = c.norm();
+  const S lo = r > eps ? (r - eps) * (r - eps) : S(0);
+  const S hi = (r + eps) * (r + eps);
+  for (std::uint32_t k = i + 1; k < j; ++k) {
+    const S q = (pts[k] - a - c).norm2();
+    if (q < lo || q > hi) return false;
+  }
+  return true;
+}
+
+// The piece p_i -> p_j with the smallest max distance of its inner points,
+// found by bisecting eps' in [0, eps] on the exact test. Precondition: the
+// pair is feasible at eps.
+template <class S>
+struct PairFit {
+  bool line = true;
+  Vec2<S> centre{};
+  S error{};  // the largest inner distance of the chosen piece
+};
+
+template <class S>
+S line_error(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j) {
+  const Chord<S> chord(pts[i], pts[j]);
+  S e = S(0);
+  for (std::uint32_t k = i + 1; k < j; ++k) e = max_of(e, Scalar<S>::abs(chord.offset(pts[k])));
+  return e;
+}
+
+template <class S>
+PairFit<S> best_vertex_pair(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, S eps,
+                            AngleSet<S>& set) {
+  PairFit<S> fit;
+  fit.error = line_error(pts, i, j);
+  if (j <= i + 1 || fit.error == S(0)) return fit;
+  S lo = S(0);
+  S hi = eps;
+  for (int it = 0; it < 200 && hi - lo > hi * S(1e-12); ++it) {
+    const S mid = (lo + hi) / S(2);
+    if (vertex_pair_set(pts, i, j, mid, set)) hi = mid; else lo = mid;
+  }
+  // The line wins ties: a machine runs it without an enormous centre.
+  if (fit.error <= hi) return fit;
+  vertex_pair_set(pts, i, j, hi, set);
+  if (set.empty() || set.contains_line()) return fit;
+  const Chord<S> chord(pts[i], pts[j]);
+  fit.line = false;
+  fit.centre = chord.centre((set[0].lo + set[0].hi) / S(2));
+  const S r = (pts[i] - fit.centre).norm();
+  fit.error = S(0);
+  for (std::uint32_t k = i + 1; k < j; ++k)
+    fit.error = max_of(fit.error, distance_to_circle(fit.centre, r, pts[k]));
+  return fit;
+}
+
+}  // namespace kerf::fit
