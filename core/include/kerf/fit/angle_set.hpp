@@ -1,10 +1,17 @@
-// A subset of the projective circle [0, pi] (0 and pi are the same point),
-// kept as sorted, disjoint closed intervals in caller-provided storage.
+// A subset of the projective circle of directions (a direction and its
+// opposite are the same point), kept as sorted, disjoint closed intervals in
+// caller-provided storage.
 //
 // The exact vertex test parametrises the circles through two points by an
 // angle phi in [0, pi), phi = 0 being the line. Each inner point allows one
 // arc of phi (mod pi), and the intersection of such arcs can split into
 // several pieces, so the set is a list, not one interval.
+//
+// Angles are stored as pseudo-angles q in [0, 2): q = 1 - x / (|x| + y) for
+// the direction (x, y) with y >= 0. q is strictly increasing in the true angle,
+// so intersections are the same as with radians, but it needs no atan2, and
+// arc end points come from a rotation by (sqrt(1 - k^2), k) instead of asin.
+// That is what makes the exact test cheap, and portable to fixed point.
 #pragma once
 
 #include <cstddef>
@@ -12,6 +19,7 @@
 #include "kerf/core/scalar.hpp"
 #include "kerf/core/span.hpp"
 #include "kerf/core/status.hpp"
+#include "kerf/geom/vec2.hpp"
 
 namespace kerf::fit {
 
@@ -21,31 +29,33 @@ struct Interval {
   S hi{};
 };
 
-// Writes the arc [centre - half, centre + half] (mod pi) as at most two
-// sorted intervals of [0, pi]. half >= pi/2 covers the whole circle.
+// The pseudo-angle of direction d (mod pi); d must not be zero.
 template <class S>
-std::size_t arc_parts(S centre, S half, Interval<S> out[2]) {
-  const S pi = Scalar<S>::pi();
-  if (!(half < pi / S(2))) {
-    out[0] = {S(0), pi};
+S pseudo_angle(Vec2<S> d) {
+  if (d.y < S(0) || (d.y == S(0) && d.x < S(0))) d = -d;
+  return S(1) - d.x / (Scalar<S>::abs(d.x) + d.y);
+}
+
+// A direction (not normalised) whose pseudo-angle is q, 0 <= q <= 2.
+template <class S>
+Vec2<S> direction_of(S q) {
+  return q <= S(1) ? Vec2<S>{S(1) - q, q} : Vec2<S>{S(1) - q, S(2) - q};
+}
+
+// Writes the directions within asin(k) of the unit direction u (mod pi),
+// 0 <= k < 1, as at most two sorted intervals of [0, 2].
+template <class S>
+std::size_t arc_parts(Vec2<S> u, S k, Interval<S> out[2]) {
+  const S c = Scalar<S>::sqrt(S(1) - k * k);
+  const S lo = pseudo_angle(Vec2<S>{u.x * c + u.y * k, u.y * c - u.x * k});
+  const S hi = pseudo_angle(Vec2<S>{u.x * c - u.y * k, u.y * c + u.x * k});
+  if (!(hi < lo)) {
+    out[0] = {lo, hi};
     return 1;
   }
-  while (centre < S(0)) centre = centre + pi;
-  while (!(centre < pi)) centre = centre - pi;
-  const S lo = centre - half;
-  const S hi = centre + half;
-  if (lo < S(0)) {
-    out[0] = {S(0), hi};
-    out[1] = {lo + pi, pi};
-    return 2;
-  }
-  if (hi > pi) {
-    out[0] = {S(0), hi - pi};
-    out[1] = {lo, pi};
-    return 2;
-  }
-  out[0] = {lo, hi};
-  return 1;
+  out[0] = {S(0), hi};  // the arc contains the line's direction: it wraps
+  out[1] = {lo, S(2)};
+  return 2;
 }
 
 template <class S>
@@ -55,14 +65,14 @@ class AngleSet {
   AngleSet(Span<Interval<S>> a, Span<Interval<S>> b) : cur_(a), spare_(b) { reset(); }
 
   void reset() {
-    cur_[0] = {S(0), Scalar<S>::pi()};
+    cur_[0] = {S(0), S(2)};
     size_ = 1;
   }
   bool empty() const { return size_ == 0; }
   std::size_t size() const { return size_; }
   const Interval<S>& operator[](std::size_t k) const { return cur_[k]; }
   bool contains_line() const {
-    return size_ > 0 && (!(cur_[0].lo > S(0)) || !(cur_[size_ - 1].hi < Scalar<S>::pi()));
+    return size_ > 0 && (!(cur_[0].lo > S(0)) || !(cur_[size_ - 1].hi < S(2)));
   }
 
   // Intersects with a union of sorted intervals (they may touch or overlap).
@@ -90,11 +100,11 @@ class AngleSet {
     return Status::ok;
   }
 
-  Status intersect_arc(S centre, S half) {
+  // Intersects with the directions within asin(k) of unit direction u.
+  Status intersect_arc(Vec2<S> u, S k) {
+    if (!(k < S(1))) return Status::ok;
     Interval<S> parts[2];
-    const std::size_t n = arc_parts(centre, half, parts);
-    if (n == 1 && !(parts[0].lo > S(0)) && !(parts[0].hi < Scalar<S>::pi())) return Status::ok;
-    return intersect(parts, n);
+    return intersect(parts, arc_parts(u, k, parts));
   }
 
  private:

@@ -28,10 +28,8 @@ struct Chord {
     n = len > S(0) ? d.perp() * (S(1) / len) : Vec2<S>{};
   }
 
-  // The centre for angle phi in (0, pi).
-  Vec2<S> centre(S phi) const {
-    return mid + n * (h * Scalar<S>::cos(phi) / Scalar<S>::sin(phi));
-  }
+  // The centre for the direction d = (cos phi, sin phi) up to scale, phi in (0, pi).
+  Vec2<S> centre(Vec2<S> d) const { return mid + n * (h * d.x / d.y); }
   // Signed distance of p from the chord's line, > 0 on the left of a->b.
   S offset(Vec2<S> p) const { return (p - mid).dot(n); }
 };

@@ -35,7 +35,7 @@ struct Fit {
 };
 
 // Storage for n points: index words and two interval buffers.
-constexpr std::size_t workspace_words(std::size_t n) { return 4 * n; }
+constexpr std::size_t workspace_words(std::size_t n) { return 5 * n; }
 constexpr std::size_t workspace_intervals(std::size_t n) { return 2 * (3 * n + 8); }
 
 template <class S>

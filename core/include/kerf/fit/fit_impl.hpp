@@ -18,9 +18,15 @@ struct Oracle {
   Method method;
   AngleSet<S>* set;
 
-  bool operator()(std::uint32_t i, std::uint32_t j) {
-    if (method == Method::optimal)
-      return vertex_pair_witness(pts, i, j, eps) || vertex_pair_set(pts, i, j, eps, *set);
+  bool operator()(std::uint32_t i, std::uint32_t j, std::uint32_t& hint) {
+    if (method == Method::optimal) {
+      // A start whose last exact test failed is probably past its reach: go
+      // straight to the exact test, which tries the point that failed first.
+      if (hint == 0 && vertex_pair_witness(pts, i, j, eps)) return true;
+      const bool ok = vertex_pair_set(pts, i, j, eps, *set, &hint);
+      if (ok) hint = 0;
+      return ok;
+    }
     const EsgiRule rule = method == Method::esgi_max ? EsgiRule::max : EsgiRule::mean;
     return !(esgi_arc(rule, pts, i, j, eps, eps).error > eps);
   }

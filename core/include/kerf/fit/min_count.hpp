@@ -21,13 +21,14 @@ namespace kerf::fit {
 constexpr std::uint32_t unreached = 0xFFFFFFFFu;
 
 // Words of index storage the search needs for n points.
-constexpr std::size_t min_count_words(std::size_t n) { return 4 * n; }
+constexpr std::size_t min_count_words(std::size_t n) { return 5 * n; }
 
 struct MinCount {
   std::uint32_t pieces = 0;  // 0 when the budget was exceeded
 };
 
-// Oracle: bool feasible(i, j) for i < j. pred receives, for each reached
+// Oracle: bool feasible(i, j, hint) for i < j, where hint is a word kept per
+// start for the oracle's own use (0 at first). pred receives, for each reached
 // node, the start of its last piece. Stops with pieces = 0 as soon as more
 // than `budget` pieces would be needed.
 template <class S, class Oracle>
@@ -39,11 +40,13 @@ Result<MinCount> min_count(const Vec2<S>* pts, std::uint32_t n, S eps, Oracle& f
   std::uint32_t* pred = dist + n;
   std::uint32_t* cur = pred + n;   // live starts of layer k, ascending
   std::uint32_t* next = cur + n;   // layer k + 1, ascending
+  std::uint32_t* hint = next + n;  // the oracle's word for each live start
   for (std::uint32_t k = 0; k < n; ++k) dist[k] = unreached;
   dist[0] = 0;
   pred[0] = 0;
   pred_out = pred;
   cur[0] = 0;
+  hint[0] = 0;
   std::uint32_t cur_size = 1;
 
   for (std::uint32_t layer = 0; dist[n - 1] == unreached; ++layer) {
@@ -57,16 +60,16 @@ Result<MinCount> min_count(const Vec2<S>* pts, std::uint32_t n, S eps, Oracle& f
       for (std::uint32_t s = below; s-- > 0;) {
         const std::uint32_t i = cur[s];
         if (i == unreached) continue;
-        if (!prefix_guard(pts, i, j, eps)) {
-          cur[s] = unreached;
-          died = true;
-          continue;
-        }
-        if (feasible(i, j)) {
+        if (feasible(i, j, hint[s])) {
           dist[j] = layer + 1;
           pred[j] = i;
           next[next_size++] = j;
           break;
+        }
+        // Only a start that just failed needs the guard's verdict.
+        if (!prefix_guard(pts, i, j, eps)) {
+          cur[s] = unreached;
+          died = true;
         }
       }
       if (died) {  // drop dead starts, keeping order
@@ -75,13 +78,17 @@ Result<MinCount> min_count(const Vec2<S>* pts, std::uint32_t n, S eps, Oracle& f
         for (std::uint32_t s = 0; s < cur_size; ++s) {
           if (cur[s] == unreached) continue;
           if (s < below) ++new_below;
+          hint[w] = hint[s];
           cur[w++] = cur[s];
         }
         cur_size = w;
         below = new_below;
       }
     }
-    for (std::uint32_t s = 0; s < next_size; ++s) cur[s] = next[s];
+    for (std::uint32_t s = 0; s < next_size; ++s) {
+      cur[s] = next[s];
+      hint[s] = 0;
+    }
     cur_size = next_size;
   }
   return MinCount{dist[n - 1]};

@@ -14,13 +14,12 @@
 // "the line meets the disc of radius eps / (|q|^2 - eps^2) around z". A line
 // meets three discs iff the three pairwise conditions |beta.(z_a - z_b)| <=
 // e_a + e_b share a unit normal beta, which is an intersection of three arcs
-// of directions (mod pi). A circle through p_i with r < eps keeps every
+// of directions (mod pi), decided by testing the arcs' end points. A circle through p_i with r < eps keeps every
 // point within 3 eps of p_i, so a point that close makes the guard pass.
 #pragma once
 
 #include <cstdint>
 
-#include "kerf/fit/angle_set.hpp"
 #include "kerf/geom/vec2.hpp"
 
 namespace kerf::fit {
@@ -37,21 +36,36 @@ bool circle_through_near_three(Vec2<S> origin, const Vec2<S> pts[3], S eps) {
     z[k] = q * (S(1) / s);
     e[k] = eps / s;
   }
-  Interval<S> buf_a[4];
-  Interval<S> buf_b[4];
-  AngleSet<S> set{Span<Interval<S>>(buf_a), Span<Interval<S>>(buf_b)};
+  // Constraint c: |beta . w[c]| <= lim[c]. If the allowed directions of all
+  // three meet, the first direction of their intersection is an end point of
+  // one constraint's arc, so checking the (at most six) end points decides.
+  Vec2<S> w[3];
+  S lim[3];
   const int pairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
+  int active = 0;
   for (const auto& pr : pairs) {
-    const Vec2<S> w = z[pr[0]] - z[pr[1]];
-    const S lim = e[pr[0]] + e[pr[1]];
-    const S len = w.norm();
-    if (!(len > lim)) continue;
-    // |beta . w| <= lim: beta within asin(lim/len) of the normal of w.
-    const S centre = M::atan2(w.y, w.x) + M::pi() / S(2);
-    set.intersect_arc(centre, M::asin(lim / len));
-    if (set.empty()) return false;
+    w[active] = z[pr[0]] - z[pr[1]];
+    lim[active] = e[pr[0]] + e[pr[1]];
+    if (w[active].norm2() > lim[active] * lim[active]) ++active;
   }
-  return true;
+  if (active < 2) return true;  // one arc alone is never empty
+  // Slack for rounding: a direction on the boundary must not be rejected.
+  const S slack = S(1) + S(64) * M::epsilon();
+  for (int c = 0; c < active; ++c) {
+    const S len = w[c].norm();
+    const Vec2<S> u = w[c].perp() * (S(1) / len);  // |beta . w| = 0 along u
+    const S k = lim[c] / len;
+    const S co = M::sqrt(S(1) - k * k);
+    const Vec2<S> ends[2] = {{u.x * co - u.y * k, u.y * co + u.x * k},
+                             {u.x * co + u.y * k, u.y * co - u.x * k}};
+    for (const Vec2<S>& beta : ends) {
+      bool all = true;
+      for (int d = 0; d < active && all; ++d)
+        all = M::abs(beta.dot(w[d])) <= lim[d] * slack;
+      if (all) return true;
+    }
+  }
+  return false;
 }
 
 // Stateless apart from the caller's "alive" flag: check(i, j) is evaluated

@@ -59,20 +59,25 @@ Status constrain(AngleSet<S>& set, const Chord<S>& chord, Vec2<S> p, S eps) {
   const S r = M::sqrt(a * a + b * b);
   const S lim = S(2) * eps * h;
   if (!(r > lim)) return Status::ok;  // every circle through a and b passes close enough
-  const S half = M::asin(lim / r);
-  const S psi = M::atan2(b, a);
-  if (!(h < eps)) return set.intersect_arc(psi, half);
+  const Vec2<S> psi{a / r, b / r};    // the direction (cos psi, sin psi)
+  if (!(h < eps)) return set.intersect_arc(psi, lim / r);
 
   // Tiny circles (r < eps, i.e. sin(phi) > h / eps) also accept the point when
   // d <= eps - r, which is R sin(phi - psi) <= -2 eps h on phi in (0, pi).
+  // Only chords shorter than 2 eps get here, so plain angles are fine.
   Interval<S> parts[4];
-  std::size_t n = arc_parts(psi, half, parts);
+  std::size_t n = arc_parts(psi, lim / r, parts);
   const S pi = M::pi();
+  const S half = M::asin(lim / r);
+  const S ang = M::atan2(b, a);
   const S gamma = M::asin(h / eps);
   for (int m = -1; m <= 0; ++m) {
-    const S lo = max_of(psi + pi + half + S(2) * pi * S(m), gamma);
-    const S hi = min_of(psi + S(2) * pi - half + S(2) * pi * S(m), pi - gamma);
-    if (!(hi < lo)) parts[n++] = {lo, hi};
+    const S lo = max_of(ang + pi + half + S(2) * pi * S(m), gamma);
+    const S hi = min_of(ang + S(2) * pi - half + S(2) * pi * S(m), pi - gamma);
+    if (!(hi < lo)) {
+      parts[n++] = {pseudo_angle(Vec2<S>{M::cos(lo), M::sin(lo)}),
+                    pseudo_angle(Vec2<S>{M::cos(hi), M::sin(hi)})};
+    }
   }
   n = detail::normalise(parts, n);
   return set.intersect(parts, n);
@@ -81,8 +86,13 @@ Status constrain(AngleSet<S>& set, const Chord<S>& chord, Vec2<S> p, S eps) {
 // Narrows `set` to the circles through p_i and p_j within eps of every inner
 // point. Stops as soon as the set is empty. Returns false when it is (or when
 // storage ran out, which callers size so that it cannot).
+//
+// `hint`, if given, names an inner point to try first and receives the point
+// that emptied the set: the same start usually fails on the same point for
+// the next end point too, which makes a proof of infeasibility cost O(1).
 template <class S>
-bool vertex_pair_set(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, S eps, AngleSet<S>& set) {
+bool vertex_pair_set(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, S eps, AngleSet<S>& set,
+                     std::uint32_t* hint = nullptr) {
   set.reset();
   if (j <= i + 1) return true;
   const Chord<S> chord(pts[i], pts[j]);
@@ -90,14 +100,24 @@ bool vertex_pair_set(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, S eps
     set.intersect(nullptr, 0);  // a closed loop has no unique arc
     return false;
   }
-  // A few spread points first: an infeasible pair usually fails on them.
-  const std::uint32_t m = j - i - 1;
-  const std::uint32_t probes[3] = {i + 1 + m / 2, i + 1 + m / 4, i + 1 + (3 * m) / 4};
-  for (std::uint32_t k : probes) {
-    if (constrain(set, chord, pts[k], eps) != Status::ok || set.empty()) return false;
+  // Coarse to fine (m/2, then quarters, eighths, ...): far-apart points
+  // constrain phi most, so an infeasible pair usually fails within a few.
+  if (hint != nullptr && *hint > i && *hint < j) {
+    if (constrain(set, chord, pts[*hint], eps) != Status::ok || set.empty()) return false;
   }
-  for (std::uint32_t k = i + 1; k < j; ++k) {
-    if (constrain(set, chord, pts[k], eps) != Status::ok || set.empty()) return false;
+  const std::uint32_t m = j - i - 1;
+  std::uint32_t top = 1;
+  while (top < m) top *= 2;
+  for (std::uint32_t step = top; step > 0; step /= 2) {
+    const std::uint32_t first = step == top ? 0 : step;
+    const std::uint32_t stride = step == top ? top : 2 * step;
+    for (std::uint32_t k = first; k < m; k += stride) {
+      const std::uint32_t at = i + 1 + (k + m / 2) % m;
+      if (constrain(set, chord, pts[at], eps) != Status::ok || set.empty()) {
+        if (hint != nullptr) *hint = at;
+        return false;
+      }
+    }
   }
   return true;
 }
@@ -171,7 +191,7 @@ PairFit<S> best_vertex_pair(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j
   if (set.empty() || set.contains_line()) return fit;
   const Chord<S> chord(pts[i], pts[j]);
   fit.line = false;
-  fit.centre = chord.centre((set[0].lo + set[0].hi) / S(2));
+  fit.centre = chord.centre(direction_of((set[0].lo + set[0].hi) / S(2)));
   const S r = (pts[i] - fit.centre).norm();
   fit.error = S(0);
   for (std::uint32_t k = i + 1; k < j; ++k)
