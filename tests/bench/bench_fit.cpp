@@ -13,6 +13,7 @@
 #include <cstring>
 #include <vector>
 
+#include "io/fit_storage.hpp"
 #include "kerf/fit/fit.hpp"
 
 namespace {
@@ -42,17 +43,15 @@ struct Run {
 // Best of `repeat` runs of either the bare count (the search) or the whole
 // fit: count, tie-break on the smallest max error, and the pieces.
 Run measure(const std::vector<Vec2<double>>& p, bool whole_fit, int repeat) {
-  std::vector<std::uint32_t> words(fit::workspace_words(p.size()));
-  std::vector<fit::Interval<double>> intervals(fit::workspace_intervals(p.size()));
-  std::vector<fit::Piece<double>> out(p.size());
-  const fit::Workspace<double> ws{{words.data(), words.size()}, {intervals.data(), intervals.size()}};
+  kerf::io::FitStorage storage(p.size());
+  const fit::Workspace<double> ws = storage.workspace();
   Run best{0, 1e300};
   for (int r = 0; r < repeat; ++r) {
     const auto t0 = std::chrono::steady_clock::now();
     kerf::Status status;
     if (whole_fit) {
       const auto res = fit::fit_min_count<double>({p.data(), p.size()}, kTol, fit::Method::optimal,
-                                                  ws, {out.data(), out.size()});
+                                                  ws, storage.pieces());
       status = res.status();
       best.pieces = res.value().pieces;
     } else {

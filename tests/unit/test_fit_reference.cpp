@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "io/fit_storage.hpp"
 #include "kerf/fit/fit.hpp"
 
 namespace {
@@ -24,20 +25,16 @@ std::vector<V> load(const std::string& name) {
 }
 
 struct Fitter {
-  explicit Fitter(std::size_t n)
-      : words(kerf::fit::workspace_words(n)), intervals(kerf::fit::workspace_intervals(n)), out(n) {}
-  kerf::fit::Workspace<double> ws() {
-    return {{words.data(), words.size()}, {intervals.data(), intervals.size()}};
-  }
+  explicit Fitter(std::size_t n) : storage(n) {}
+  kerf::fit::Workspace<double> ws() { return storage.workspace(); }
   kerf::Result<kerf::fit::Fit<double>> count(const std::vector<V>& p, double tol, Method m) {
-    return kerf::fit::fit_min_count<double>({p.data(), p.size()}, tol, m, ws(), {out.data(), out.size()});
+    return kerf::fit::fit_min_count<double>({p.data(), p.size()}, tol, m, ws(), storage.pieces());
   }
   kerf::Result<kerf::fit::Fit<double>> budget(const std::vector<V>& p, unsigned k, Method m) {
-    return kerf::fit::fit_min_error<double>({p.data(), p.size()}, k, m, ws(), {out.data(), out.size()});
+    return kerf::fit::fit_min_error<double>({p.data(), p.size()}, k, m, ws(), storage.pieces());
   }
-  std::vector<std::uint32_t> words;
-  std::vector<kerf::fit::Interval<double>> intervals;
-  std::vector<kerf::fit::Piece<double>> out;
+  const kerf::fit::Piece<double>& out(std::size_t k) const { return storage.piece(k); }
+  kerf::io::FitStorage storage;
 };
 
 class Parabola : public ::testing::Test {
@@ -111,7 +108,7 @@ TEST_F(Parabola, PiecesAreCounterClockwiseArcsThroughInputPoints) {
   ASSERT_TRUE(r.ok());
   std::uint32_t at = 0;
   for (unsigned k = 0; k < r.value().pieces; ++k) {
-    const auto& piece = f.out[k];
+    const auto& piece = f.out(k);
     EXPECT_EQ(piece.first, at);
     EXPECT_TRUE(piece.segment.is_arc());
     // x runs from 500 down to 0 along a parabola opening downwards: it turns left.
@@ -148,8 +145,8 @@ TEST(FitArguments, SmallStorageIsReportedNotTruncated) {
                                                   f.ws(), {few.data(), few.size()});
   EXPECT_EQ(r.status(), Status::capacity_exceeded);
   std::vector<std::uint32_t> words(10);
-  const kerf::fit::Workspace<double> small{{words.data(), words.size()},
-                                           {f.intervals.data(), f.intervals.size()}};
+  kerf::fit::Workspace<double> small = f.ws();
+  small.words = {words.data(), words.size()};
   EXPECT_EQ(kerf::fit::count_min<double>({pts.data(), pts.size()}, 0.1, Method::optimal, small).status(),
             Status::capacity_exceeded);
 }

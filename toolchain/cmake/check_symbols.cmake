@@ -10,15 +10,25 @@ if(NOT rc EQUAL 0)
 endif()
 
 # Mangled names: operator new/delete (all overloads start _Znw/_Zna/_Zdl/_Zda),
-# the C++ exception runtime, C allocation, stdio and common system calls.
+# the C++ exception runtime (including ARM EHABI's cleanup entry), thread-safe
+# statics and static destructors (both need an OS runtime), C allocation
+# (also newlib's reentrant _*_r forms), stdio (also glibc's _FORTIFY_SOURCE
+# __*_chk forms, which Ubuntu's compilers emit by default), glibc's assert,
+# and common system calls (also newlib's _write/_sbrk... stubs).
 set(banned
   "_Znw[a-zA-Z0-9_]*" "_Zna[a-zA-Z0-9_]*" "_Zdl[a-zA-Z0-9_]*" "_Zda[a-zA-Z0-9_]*"
   "__cxa_[a-z_]*throw[a-z_]*" "__cxa_allocate_exception" "__cxa_begin_catch"
-  "__gxx_personality_v0" "_Unwind_Resume"
+  "__cxa_end_catch" "__cxa_end_cleanup" "__gxx_personality_v0" "_Unwind_Resume"
+  "__cxa_guard_acquire" "__cxa_guard_release" "__cxa_guard_abort" "__cxa_atexit" "atexit"
   "malloc" "calloc" "realloc" "free" "aligned_alloc" "posix_memalign"
-  "printf" "fprintf" "sprintf" "snprintf" "vprintf" "vfprintf" "puts" "fputs" "putchar"
-  "fopen" "fclose" "fread" "fwrite" "fflush" "stdout" "stderr" "stdin"
-  "open" "read" "write" "close" "ioctl" "mmap" "sbrk" "_sbrk" "exit" "abort")
+  "_malloc_r" "_calloc_r" "_realloc_r" "_free_r"
+  "printf" "fprintf" "sprintf" "snprintf" "vprintf" "vfprintf" "vsprintf" "vsnprintf"
+  "puts" "fputs" "putchar" "fputc" "putc"
+  "__printf_chk" "__fprintf_chk" "__sprintf_chk" "__snprintf_chk" "__vfprintf_chk"
+  "__vsnprintf_chk" "__assert_fail"
+  "fopen" "fclose" "fread" "fwrite" "fflush" "stdout" "stderr" "stdin" "_impure_ptr"
+  "open" "read" "write" "close" "lseek" "ioctl" "mmap" "sbrk" "exit" "_exit" "abort"
+  "_open" "_read" "_write" "_close" "_lseek" "_fstat" "_isatty" "_sbrk" "_kill" "_getpid")
 set(found "")
 string(REPLACE "\n" ";" lines "${out}")
 foreach(line IN LISTS lines)

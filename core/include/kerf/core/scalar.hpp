@@ -24,6 +24,13 @@ struct Scalar<double> {
   static bool is_finite(double v) { return __builtin_isfinite(v); }
   static constexpr double epsilon() { return 2.220446049250313e-16; }
   static constexpr double infinity() { return __builtin_huge_val(); }
+  // The power of two nearest 1 / v (v > 0): multiplying by it is exact, and
+  // brings v near 1 so that squares neither overflow nor underflow.
+  static double normaliser(double v) {
+    int e = 0;
+    __builtin_frexp(v, &e);
+    return __builtin_ldexp(1.0, -e);
+  }
 };
 
 template <class S>

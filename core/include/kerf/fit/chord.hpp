@@ -32,7 +32,48 @@ struct Chord {
   Vec2<S> centre(Vec2<S> d) const { return mid + n * (h * d.x / d.y); }
   // Signed distance of p from the chord's line, > 0 on the left of a->b.
   S offset(Vec2<S> p) const { return (p - mid).dot(n); }
+
+  // The power of p with respect to the circle of unit direction d = (cos phi,
+  // sin phi), sin phi >= 0, times sin phi:  P = A sin(phi) - 2 h B cos(phi)
+  // with A = |p - mid|^2 - h^2 and B = offset(p). It is small and well
+  // conditioned for every phi, the line included, unlike |p - c|^2 - r^2.
+  S power(Vec2<S> d, Vec2<S> p) const {
+    const Vec2<S> v = p - mid;
+    return (v.norm2() - h * h) * d.y - S(2) * h * v.dot(n) * d.x;
+  }
+
+  // Exact distance from p to that circle (to the line for sin phi = 0), free
+  // of the cancellation in | |p - c| - r | when r is huge:
+  //   s (d^2 - r^2) = P, s r = h, s d = sqrt(h^2 + s P), so
+  //   |d - r| = |P| / (h + sqrt(h^2 + s P)).
+  S distance(Vec2<S> d, Vec2<S> p) const {
+    const S pw = power(d, p);
+    const S root = h * h + d.y * pw;
+    return Scalar<S>::abs(pw) / (h + Scalar<S>::sqrt(root > S(0) ? root : S(0)));
+  }
+
+  // The unit direction of the circle through a, b and p, or (0, 0) when p is
+  // a or b. Collinear p gives the line, (1, 0).
+  Vec2<S> direction_through(Vec2<S> p) const {
+    const Vec2<S> v = p - mid;
+    Vec2<S> d{v.norm2() - h * h, S(2) * h * v.dot(n)};
+    const S len = d.norm();
+    if (!(len > S(0))) return {};
+    d = d * (S(1) / len);
+    return (d.y < S(0) || (d.y == S(0) && d.x < S(0))) ? -d : d;
+  }
 };
+
+// True when a and b are too close for their chord to define a pencil of
+// circles: its direction would be rounding noise. Such a pair is a closed
+// loop, which no single arc can represent.
+template <class S>
+bool closes_on_itself(Vec2<S> a, Vec2<S> b) {
+  const S scale = max_of(max_of(Scalar<S>::abs(a.x), Scalar<S>::abs(a.y)),
+                         max_of(Scalar<S>::abs(b.x), Scalar<S>::abs(b.y)));
+  const S gap = max_of(Scalar<S>::abs(b.x - a.x), Scalar<S>::abs(b.y - a.y));
+  return !(gap > scale * S(1024) * Scalar<S>::epsilon());
+}
 
 // The piece from a to b: a line, or the arc around `centre` that runs
 // through the inner points. The arc bulges to the side of the inner point

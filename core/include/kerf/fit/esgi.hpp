@@ -4,16 +4,18 @@
 //              smallest largest distance to the inner points.
 //   esgi-mean: centre on the bisector at the mean of the signed distances
 //              d_k from the chord midpoint to the centres of the circles
-//              through p_i, p_k, p_j. An inner point on the chord's line has
-//              no such circle (d_k is infinite) and is left out of the mean;
-//              if every inner point is, the piece is the line.
+//              through p_i, p_k, p_j. An inner point on the chord's line
+//              (to within rounding) has no such circle (d_k is infinite) and
+//              is left out of the mean; if every inner point is, the piece
+//              is the line.
 // A rule's piece is feasible when its largest inner distance is <= eps.
+// Distances are measured in the chord frame (fit/chord.hpp), which stays
+// exact for the enormous radii of nearly straight runs.
 #pragma once
 
 #include <cstdint>
 
-#include "kerf/geom/circle.hpp"
-#include "kerf/geom/segment.hpp"
+#include "kerf/fit/chord.hpp"
 
 namespace kerf::fit {
 
@@ -22,64 +24,61 @@ enum class EsgiRule : std::uint8_t { max, mean };
 template <class S>
 struct EsgiArc {
   bool line = true;
-  Vec2<S> centre{};
+  Vec2<S> direction{S(1), S(0)};  // unit (cos phi, sin phi) of the circle, see fit/chord.hpp
   S error{};
 };
 
 namespace detail {
 
-// Largest distance from the inner points to the circle (or to the line if
-// `line`), stopping early once it exceeds `stop`.
+// Largest distance from the inner points to the circle of direction d,
+// stopping early once it exceeds `stop`.
 template <class S>
-S inner_error(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, bool line, Vec2<S> c, S stop) {
-  const S r = line ? S(0) : (pts[i] - c).norm();
+S inner_error(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, const Chord<S>& chord, Vec2<S> d,
+              S stop) {
   S worst = S(0);
-  for (std::uint32_t k = i + 1; k < j && !(worst > stop); ++k) {
-    const S d = line ? distance_to_line(pts[i], pts[j], pts[k]) : distance_to_circle(c, r, pts[k]);
-    worst = max_of(worst, d);
-  }
+  for (std::uint32_t k = i + 1; k < j && !(worst > stop); ++k)
+    worst = max_of(worst, chord.distance(d, pts[k]));
   return worst;
 }
 
 template <class S>
-EsgiArc<S> esgi_max(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, S stop, S good_enough) {
+EsgiArc<S> esgi_max(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, const Chord<S>& chord,
+                    S stop, S good_enough) {
   EsgiArc<S> best;
   best.error = Scalar<S>::infinity();
   for (std::uint32_t k = i + 1; k < j && !(best.error <= good_enough); ++k) {
-    const Result<Circle<S>> c = circle_through(pts[i], pts[k], pts[j]);
-    const bool line = !c.ok();
-    const S e = inner_error(pts, i, j, line, c.value().centre, min_of(best.error, stop));
-    if (e < best.error) best = {line, c.value().centre, e};
+    const Vec2<S> d = chord.direction_through(pts[k]);
+    if (d.norm2() == S(0)) continue;  // p_k repeats an end point: no circle
+    const S e = inner_error(pts, i, j, chord, d, min_of(best.error, stop));
+    if (e < best.error) best = {!(d.y > S(0)), d, e};
   }
   return best;
 }
 
 template <class S>
-EsgiArc<S> esgi_mean(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, S stop) {
-  // The report's notation: x01 = x0 - x_{n+1}, y10 = y_{n+1} - y0, w = |chord|.
-  const Vec2<S> a = pts[i];
-  const Vec2<S> b = pts[j];
-  const Vec2<S> m = midpoint(a, b);
-  const S x01 = a.x - b.x;
-  const S y10 = b.y - a.y;
-  const S w2 = x01 * x01 + y10 * y10;
-  const S w = Scalar<S>::sqrt(w2);
+EsgiArc<S> esgi_mean(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, const Chord<S>& chord,
+                     S stop) {
+  // The report's d_k is the signed offset t of the centre along the bisector,
+  // t = A / (2B) in fit/chord.hpp's terms (its normal points the other way,
+  // which flips every d_k and the mean together).
   S sum = S(0);
   std::uint32_t count = 0;
   for (std::uint32_t k = i + 1; k < j; ++k) {
-    const Vec2<S> v = pts[k] - m;
-    const S den = S(2) * (v.x * y10 + v.y * x01);
-    if (den == S(0)) continue;
-    sum = sum + (v.norm2() - w2 / S(4)) * w / den;
+    const Vec2<S> v = pts[k] - chord.mid;
+    const S b = v.dot(chord.n);
+    // b carries a rounding error of a few ulps of |v|; below that the sign
+    // and size of d_k are noise, which would swamp the mean.
+    if (!(Scalar<S>::abs(b) > S(16) * Scalar<S>::epsilon() * (v.norm() + chord.h))) continue;
+    sum = sum + (v.norm2() - chord.h * chord.h) / (S(2) * b);
     ++count;
   }
   EsgiArc<S> arc;
-  if (count > 0) {
-    const S d = sum / S(static_cast<long>(count));
-    arc.line = false;
-    arc.centre = m + Vec2<S>{y10, x01} * (d / w);
+  if (count > 0 && Scalar<S>::is_finite(sum)) {
+    const Vec2<S> d{sum / S(static_cast<long>(count)), chord.h};  // (t, h) ~ (cos, sin)
+    arc.direction = d * (S(1) / d.norm());
+    arc.line = !(arc.direction.y > S(0));
   }
-  arc.error = inner_error(pts, i, j, arc.line, arc.centre, stop);
+  arc.error = inner_error(pts, i, j, chord, arc.direction, stop);
   return arc;
 }
 
@@ -92,13 +91,15 @@ EsgiArc<S> esgi_mean(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, S sto
 template <class S>
 EsgiArc<S> esgi_arc(EsgiRule rule, const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, S stop,
                     S good_enough) {
-  if (j <= i + 1 || pts[i] == pts[j]) {
-    EsgiArc<S> line;
-    line.error = pts[i] == pts[j] && j > i + 1 ? Scalar<S>::infinity() : S(0);
-    return line;
+  EsgiArc<S> arc;
+  if (j <= i + 1) return arc;  // two consecutive points: the line, exactly
+  if (closes_on_itself(pts[i], pts[j])) {
+    arc.error = Scalar<S>::infinity();
+    return arc;
   }
-  return rule == EsgiRule::max ? detail::esgi_max(pts, i, j, stop, good_enough)
-                               : detail::esgi_mean(pts, i, j, stop);
+  const Chord<S> chord(pts[i], pts[j]);
+  return rule == EsgiRule::max ? detail::esgi_max(pts, i, j, chord, stop, good_enough)
+                               : detail::esgi_mean(pts, i, j, chord, stop);
 }
 
 }  // namespace kerf::fit

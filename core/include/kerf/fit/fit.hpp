@@ -34,14 +34,18 @@ struct Fit {
   S tol{};        // the tol asked for, or the smallest one found for a piece budget
 };
 
-// Storage for n points: index words and two interval buffers.
+// Storage for n points: index words, two interval buffers, and a copy of the
+// points scaled by a power of two (exact) so that any input magnitude fits
+// the arithmetic.
 constexpr std::size_t workspace_words(std::size_t n) { return 5 * n; }
 constexpr std::size_t workspace_intervals(std::size_t n) { return 2 * (3 * n + 8); }
+constexpr std::size_t workspace_points(std::size_t n) { return n; }
 
 template <class S>
 struct Workspace {
   Span<std::uint32_t> words;       // >= workspace_words(n)
   Span<Interval<S>> intervals;     // >= workspace_intervals(n)
+  Span<Vec2<S>> points;            // >= workspace_points(n)
 };
 
 // Fewest pieces within tol. Among all solutions with that count it returns

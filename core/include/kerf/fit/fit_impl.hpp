@@ -22,7 +22,7 @@ struct Oracle {
     if (method == Method::optimal) {
       // A start whose last exact test failed is probably past its reach: go
       // straight to the exact test, which tries the point that failed first.
-      if (hint == 0 && vertex_pair_witness(pts, i, j, eps)) return true;
+      if (hint == 0 && vertex_pair_witness(pts, i, j, eps).norm2() != S(0)) return true;
       const bool ok = vertex_pair_set(pts, i, j, eps, *set, &hint);
       if (ok) hint = 0;
       return ok;
@@ -32,6 +32,23 @@ struct Oracle {
   }
 };
 
+// The problem as the search sees it: the points scaled by a power of two
+// (exact) and the tolerance scaled alike.
+template <class S>
+struct Scaled {
+  Span<const Vec2<S>> pts;
+  S factor;
+};
+
+template <class S>
+Scaled<S> scale_into(Span<const Vec2<S>> pts, Span<Vec2<S>> out) {
+  S big = S(0);
+  for (const Vec2<S>& p : pts) big = max_of(big, max_of(Scalar<S>::abs(p.x), Scalar<S>::abs(p.y)));
+  const S f = big > S(0) ? Scalar<S>::normaliser(big) : S(1);
+  for (std::size_t k = 0; k < pts.size(); ++k) out[k] = pts[k] * f;
+  return {Span<const Vec2<S>>(out.data(), pts.size()), f};
+}
+
 template <class S>
 AngleSet<S> make_set(Workspace<S> ws) {
   const std::size_t half = ws.intervals.size() / 2;
@@ -40,7 +57,8 @@ AngleSet<S> make_set(Workspace<S> ws) {
 
 template <class S>
 bool storage_ok(std::size_t n, Workspace<S> ws) {
-  return ws.words.size() >= workspace_words(n) && ws.intervals.size() >= workspace_intervals(n);
+  return ws.words.size() >= workspace_words(n) && ws.intervals.size() >= workspace_intervals(n) &&
+         ws.points.size() >= workspace_points(n);
 }
 
 // Pieces needed at eps, or 0 when more than `budget`; pred is left in ws.
@@ -87,42 +105,44 @@ Result<S> bisect_tol(Span<const Vec2<S>> pts, std::uint32_t pieces, Method metho
   return hi;
 }
 
-// Runs the search at eps within `pieces` and writes the path's pieces.
+// The circle (or line) of one piece of the final path.
 template <class S>
-Result<Fit<S>> build(Span<const Vec2<S>> pts, S eps, std::uint32_t pieces, Method method,
-                     Workspace<S> ws, Span<Piece<S>> out) {
+PairFit<S> choose_piece(const Vec2<S>* p, std::uint32_t i, std::uint32_t j, S eps, Method method,
+                        AngleSet<S>& set) {
+  if (method == Method::optimal) return best_vertex_pair(p, i, j, eps, set);
+  const EsgiRule rule = method == Method::esgi_max ? EsgiRule::max : EsgiRule::mean;
+  const EsgiArc<S> a = esgi_arc(rule, p, i, j, Scalar<S>::infinity(), S(-1));
+  return {a.line, a.direction, a.error};
+}
+
+// Runs the search at eps within `pieces` and writes the path's pieces, in
+// the caller's units (original points, centre and errors divided by factor).
+template <class S>
+Result<Fit<S>> build(Span<const Vec2<S>> original, Scaled<S> sc, S eps, std::uint32_t pieces,
+                     Method method, Workspace<S> ws, Span<Piece<S>> out) {
   std::uint32_t* pred = nullptr;
-  const Result<std::uint32_t> c = count_at(pts, eps, method, ws, pieces, pred);
+  const Result<std::uint32_t> c = count_at(sc.pts, eps, method, ws, pieces, pred);
   if (!c.ok()) return c.status();
   if (c.value() == 0) return Status::infeasible;
   const std::uint32_t count = c.value();
   if (out.size() < count) return Status::capacity_exceeded;
 
   AngleSet<S> set = make_set(ws);
-  Fit<S> fit{count, S(0), eps};
-  std::uint32_t j = static_cast<std::uint32_t>(pts.size()) - 1;
+  const Vec2<S>* p = sc.pts.data();
+  const S unscale = S(1) / sc.factor;
+  Fit<S> fit{count, S(0), eps * unscale};
+  std::uint32_t j = static_cast<std::uint32_t>(sc.pts.size()) - 1;
   for (std::uint32_t k = count; k-- > 0;) {
     const std::uint32_t i = pred[j];
-    const Vec2<S>* p = pts.data();
-    bool line;
-    Vec2<S> centre;
-    S error;
-    if (method == Method::optimal) {
-      const PairFit<S> f = best_vertex_pair(p, i, j, eps, set);
-      line = f.line;
-      centre = f.centre;
-      error = f.error;
-    } else {
-      const EsgiRule rule = method == Method::esgi_max ? EsgiRule::max : EsgiRule::mean;
-      const EsgiArc<S> a = esgi_arc(rule, p, i, j, Scalar<S>::infinity(), S(-1));
-      line = a.line;
-      centre = a.centre;
-      error = a.error;
-    }
+    const PairFit<S> f = choose_piece(p, i, j, eps, method, set);
     const Chord<S> chord(p[i], p[j]);
-    const Segment<S> seg = make_segment(chord, p + i + 1, j - i - 1, line, centre, eps);
-    out[k] = Piece<S>{i, j, seg, error};
-    fit.max_error = max_of(fit.max_error, error);
+    const Vec2<S> centre = f.line ? Vec2<S>{} : chord.centre(f.direction);
+    Segment<S> seg = make_segment(chord, p + i + 1, j - i - 1, f.line, centre, eps);
+    seg.start = original[i];
+    seg.end = original[j];
+    seg.centre = seg.centre * unscale;
+    out[k] = Piece<S>{i, j, seg, f.error * unscale};
+    fit.max_error = max_of(fit.max_error, f.error * unscale);
     j = i;
   }
   return fit;
@@ -131,6 +151,14 @@ Result<Fit<S>> build(Span<const Vec2<S>> pts, S eps, std::uint32_t pieces, Metho
 template <class S>
 bool tol_ok(S tol) {
   return Scalar<S>::is_finite(tol) && tol > S(0);
+}
+
+template <class S>
+Status check_inputs(Span<const Vec2<S>> pts, Workspace<S> ws) {
+  std::size_t where = 0;
+  if (const Status s = validate_points(pts, where); s != Status::ok) return s;
+  if (!storage_ok(pts.size(), ws)) return Status::capacity_exceeded;
+  return Status::ok;
 }
 
 }  // namespace detail
@@ -149,12 +177,12 @@ Status validate_points(Span<const Vec2<S>> pts, std::size_t& where) {
 
 template <class S>
 Result<std::uint32_t> count_min(Span<const Vec2<S>> pts, S tol, Method method, Workspace<S> ws) {
-  std::size_t where = 0;
-  if (const Status s = validate_points(pts, where); s != Status::ok) return s;
+  if (const Status s = detail::check_inputs(pts, ws); s != Status::ok) return s;
   if (!detail::tol_ok(tol)) return Status::invalid_argument;
-  if (!detail::storage_ok(pts.size(), ws)) return Status::capacity_exceeded;
+  const detail::Scaled<S> sc = detail::scale_into(pts, ws.points);
   std::uint32_t* pred = nullptr;
-  return detail::count_at(pts, tol, method, ws, static_cast<std::uint32_t>(pts.size()), pred);
+  return detail::count_at(sc.pts, tol * sc.factor, method, ws,
+                          static_cast<std::uint32_t>(pts.size()), pred);
 }
 
 template <class S>
@@ -162,10 +190,12 @@ Result<Fit<S>> fit_min_count(Span<const Vec2<S>> pts, S tol, Method method, Work
                              Span<Piece<S>> out) {
   const Result<std::uint32_t> count = count_min(pts, tol, method, ws);
   if (!count.ok()) return count.status();
+  const detail::Scaled<S> scaled = detail::scale_into(pts, ws.points);
   // The tie-break: the smallest tol that still allows this count.
-  const Result<S> best = detail::bisect_tol(pts, count.value(), method, ws, tol);
+  const Result<S> best =
+      detail::bisect_tol(scaled.pts, count.value(), method, ws, tol * scaled.factor);
   if (!best.ok()) return best.status();
-  Result<Fit<S>> fit = detail::build(pts, best.value(), count.value(), method, ws, out);
+  Result<Fit<S>> fit = detail::build(pts, scaled, best.value(), count.value(), method, ws, out);
   if (fit.ok()) fit.value().tol = tol;
   return fit;
 }
@@ -173,20 +203,19 @@ Result<Fit<S>> fit_min_count(Span<const Vec2<S>> pts, S tol, Method method, Work
 template <class S>
 Result<Fit<S>> fit_min_error(Span<const Vec2<S>> pts, std::uint32_t pieces, Method method,
                              Workspace<S> ws, Span<Piece<S>> out) {
-  std::size_t where = 0;
-  if (const Status s = validate_points(pts, where); s != Status::ok) return s;
+  if (const Status s = detail::check_inputs(pts, ws); s != Status::ok) return s;
   if (pieces == 0) return Status::invalid_argument;
-  if (!detail::storage_ok(pts.size(), ws)) return Status::capacity_exceeded;
+  const detail::Scaled<S> sc = detail::scale_into(pts, ws.points);
   // Any positive tol works for n - 1 pieces; the bounding box's diagonal
   // lets one piece (or two, for a closed loop) through.
-  const S hi = detail::bbox_diagonal(pts) * S(2);
+  const S hi = detail::bbox_diagonal(sc.pts) * S(2);
   std::uint32_t* pred = nullptr;
-  const Result<std::uint32_t> c = detail::count_at(pts, hi, method, ws, pieces, pred);
+  const Result<std::uint32_t> c = detail::count_at(sc.pts, hi, method, ws, pieces, pred);
   if (!c.ok()) return c.status();
   if (c.value() == 0) return Status::infeasible;
-  const Result<S> best = detail::bisect_tol(pts, pieces, method, ws, hi);
+  const Result<S> best = detail::bisect_tol(sc.pts, pieces, method, ws, hi);
   if (!best.ok()) return best.status();
-  return detail::build(pts, best.value(), pieces, method, ws, out);
+  return detail::build(pts, sc, best.value(), pieces, method, ws, out);
 }
 
 }  // namespace kerf::fit

@@ -39,18 +39,21 @@ bool circle_through_near_three(Vec2<S> origin, const Vec2<S> pts[3], S eps) {
   // Constraint c: |beta . w[c]| <= lim[c]. If the allowed directions of all
   // three meet, the first direction of their intersection is an end point of
   // one constraint's arc, so checking the (at most six) end points decides.
+  // Rounding: z, w and beta carry relative errors of a few ulps, so |beta.w|
+  // is known only to within a few ulps of |z_a| + |z_b|. That much slack is
+  // added to each limit: a guard may pass wrongly, never fail wrongly.
   Vec2<S> w[3];
   S lim[3];
+  S slack[3];
   const int pairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
   int active = 0;
   for (const auto& pr : pairs) {
     w[active] = z[pr[0]] - z[pr[1]];
     lim[active] = e[pr[0]] + e[pr[1]];
-    if (w[active].norm2() > lim[active] * lim[active]) ++active;
+    slack[active] = S(256) * M::epsilon() * (z[pr[0]].norm() + z[pr[1]].norm() + lim[active]);
+    if (w[active].norm() > lim[active] + slack[active]) ++active;
   }
   if (active < 2) return true;  // one arc alone is never empty
-  // Slack for rounding: a direction on the boundary must not be rejected.
-  const S slack = S(1) + S(64) * M::epsilon();
   for (int c = 0; c < active; ++c) {
     const S len = w[c].norm();
     const Vec2<S> u = w[c].perp() * (S(1) / len);  // |beta . w| = 0 along u
@@ -61,7 +64,7 @@ bool circle_through_near_three(Vec2<S> origin, const Vec2<S> pts[3], S eps) {
     for (const Vec2<S>& beta : ends) {
       bool all = true;
       for (int d = 0; d < active && all; ++d)
-        all = M::abs(beta.dot(w[d])) <= lim[d] * slack;
+        all = M::abs(beta.dot(w[d])) <= lim[d] + slack[d];
       if (all) return true;
     }
   }

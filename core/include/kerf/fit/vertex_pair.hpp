@@ -95,11 +95,11 @@ bool vertex_pair_set(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, S eps
                      std::uint32_t* hint = nullptr) {
   set.reset();
   if (j <= i + 1) return true;
-  const Chord<S> chord(pts[i], pts[j]);
-  if (!(chord.h > S(0))) {
+  if (closes_on_itself(pts[i], pts[j])) {
     set.intersect(nullptr, 0);  // a closed loop has no unique arc
     return false;
   }
+  const Chord<S> chord(pts[i], pts[j]);
   // Coarse to fine (m/2, then quarters, eighths, ...): far-apart points
   // constrain phi most, so an infeasible pair usually fails within a few.
   if (hint != nullptr && *hint > i && *hint < j) {
@@ -123,80 +123,73 @@ bool vertex_pair_set(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, S eps
 }
 
 // A cheap sufficient test: the circle through p_i, the middle point and p_j
-// (or the line, if they are collinear), checked with squared distances.
+// (the line if they are collinear), checked with the annulus rule in the
+// chord frame, which stays exact for huge radii. Returns its direction, or
+// (0, 0) when it does not fit.
 template <class S>
-bool vertex_pair_witness(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, S eps) {
-  if (j <= i + 2) return true;  // a line, or the circle through all three points
-  const Vec2<S> a = pts[i];
-  const Vec2<S> b = pts[j];
-  const Vec2<S> d = b - a;
-  if (d.norm2() == S(0)) return false;
-  const Vec2<S> m = pts[(i + j) / 2];
-  const Vec2<S> u = m - a;
-  const S det = S(2) * d.cross(u);
-  if (det == S(0)) {  // collinear: the line
-    const S lim2 = eps * eps * d.norm2();
-    for (std::uint32_t k = i + 1; k < j; ++k) {
-      const S c = d.cross(pts[k] - a);
-      if (c * c > lim2) return false;
-    }
-    return true;
-  }
-  const S dd = d.norm2();
-  const S uu = u.norm2();
-  const Vec2<S> c{(u.y * dd - d.y * uu) / det, (d.x * uu - u.x * dd) / det};  // relative to a
-  const S r = c.norm();
-  const S lo = r > eps ? (r - eps) * (r - eps) : S(0);
-  const S hi = (r + eps) * (r + eps);
-  for (std::uint32_t k = i + 1; k < j; ++k) {
-    const S q = (pts[k] - a - c).norm2();
-    if (q < lo || q > hi) return false;
-  }
-  return true;
+Vec2<S> vertex_pair_witness(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, S eps) {
+  if (j == i + 1) return {S(1), S(0)};
+  if (closes_on_itself(pts[i], pts[j])) return {};
+  const Chord<S> chord(pts[i], pts[j]);
+  const Vec2<S> d = chord.direction_through(pts[(i + j + 1) / 2]);
+  if (d.norm2() == S(0)) return {};
+  // |(A - eps^2) s - 2 h B c| <= 2 eps h is the annulus (r - eps)^2 <= |p - c|^2
+  // <= (r + eps)^2 times s, a sufficient form of "within eps" for any radius.
+  const S lim = S(2) * eps * chord.h;
+  const S shift = eps * eps * d.y;
+  for (std::uint32_t k = i + 1; k < j; ++k)
+    if (Scalar<S>::abs(chord.power(d, pts[k]) - shift) > lim) return {};
+  return d;
 }
 
-// The piece p_i -> p_j with the smallest max distance of its inner points,
-// found by bisecting eps' in [0, eps] on the exact test. Precondition: the
-// pair is feasible at eps.
+// Largest distance of the inner points to the circle of direction d.
 template <class S>
-struct PairFit {
-  bool line = true;
-  Vec2<S> centre{};
-  S error{};  // the largest inner distance of the chosen piece
-};
-
-template <class S>
-S line_error(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j) {
-  const Chord<S> chord(pts[i], pts[j]);
+S pair_error(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, const Chord<S>& chord, Vec2<S> d) {
   S e = S(0);
-  for (std::uint32_t k = i + 1; k < j; ++k) e = max_of(e, Scalar<S>::abs(chord.offset(pts[k])));
+  for (std::uint32_t k = i + 1; k < j; ++k) e = max_of(e, chord.distance(d, pts[k]));
   return e;
 }
 
+// The piece chosen for p_i -> p_j once the path is fixed at tolerance eps.
+template <class S>
+struct PairFit {
+  bool line = true;
+  Vec2<S> direction{S(1), S(0)};  // unit (cos phi, sin phi); (1, 0) is the line
+  S error{};                      // the largest distance of an inner point
+};
+
+// The line when it is within eps: that never raises the fit's largest error,
+// and a machine runs it without an enormous centre. Otherwise the circle with
+// the smallest largest distance, found by bisecting eps' in [0, eps] on the
+// exact test (to 1e-12 relative). Precondition: the pair is feasible at eps.
 template <class S>
 PairFit<S> best_vertex_pair(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, S eps,
                             AngleSet<S>& set) {
-  PairFit<S> fit;
-  fit.error = line_error(pts, i, j);
-  if (j <= i + 1 || fit.error == S(0)) return fit;
+  PairFit<S> best;
+  const Chord<S> chord(pts[i], pts[j]);
+  best.error = pair_error(pts, i, j, chord, best.direction);
+  if (!(best.error > eps)) return best;
   S lo = S(0);
   S hi = eps;
-  for (int it = 0; it < 200 && hi - lo > hi * S(1e-12); ++it) {
+  bool found = vertex_pair_set(pts, i, j, hi, set);
+  for (int it = 0; found && it < 200 && hi - lo > hi * S(1e-12); ++it) {
     const S mid = (lo + hi) / S(2);
     if (vertex_pair_set(pts, i, j, mid, set)) hi = mid; else lo = mid;
   }
-  // The line wins ties: a machine runs it without an enormous centre.
-  if (fit.error <= hi) return fit;
-  vertex_pair_set(pts, i, j, hi, set);
-  if (set.empty() || set.contains_line()) return fit;
-  const Chord<S> chord(pts[i], pts[j]);
-  fit.line = false;
-  fit.centre = chord.centre(direction_of((set[0].lo + set[0].hi) / S(2)));
-  const S r = (pts[i] - fit.centre).norm();
-  fit.error = S(0);
-  for (std::uint32_t k = i + 1; k < j; ++k)
-    fit.error = max_of(fit.error, distance_to_circle(fit.centre, r, pts[k]));
-  return fit;
+  auto consider = [&](Vec2<S> d) {
+    if (!(d.y > S(0))) return;
+    const S e = pair_error(pts, i, j, chord, d);
+    if (e < best.error) best = {false, d, e};
+  };
+  if (found && vertex_pair_set(pts, i, j, hi, set) && !set.contains_line()) {
+    const Vec2<S> d = direction_of((set[0].lo + set[0].hi) / S(2));
+    consider(d * (S(1) / d.norm()));
+  }
+  // The search accepted the pair through its witness or the exact set; if
+  // rounding at the boundary made the bisection find nothing, the witness
+  // still gives a circle within eps.
+  consider(vertex_pair_witness(pts, i, j, eps));
+  return best;
 }
 
 }  // namespace kerf::fit

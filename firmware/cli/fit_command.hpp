@@ -1,0 +1,35 @@
+// `kerf fit`: fit the fewest arcs to the points of a file, or the smallest
+// tolerance for a number of pieces, and print them.
+#pragma once
+
+#include <string>
+
+namespace CLI {
+class App;
+}
+
+namespace kerf::cli {
+
+// Exit codes of the kerf command.
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitFailure = 1;  // the fit or the output failed
+inline constexpr int kExitUsage = 2;    // bad options or bad input
+
+// The options as given, still text: fit_command checks them itself so that
+// every message has the same "kerf: --option: ..." form.
+struct FitOptions {
+  std::string tol;
+  std::string pieces;
+  std::string criterion = "vertex";
+  std::string method = "optimal";
+  std::string format = "esgi";
+  std::string file;
+};
+
+// Adds the `fit` subcommand to app, storing into opts.
+CLI::App* add_fit_command(CLI::App& app, FitOptions& opts);
+
+// Runs it; returns the exit code. Output goes to stdout only on success.
+int run_fit(const FitOptions& opts);
+
+}  // namespace kerf::cli

@@ -1,0 +1,38 @@
+// The kerf command. Exit codes: 0 success, 1 the fit or the output failed,
+// 2 bad options or bad input (the message is on stderr, stdout stays empty).
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <exception>
+#include <new>
+
+#include "cli/fit_command.hpp"
+
+#ifndef KERF_VERSION
+#define KERF_VERSION "unknown"
+#endif
+
+int main(int argc, char** argv) {
+  using namespace kerf::cli;
+  try {
+    CLI::App app("kerf: fit circular arcs to the points of a cut path", "kerf");
+    app.set_version_flag("--version", "kerf " KERF_VERSION);
+    app.require_subcommand(1);
+    FitOptions fit_opts;
+    CLI::App* fit = add_fit_command(app, fit_opts);
+    try {
+      app.parse(argc, argv);
+    } catch (const CLI::Success& e) {  // --help, --version
+      return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+      std::fprintf(stderr, "kerf: %s\nRun with --help for more information.\n", e.what());
+      return kExitUsage;
+    }
+    if (fit->parsed()) return run_fit(fit_opts);
+    return kExitUsage;  // require_subcommand(1) makes this unreachable
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "kerf: out of memory\n");
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "kerf: internal error: %s\n", e.what());
+  }
+  return kExitFailure;
+}

@@ -1,0 +1,45 @@
+// Writing a fit as text: the ESGI'104 report's arc list, or JSON.
+// Both build the whole text in memory; the caller writes it out only when
+// everything succeeded, so a failure never leaves half an output behind.
+#pragma once
+
+#include <string>
+
+#include "kerf/core/span.hpp"
+#include "kerf/fit/fit.hpp"
+
+namespace kerf::io {
+
+struct FitReport {
+  const char* criterion = "vertex";
+  const char* method = "optimal";  // as spelled on the command line
+  fit::Fit<double> fit{};
+  Span<const fit::Piece<double>> pieces{};  // fit.pieces of them
+  double zero_below = 0.0;  // numbers smaller than this print as 0: see resolution()
+};
+
+// Every number is printed with this many significant digits: enough to
+// rebuild the path, few enough to be the same on every target. (At 12, the
+// last digits of errors and centres differed between x86-64 and aarch64,
+// where GCC contracts a * b + c into fused multiply-adds.)
+inline constexpr int kDigits = 10;
+
+// The size below which a number computed from these points is rounding noise
+// (1e-12 of the largest coordinate): a centre at 3e-17 instead of 0, say,
+// whose digits would differ from one target to another.
+double resolution(Span<const Vec2<double>> pts);
+
+// "# ..." comment lines, "Number of arcs is Narc = N", then one line per piece:
+//   A (x1,y1) (x2,y2) (xc,yc) E     an arc, E = 1 counter-clockwise, -1 clockwise
+//   L (x1,y1) (x2,y2)               a line
+std::string format_esgi(const FitReport& r);
+
+// {"criterion", "method", "tol", "max_error", "pieces": [{"type", "first",
+// "last", "start", "end", "centre" and "dir" (arcs only), "error"}]}
+std::string format_json(const FitReport& r);
+
+// One number as both formats print it: kDigits significant digits ("%.10g"),
+// 0 for anything smaller in magnitude than zero_below, never "-0".
+std::string format_number(double v, double zero_below = 0.0);
+
+}  // namespace kerf::io

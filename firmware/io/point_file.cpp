@@ -1,0 +1,181 @@
+#include "io/point_file.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <limits>
+
+namespace kerf::io {
+
+namespace {
+
+// Indices are 32-bit in core; keep well inside that.
+constexpr std::size_t kMaxPoints = std::numeric_limits<std::uint32_t>::max() / 2;
+
+bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+
+// A token as it may be shown in a message: printable ASCII, the rest escaped,
+// long tokens cut short.
+std::string quote(std::string_view s) {
+  constexpr std::size_t kMax = 40;
+  std::string q = "\"";
+  for (std::size_t i = 0; i < s.size() && i < kMax; ++i) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    if (c == '"' || c == '\\') {
+      q += '\\';
+      q += static_cast<char>(c);
+    } else if (c >= 0x20 && c < 0x7f) {
+      q += static_cast<char>(c);
+    } else {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\x%02x", static_cast<unsigned>(c));
+      q += buf;
+    }
+  }
+  if (s.size() > kMax) q += "...";
+  q += '"';
+  return q;
+}
+
+// Splits one line (comment already removed) into its fields. Fields are
+// separated by blanks or by one comma with optional blanks around it. Returns
+// false for an empty field: a leading, trailing or doubled comma.
+bool split_fields(std::string_view line, std::vector<std::string_view>& fields) {
+  fields.clear();
+  std::size_t i = 0;
+  const std::size_t n = line.size();
+  while (i < n && is_blank(line[i])) ++i;
+  if (i == n) return true;
+  for (;;) {
+    const std::size_t start = i;
+    while (i < n && !is_blank(line[i]) && line[i] != ',') ++i;
+    if (i == start) return false;  // a comma where a field should be
+    fields.push_back(line.substr(start, i - start));
+    while (i < n && is_blank(line[i])) ++i;
+    if (i < n && line[i] == ',') {
+      ++i;
+      while (i < n && is_blank(line[i])) ++i;
+      if (i == n) return false;  // trailing comma
+    }
+    if (i == n) return true;
+  }
+}
+
+// Parses one coordinate. On failure `reason` says why.
+bool parse_number(std::string_view tok, double& out, std::string& reason) {
+  const std::string s(tok);  // strtod needs a terminator
+  if (s.find('\0') != std::string::npos) {
+    reason = "not a number: " + quote(tok);
+    return false;
+  }
+  errno = 0;
+  char* end = nullptr;
+  const double v = std::strtod(s.c_str(), &end);
+  if (end == s.c_str() || end != s.c_str() + s.size()) {
+    reason = "not a number: " + quote(tok);
+    return false;
+  }
+  if (!std::isfinite(v)) {  // "nan", "inf", "infinity" and overflow like 1e999
+    reason = errno == ERANGE ? "number out of range: " + quote(tok) : "NaN or infinite coordinate";
+    return false;
+  }
+  if (std::fabs(v) > kMaxCoordinate) {
+    reason = "coordinate out of range: " + quote(tok) + " (the limit is 1e15)";
+    return false;
+  }
+  out = v;  // an underflow (ERANGE with a tiny value) is accepted as is
+  return true;
+}
+
+PointFile fail(PointFile f, std::size_t line, std::string reason) {
+  f.ok = false;
+  f.line = line;
+  f.reason = std::move(reason);
+  f.points.clear();
+  f.point_lines.clear();
+  return f;
+}
+
+}  // namespace
+
+PointFile parse_points(std::string_view text, std::string display_name) {
+  PointFile f;
+  f.file = std::move(display_name);
+  std::vector<std::string_view> fields;
+  std::size_t line_no = 0;
+  std::size_t pos = 0;
+  while (pos < text.size()) {
+    ++line_no;
+    std::size_t eol = text.find('\n', pos);
+    if (eol == std::string_view::npos) eol = text.size();
+    std::string_view line = text.substr(pos, eol - pos);
+    pos = eol + 1;
+    if (const std::size_t hash = line.find('#'); hash != std::string_view::npos)
+      line = line.substr(0, hash);
+    if (!split_fields(line, fields)) return fail(std::move(f), line_no, "empty field");
+    if (fields.empty()) continue;
+    if (fields.size() != 2)
+      return fail(std::move(f), line_no,
+                  "expected 2 columns, got " + std::to_string(fields.size()));
+    Vec2<double> p;
+    std::string reason;
+    if (!parse_number(fields[0], p.x, reason) || !parse_number(fields[1], p.y, reason))
+      return fail(std::move(f), line_no, reason);
+    if (!f.points.empty() && f.points.back() == p) {
+      ++f.duplicates_dropped;
+      continue;
+    }
+    if (f.points.size() >= kMaxPoints) return fail(std::move(f), line_no, "too many points");
+    f.points.push_back(p);
+    f.point_lines.push_back(line_no);
+  }
+  if (f.points.size() < 2) {
+    // (the reason first: arguments are evaluated in no fixed order, and fail() empties f)
+    std::string reason = "fewer than two distinct points (got " + std::to_string(f.points.size()) + ")";
+    return fail(std::move(f), 0, std::move(reason));
+  }
+  f.ok = true;
+  return f;
+}
+
+PointFile read_points(const std::string& path) {
+  const bool use_stdin = path == "-";
+  std::string name = use_stdin ? "<stdin>" : path;
+  std::FILE* in = use_stdin ? stdin : std::fopen(path.c_str(), "rb");
+  if (in == nullptr) {
+    const int err = errno;
+    PointFile f;
+    f.file = std::move(name);
+    return fail(std::move(f), 0, std::string("cannot open: ") + std::strerror(err));
+  }
+  std::string text;
+  char buf[65536];
+  std::size_t got;
+  while ((got = std::fread(buf, 1, sizeof buf, in)) > 0) text.append(buf, got);
+  const bool read_failed = std::ferror(in) != 0;
+  const int err = errno;
+  if (!use_stdin) std::fclose(in);
+  if (read_failed) {
+    PointFile f;
+    f.file = std::move(name);
+    return fail(std::move(f), 0, std::string("cannot read: ") + std::strerror(err));
+  }
+  return parse_points(text, std::move(name));
+}
+
+std::string describe_error(const PointFile& f) {
+  // (appended piecewise: "x" + std::string trips a GCC 12 -Wrestrict false positive)
+  std::string s = f.file;
+  if (f.line != 0) {
+    s += ':';
+    s += std::to_string(f.line);
+  }
+  s += ": ";
+  s += f.reason;
+  return s;
+}
+
+}  // namespace kerf::io

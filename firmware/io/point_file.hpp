@@ -1,0 +1,45 @@
+// Reading the ordered points of a cut path from a text file or stdin.
+//
+// One "x y" pair per line, the two numbers separated by spaces, tabs or one
+// comma (with optional blanks around it). '#' starts a comment that runs to
+// the end of the line; blank lines are skipped; CRLF line ends are accepted.
+// Consecutive duplicate points are dropped and counted.
+//
+// Errors are values: nothing here throws across the API (an allocation
+// failure is the one exception, std::bad_alloc, which the caller handles).
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "kerf/geom/vec2.hpp"
+
+namespace kerf::io {
+
+// Coordinates beyond this magnitude are refused: far past any machine (1e15 nm
+// is 1000 km), far inside the range where the fitter's products of
+// coordinates stay finite (it breaks down near 1e75).
+inline constexpr double kMaxCoordinate = 1e15;
+
+struct PointFile {
+  bool ok = false;
+  std::string file;          // display name: the path, or "<stdin>" for "-"
+  std::size_t line = 0;      // 1-based line of the error; 0 for the file as a whole
+  std::string reason;        // why it failed, e.g. `not a number: "abc"`
+  std::vector<Vec2<double>> points;       // after dropping consecutive duplicates
+  std::vector<std::size_t> point_lines;   // the source line of each kept point
+  std::size_t duplicates_dropped = 0;
+};
+
+// Reads `path`, or stdin when path is "-".
+PointFile read_points(const std::string& path);
+
+// Parses the text of a point file; `display_name` only labels errors.
+PointFile parse_points(std::string_view text, std::string display_name);
+
+// "FILE:LINE: reason", or "FILE: reason" for an error about the whole file.
+std::string describe_error(const PointFile& f);
+
+}  // namespace kerf::io

@@ -1,0 +1,14 @@
+# Differential and verified-output tests: core against the brute-force twin
+# and the independent verifier in tests/support (kerf_test_support, which
+# shares no code with core). Included from tests/unit/CMakeLists.txt.
+add_executable(kerf_differential_tests
+  assert_handler.cpp
+  test_differential.cpp
+  test_verified_outputs.cpp
+  test_edge_cases.cpp
+)
+target_link_libraries(kerf_differential_tests PRIVATE kerf_io kerf_test_support GTest::gtest_main)
+target_compile_definitions(kerf_differential_tests PRIVATE
+  KERF_TEST_DATA_DIR="${CMAKE_CURRENT_SOURCE_DIR}/../data")
+kerf_warnings(kerf_differential_tests)
+gtest_discover_tests(kerf_differential_tests DISCOVERY_MODE PRE_TEST)

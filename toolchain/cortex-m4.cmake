@@ -1,0 +1,29 @@
+# Bare-metal Cortex-M4F (arm-none-eabi, newlib). Only the freestanding core is
+# built (the preset sets KERF_CORE_ONLY=ON); the build prints its size and
+# fails if it needs an allocator, exceptions, stdio or system calls.
+set(CMAKE_SYSTEM_NAME Generic)
+set(CMAKE_SYSTEM_PROCESSOR cortex-m4)
+
+set(CMAKE_C_COMPILER   arm-none-eabi-gcc)
+set(CMAKE_CXX_COMPILER arm-none-eabi-g++)
+
+# No OS to link a test program against: compiler checks build a static library.
+set(CMAKE_TRY_COMPILE_TARGET_TYPE STATIC_LIBRARY)
+
+set(KERF_CPU_FLAGS "-mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16")
+set(CMAKE_C_FLAGS_INIT   "${KERF_CPU_FLAGS} -ffunction-sections -fdata-sections")
+set(CMAKE_CXX_FLAGS_INIT "${KERF_CPU_FLAGS} -ffunction-sections -fdata-sections -fno-exceptions -fno-rtti")
+set(CMAKE_ASM_FLAGS_INIT "${KERF_CPU_FLAGS}")
+
+set(CMAKE_FIND_ROOT_PATH /usr/lib/arm-none-eabi)
+set(CMAKE_FIND_ROOT_PATH_MODE_PROGRAM NEVER)
+set(CMAKE_FIND_ROOT_PATH_MODE_LIBRARY ONLY)
+set(CMAKE_FIND_ROOT_PATH_MODE_INCLUDE ONLY)
+set(CMAKE_FIND_ROOT_PATH_MODE_PACKAGE ONLY)
+
+# The target's binutils: the core symbol check uses CMAKE_NM, the size report
+# CMAKE_SIZE.
+foreach(tool AR RANLIB NM OBJCOPY OBJDUMP STRIP SIZE)
+  string(TOLOWER ${tool} name)
+  find_program(CMAKE_${tool} arm-none-eabi-${name} REQUIRED)
+endforeach()

@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# Installs every Debian 12 package that kerf's build, cross builds and tests
+# need. Idempotent and non-interactive: when everything is already installed it
+# only runs dpkg-query and exits (no apt-get update).
+#
+# To add a package: append it to PACKAGES below (one per line, keep it sorted
+# by purpose) and say why in the comment next to it.
+set -euo pipefail
+
+PACKAGES=(
+  # host build
+  cmake ninja-build g++ python3
+  # tests and benchmarks (GoogleTest is built from /usr/src/googletest)
+  libgtest-dev googletest libbenchmark-dev
+  # header-only deps (exposed to cross builds by KerfDeps.cmake)
+  libcli11-dev
+  # Linux SBC cross compilers, run under qemu-user
+  g++-aarch64-linux-gnu g++-arm-linux-gnueabihf qemu-user
+  # Cortex-M (bare metal): compiler, C/C++ runtime, nm/size, and qemu for a later run
+  gcc-arm-none-eabi binutils-arm-none-eabi libnewlib-arm-none-eabi
+  libstdc++-arm-none-eabi-newlib qemu-system-arm
+)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  status=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)
+  [[ "$status" == "install ok installed" ]] || missing+=("$p")
+done
+
+if ((${#missing[@]} == 0)); then
+  echo "setup.sh: all ${#PACKAGES[@]} packages installed"
+  exit 0
+fi
+
+echo "setup.sh: installing ${missing[*]}"
+SUDO=()
+if ((EUID != 0)); then
+  command -v sudo >/dev/null || { echo "setup.sh: run as root (or install sudo)" >&2; exit 1; }
+  SUDO=(sudo)
+fi
+export DEBIAN_FRONTEND=noninteractive
+APT=(apt-get -y -q -o Acquire::Retries=3 -o Dpkg::Use-Pty=0)
+"${SUDO[@]}" "${APT[@]}" update
+"${SUDO[@]}" env DEBIAN_FRONTEND=noninteractive "${APT[@]}" install --no-install-recommends "${missing[@]}"
