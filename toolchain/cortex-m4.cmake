@@ -15,15 +15,6 @@ set(CMAKE_C_FLAGS_INIT   "${KERF_CPU_FLAGS} -ffunction-sections -fdata-sections"
 set(CMAKE_CXX_FLAGS_INIT "${KERF_CPU_FLAGS} -ffunction-sections -fdata-sections -fno-exceptions -fno-rtti")
 set(CMAKE_ASM_FLAGS_INIT "${KERF_CPU_FLAGS}")
 
-set(CMAKE_FIND_ROOT_PATH /usr/lib/arm-none-eabi)
-set(CMAKE_FIND_ROOT_PATH_MODE_PROGRAM NEVER)
-set(CMAKE_FIND_ROOT_PATH_MODE_LIBRARY ONLY)
-set(CMAKE_FIND_ROOT_PATH_MODE_INCLUDE ONLY)
-set(CMAKE_FIND_ROOT_PATH_MODE_PACKAGE ONLY)
-
-# The target's binutils: the core symbol check uses CMAKE_NM, the size report
-# CMAKE_SIZE.
-foreach(tool AR RANLIB NM OBJCOPY OBJDUMP STRIP SIZE)
-  string(TOLOWER ${tool} name)
-  find_program(CMAKE_${tool} arm-none-eabi-${name} REQUIRED)
-endforeach()
+set(KERF_TRIPLE arm-none-eabi)
+set(KERF_TARGET_ROOT /usr/lib/arm-none-eabi)
+include(${CMAKE_CURRENT_LIST_DIR}/cmake/CrossBinutils.cmake)
