@@ -188,14 +188,17 @@ Result<std::uint32_t> count_min(Span<const Vec2<S>> pts, S tol, Method method, W
 template <class S>
 Result<Fit<S>> fit_min_count(Span<const Vec2<S>> pts, S tol, Method method, Workspace<S> ws,
                              Span<Piece<S>> out) {
-  const Result<std::uint32_t> count = count_min(pts, tol, method, ws);
+  if (const Status s = detail::check_inputs(pts, ws); s != Status::ok) return s;
+  if (!detail::tol_ok(tol)) return Status::invalid_argument;
+  const detail::Scaled<S> sc = detail::scale_into(pts, ws.points);
+  std::uint32_t* pred = nullptr;
+  const Result<std::uint32_t> count = detail::count_at(
+      sc.pts, tol * sc.factor, method, ws, static_cast<std::uint32_t>(pts.size()), pred);
   if (!count.ok()) return count.status();
-  const detail::Scaled<S> scaled = detail::scale_into(pts, ws.points);
   // The tie-break: the smallest tol that still allows this count.
-  const Result<S> best =
-      detail::bisect_tol(scaled.pts, count.value(), method, ws, tol * scaled.factor);
+  const Result<S> best = detail::bisect_tol(sc.pts, count.value(), method, ws, tol * sc.factor);
   if (!best.ok()) return best.status();
-  Result<Fit<S>> fit = detail::build(pts, scaled, best.value(), count.value(), method, ws, out);
+  Result<Fit<S>> fit = detail::build(pts, sc, best.value(), count.value(), method, ws, out);
   if (fit.ok()) fit.value().tol = tol;
   return fit;
 }
