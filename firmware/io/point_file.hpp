@@ -18,9 +18,8 @@
 
 namespace kerf::io {
 
-// Coordinates beyond this magnitude are refused: far past any machine (1e15 nm
-// is 1000 km), far inside the range where the fitter's products of
-// coordinates stay finite (it breaks down near 1e75).
+// Coordinates beyond this magnitude are refused: far past any machine (1e15 mm
+// is a million km), so such a file is a unit or format mistake.
 inline constexpr double kMaxCoordinate = 1e15;
 
 struct PointFile {
