@@ -394,16 +394,16 @@ INSTANTIATE_TEST_SUITE_P(Curves, CurvePrefix,
                            return s.substr(0, s.find('.'));
                          });
 
-// Disagreements these tests found, kept as minimal reproductions. Each is a
-// core bug until the test passes; see the comments for the cause found.
+// Disagreements these tests found in core, kept as minimal reproductions of
+// bugs since fixed. Each comment says what core used to do and why.
 
 // Points 0, 1 and 3 lie on a line up to rounding; point 2 is 0.5 off it. The
 // pair 0 -> 3 is infeasible at tol 0.01 (a circle through p0 and p3 within
 // 0.01 of p1, on the chord, stays within about 0.01 of the chord), so the
-// answer is 2 pieces. Core says 1: vertex_pair_witness takes the circle
-// through p0, p1, p3, whose radius is ~1e16, and compares squared distances
+// answer is 2 pieces. Core said 1: vertex_pair_witness took the circle
+// through p0, p1, p3, whose radius is ~1e16, and compared squared distances
 // with (r +- eps)^2, which at that size cannot tell 0.5 from 0.01.
-// fit_min_count then returns one line with an inner point 0.5 off it.
+// fit_min_count then returned one line with an inner point 0.5 off it.
 TEST(CoreRegression, WitnessOnANearlyStraightChordAcceptsAFarPoint) {
   const std::vector<VPoint> pts{{1.3, -2.8999999999999999},
                                 {1.478, -2.2000000000000002},
@@ -415,7 +415,7 @@ TEST(CoreRegression, WitnessOnANearlyStraightChordAcceptsAFarPoint) {
 
 // Six points of a random "corners" case (seed 1801810535150, shrunk): one
 // piece suffices at tol 0.01 (core's own exact test passes the pair 0 -> 5),
-// but prefix_guard declares start 0 dead at j = 4 and core says 2. Cause:
+// but prefix_guard declared start 0 dead at j = 4 and core said 2. Cause:
 // see the next test.
 TEST(CoreRegression, PrefixGuardKillsAFeasibleStartOnACorner) {
   const std::vector<VPoint> pts{{0, 0},
@@ -431,11 +431,11 @@ TEST(CoreRegression, PrefixGuardKillsAFeasibleStartOnACorner) {
 // Eight points of tests/data/curves/ellipse.txt (68, 69, 88, 89, 90, 109,
 // 130, 131 of the file; shrunk from 68..131). One piece suffices at tol
 // 0.09937196: the pair 0 -> 7 is feasible from tol 0.0989822 up (twin and
-// core's own exact test agree). Core says 2: prefix_guard declares start 0
-// dead at j = 6. Its three-point test checks arc end points with a rounding
+// core's own exact test agree). Core said 2: prefix_guard declared start 0
+// dead at j = 6. Its three-point test checked arc end points with a rounding
 // slack of 64 eps relative to lim, but the rounding of |beta . w| scales with
-// |w| = lim / k (k ~ 0.003 here): the one end point that decides comes out
-// 2.8e-14 over. On the whole ellipse the same makes count_min non-monotone
+// |w| = lim / k (k ~ 0.003 here): the one end point that decides came out
+// 2.8e-14 over. On the whole ellipse the same made count_min non-monotone
 // in tol and fit_min_error's tol for 7 pieces not the smallest.
 TEST(CoreRegression, PrefixGuardKillsAFeasibleStartOnTheEllipse) {
   const std::vector<VPoint> pts{{95.408628232977904, 87.887987886146036},
@@ -452,9 +452,9 @@ TEST(CoreRegression, PrefixGuardKillsAFeasibleStartOnTheEllipse) {
 
 // As in the witness case, p1 is on the chord p0 -> p3 up to rounding and p2
 // is 0.5 off. esgi_mean's centre is the mean of the circles through p0, pk,
-// p3: p1's is ~1e16 away, so the mean is too, and inner_error's
-// | |p - c| - r | at that radius is rounding noise: it reports 0 and the
-// piece is taken, with p2 0.5 from its circle.
+// p3: p1's is ~1e16 away, so the mean was too, and inner_error's
+// | |p - c| - r | at that radius was rounding noise: it reported 0 and the
+// piece was taken, with p2 0.5 from its circle.
 TEST(CoreRegression, EsgiErrorOfAHugeCircleIsRoundingNoise) {
   const std::vector<VPoint> pts{{1.3, -2.8999999999999999},
                                 {1.4000000000000001, -2.2000000000000002},
@@ -463,12 +463,12 @@ TEST(CoreRegression, EsgiErrorOfAHugeCircleIsRoundingNoise) {
   check("esgi huge-radius regression, tol 0.01", pts, 0.01);
 }
 
-// Three points on a line up to rounding, tol 0.001. Core's optimal piece is
+// Three points on a line up to rounding, tol 0.001. Core's optimal piece was
 // an arc around (-1.0e15, 1.5e14) instead of the line (best_vertex_pair
-// bisects eps' towards 0, where only the exact circle through the three is
-// left, and the line's 9e-17 error loses to it), and its error, taken as
-// | |p - c| - r | at r ~ 1e15, comes out 0.125: Fit::max_error > tol. The
-// true error is 9e-17, so the verifier passes; the report and the arc do not.
+// bisected eps' towards 0, where only the exact circle through the three is
+// left, and the line's 9e-17 error lost to it), and its error, taken as
+// | |p - c| - r | at r ~ 1e15, came out 0.125: Fit::max_error > tol. The
+// true error is 9e-17, so the verifier passed; the report and the arc did not.
 TEST(CoreRegression, NearlyCollinearTripleBecomesAnAstronomicalArc) {
   const std::vector<VPoint> pts{{1.3, -2.8999999999999999},
                                 {1.4000000000000001, -2.2210000000000001},
