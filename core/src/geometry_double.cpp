@@ -7,6 +7,6 @@ namespace kerf {
 template Result<Circle<double>> circle_through(Vec2<double>, Vec2<double>, Vec2<double>);
 template double distance_to_segment(const Segment<double>&, Vec2<double>);
 template double distance_to_line_segment(Vec2<double>, Vec2<double>, Vec2<double>);
-template double distance_to_circle(Vec2<double>, double, Vec2<double>);
+template double distance_to_circle(Vec2<double>, Vec2<double>, Vec2<double>);
 
 }  // namespace kerf

@@ -20,14 +20,6 @@ double extent(Span<const Vec2<double>> pts) {
   return std::hypot(hi_x - lo_x, hi_y - lo_y);
 }
 
-// Distance from p to the circle through `on` around c, as
-// (|p-c|^2 - |on-c|^2) / (|p-c| + |on-c|) with the numerator written as
-// (p - on).(p + on - 2c): no cancellation when the radius is huge.
-double circle_distance(Vec2<double> c, Vec2<double> on, Vec2<double> p) {
-  const double power = (p - on).dot(p + on - c * 2.0);
-  return std::fabs(power) / ((p - c).norm() + (on - c).norm());
-}
-
 std::string piece_error(std::size_t k, const std::string& what) {
   std::string s = "piece ";
   s += std::to_string(k + 1);
@@ -58,7 +50,7 @@ std::string check_fit(Span<const Vec2<double>> pts, Span<const fit::Piece<double
     if (s.is_arc() && !(std::isfinite(radius) && radius > 0.0))
       return piece_error(k, "arc without a finite radius");
     for (std::uint32_t i = pc.first + 1; i < pc.last; ++i) {
-      const double d = s.is_arc() ? circle_distance(s.centre, s.start, pts[i])
+      const double d = s.is_arc() ? distance_to_circle(s.centre, s.start, pts[i])
                                   : distance_to_line(s.start, s.end, pts[i]);
       if (!(d <= limit)) {
         char buf[96];

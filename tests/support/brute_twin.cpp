@@ -228,13 +228,7 @@ std::vector<VPiece> twin_pieces(const std::vector<VPoint>& pts, const std::vecto
   for (std::size_t k = 1; k < path.size(); ++k) {
     const std::size_t i = path[k - 1], j = path[k];
     const TwinCircle c = twin_pair(pts, i, j, tol, samples);
-    VPiece p;
-    p.first = i;
-    p.last = j;
-    p.sx = pts[i].x;
-    p.sy = pts[i].y;
-    p.ex = pts[j].x;
-    p.ey = pts[j].y;
+    VPiece p = line_piece(pts, i, j);
     if (!c.feasible || c.line) {  // an infeasible pair is left for the verifier to reject
       out.push_back(p);
       continue;

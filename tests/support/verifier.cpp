@@ -193,4 +193,15 @@ VerifyReport verify(const std::vector<VPoint>& pts, const std::vector<VPiece>& p
   return {};
 }
 
+VPiece line_piece(const std::vector<VPoint>& pts, std::size_t first, std::size_t last) {
+  VPiece p;
+  p.first = first;
+  p.last = last;
+  p.sx = pts[first].x;
+  p.sy = pts[first].y;
+  p.ex = pts[last].x;
+  p.ey = pts[last].y;
+  return p;
+}
+
 }  // namespace kerf_test

@@ -37,6 +37,9 @@ struct VPiece {
   int dir = 0;            // E: +1 CCW, -1 CW, 0 for a line
 };
 
+// The line piece from pts[first] to pts[last]; an arc starts from it too.
+VPiece line_piece(const std::vector<VPoint>& pts, std::size_t first, std::size_t last);
+
 struct VerifyReport {
   bool ok = true;
   std::string why;  // the first problem found, empty when ok

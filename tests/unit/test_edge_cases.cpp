@@ -224,14 +224,7 @@ VPiece quarter_arc() {
   return p;
 }
 VPiece line(const std::vector<VPoint>& pts, std::size_t i, std::size_t j) {
-  VPiece p;
-  p.first = i;
-  p.last = j;
-  p.sx = pts[i].x;
-  p.sy = pts[i].y;
-  p.ex = pts[j].x;
-  p.ey = pts[j].y;
-  return p;
+  return kerf_test::line_piece(pts, i, j);
 }
 
 TEST(Verifier, AcceptsAGoodArc) {

@@ -75,6 +75,17 @@ TEST(Sweep, HandlesMajorArcsBothWays) {
   EXPECT_FALSE(kerf::in_sweep(a, b, V{0, 1}, -1));
 }
 
+TEST(Distance, ToCircleStaysExactForHugeRadii) {
+  // Centre 1e17 below the chord (-5,0)-(5,0): the circle rises 12.5 / t above
+  // the chord's middle, so a point 0.5 above it is 0.5 - 12.5 / t from the
+  // circle. At this radius one ulp is 16, so | |p - c| - r | would say 0.
+  const double t = 1e17;
+  const V c{0, -t};
+  const V on{-5, 0};
+  EXPECT_NEAR(kerf::distance_to_circle(c, on, V{0, 0.5}), 0.5 - 12.5 / t, 1e-12);
+  EXPECT_NEAR(kerf::distance_to_circle(c, on, V{5, 0}), 0.0, 1e-12);
+}
+
 TEST(Segment, LineIsTheInfiniteRadiusLimit) {
   const auto line = kerf::Segment<double>::line(V{0, 0}, V{10, 0});
   EXPECT_FALSE(line.is_arc());

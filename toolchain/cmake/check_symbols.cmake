@@ -14,7 +14,7 @@ endif()
 # statics and static destructors (both need an OS runtime), C allocation
 # (also newlib's reentrant _*_r forms), stdio (also glibc's _FORTIFY_SOURCE
 # __*_chk forms, which Ubuntu's compilers emit by default), glibc's assert,
-# and common system calls (also newlib's _write/_sbrk... stubs).
+# and common system calls (also newlib's _write, _sbrk and the like).
 set(banned
   "_Znw[a-zA-Z0-9_]*" "_Zna[a-zA-Z0-9_]*" "_Zdl[a-zA-Z0-9_]*" "_Zda[a-zA-Z0-9_]*"
   "__cxa_[a-z_]*throw[a-z_]*" "__cxa_allocate_exception" "__cxa_begin_catch"

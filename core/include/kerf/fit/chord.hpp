@@ -64,6 +64,14 @@ struct Chord {
   }
 };
 
+// The circle (or line) chosen for one piece, as every fitting rule reports it.
+template <class S>
+struct PieceFit {
+  bool line = true;
+  Vec2<S> direction{S(1), S(0)};  // unit (cos phi, sin phi); (1, 0) is the line
+  S error{};                      // the largest distance of an inner point
+};
+
 // True when a and b are too close for their chord to define a pencil of
 // circles: its direction would be rounding noise. Such a pair is a closed
 // loop, which no single arc can represent.

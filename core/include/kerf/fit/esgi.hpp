@@ -21,13 +21,6 @@ namespace kerf::fit {
 
 enum class EsgiRule : std::uint8_t { max, mean };
 
-template <class S>
-struct EsgiArc {
-  bool line = true;
-  Vec2<S> direction{S(1), S(0)};  // unit (cos phi, sin phi) of the circle, see fit/chord.hpp
-  S error{};
-};
-
 namespace detail {
 
 // Largest distance from the inner points to the circle of direction d,
@@ -42,9 +35,9 @@ S inner_error(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, const Chord<
 }
 
 template <class S>
-EsgiArc<S> esgi_max(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, const Chord<S>& chord,
+PieceFit<S> esgi_max(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, const Chord<S>& chord,
                     S stop, S good_enough) {
-  EsgiArc<S> best;
+  PieceFit<S> best;
   best.error = Scalar<S>::infinity();
   for (std::uint32_t k = i + 1; k < j && !(best.error <= good_enough); ++k) {
     const Vec2<S> d = chord.direction_through(pts[k]);
@@ -56,7 +49,7 @@ EsgiArc<S> esgi_max(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, const 
 }
 
 template <class S>
-EsgiArc<S> esgi_mean(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, const Chord<S>& chord,
+PieceFit<S> esgi_mean(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, const Chord<S>& chord,
                      S stop) {
   // The report's d_k is the signed offset t of the centre along the bisector,
   // t = A / (2B) in fit/chord.hpp's terms (its normal points the other way,
@@ -72,7 +65,7 @@ EsgiArc<S> esgi_mean(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, const
     sum = sum + (v.norm2() - chord.h * chord.h) / (S(2) * b);
     ++count;
   }
-  EsgiArc<S> arc;
+  PieceFit<S> arc;
   if (count > 0 && Scalar<S>::is_finite(sum)) {
     const Vec2<S> d{sum / S(static_cast<long>(count)), chord.h};  // (t, h) ~ (cos, sin)
     arc.direction = d * (S(1) / d.norm());
@@ -89,9 +82,9 @@ EsgiArc<S> esgi_mean(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, const
 // settles for the first one within eps. For the rule's own choice pass
 // stop = infinity and good_enough = -1.
 template <class S>
-EsgiArc<S> esgi_arc(EsgiRule rule, const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, S stop,
+PieceFit<S> esgi_arc(EsgiRule rule, const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, S stop,
                     S good_enough) {
-  EsgiArc<S> arc;
+  PieceFit<S> arc;
   if (j <= i + 1) return arc;  // two consecutive points: the line, exactly
   if (closes_on_itself(pts[i], pts[j])) {
     arc.error = Scalar<S>::infinity();

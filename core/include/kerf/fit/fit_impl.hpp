@@ -107,12 +107,11 @@ Result<S> bisect_tol(Span<const Vec2<S>> pts, std::uint32_t pieces, Method metho
 
 // The circle (or line) of one piece of the final path.
 template <class S>
-PairFit<S> choose_piece(const Vec2<S>* p, std::uint32_t i, std::uint32_t j, S eps, Method method,
+PieceFit<S> choose_piece(const Vec2<S>* p, std::uint32_t i, std::uint32_t j, S eps, Method method,
                         AngleSet<S>& set) {
   if (method == Method::optimal) return best_vertex_pair(p, i, j, eps, set);
   const EsgiRule rule = method == Method::esgi_max ? EsgiRule::max : EsgiRule::mean;
-  const EsgiArc<S> a = esgi_arc(rule, p, i, j, Scalar<S>::infinity(), S(-1));
-  return {a.line, a.direction, a.error};
+  return esgi_arc(rule, p, i, j, Scalar<S>::infinity(), S(-1));
 }
 
 // Runs the search at eps within `pieces` and writes the path's pieces, in
@@ -134,7 +133,7 @@ Result<Fit<S>> build(Span<const Vec2<S>> original, Scaled<S> sc, S eps, std::uin
   std::uint32_t j = static_cast<std::uint32_t>(sc.pts.size()) - 1;
   for (std::uint32_t k = count; k-- > 0;) {
     const std::uint32_t i = pred[j];
-    const PairFit<S> f = choose_piece(p, i, j, eps, method, set);
+    const PieceFit<S> f = choose_piece(p, i, j, eps, method, set);
     const Chord<S> chord(p[i], p[j]);
     const Vec2<S> centre = f.line ? Vec2<S>{} : chord.centre(f.direction);
     Segment<S> seg = make_segment(chord, p + i + 1, j - i - 1, f.line, centre, eps);

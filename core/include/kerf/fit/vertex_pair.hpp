@@ -150,22 +150,15 @@ S pair_error(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, const Chord<S
   return e;
 }
 
-// The piece chosen for p_i -> p_j once the path is fixed at tolerance eps.
-template <class S>
-struct PairFit {
-  bool line = true;
-  Vec2<S> direction{S(1), S(0)};  // unit (cos phi, sin phi); (1, 0) is the line
-  S error{};                      // the largest distance of an inner point
-};
 
 // The line when it is within eps: that never raises the fit's largest error,
 // and a machine runs it without an enormous centre. Otherwise the circle with
 // the smallest largest distance, found by bisecting eps' in [0, eps] on the
 // exact test (to 1e-12 relative). Precondition: the pair is feasible at eps.
 template <class S>
-PairFit<S> best_vertex_pair(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, S eps,
+PieceFit<S> best_vertex_pair(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, S eps,
                             AngleSet<S>& set) {
-  PairFit<S> best;
+  PieceFit<S> best;
   const Chord<S> chord(pts[i], pts[j]);
   best.error = pair_error(pts, i, j, chord, best.direction);
   if (!(best.error > eps)) return best;

@@ -46,10 +46,15 @@ S distance_to_line_segment(Vec2<S> a, Vec2<S> b, Vec2<S> p) {
   return Scalar<S>::abs(d.cross(p - a)) / Scalar<S>::sqrt(len2);
 }
 
-// Distance from p to the full circle (the ESGI error of a point).
+// Distance from p to the full circle around `centre` through `on` (the ESGI
+// error of a point). Written as (|p-c|^2 - |on-c|^2) / (|p-c| + |on-c|) with
+// the numerator as (p - on).(p + on - 2c), so that it does not cancel when the
+// radius is huge, as it does for nearly straight arcs.
 template <class S>
-S distance_to_circle(Vec2<S> centre, S radius, Vec2<S> p) {
-  return Scalar<S>::abs((p - centre).norm() - radius);
+S distance_to_circle(Vec2<S> centre, Vec2<S> on, Vec2<S> p) {
+  const S power = (p - on).dot(p + on - centre * S(2));
+  const S sum = (p - centre).norm() + (on - centre).norm();
+  return sum > S(0) ? Scalar<S>::abs(power) / sum : S(0);
 }
 
 // True when direction v (from the centre) lies within the sweep that starts at
@@ -75,7 +80,7 @@ S distance_to_segment(const Segment<S>& s, Vec2<S> p) {
   if (!s.is_arc()) return distance_to_line_segment(s.start, s.end, p);
   const Vec2<S> v = p - s.centre;
   if (v.norm2() != S(0) && in_sweep(s.start - s.centre, s.end - s.centre, v, s.dir))
-    return Scalar<S>::abs(v.norm() - s.radius());
+    return distance_to_circle(s.centre, s.start, p);
   const S da = distance(s.start, p);
   const S db = distance(s.end, p);
   return da < db ? da : db;
