@@ -11,10 +11,14 @@
 #include <cstring>
 #include <vector>
 
+#include "cli/band_widths.hpp"
 #include "cli/check_fit.hpp"
+#include "cli/options.hpp"
+#include "io/band_storage.hpp"
 #include "io/fit_output.hpp"
 #include "io/fit_storage.hpp"
 #include "io/point_file.hpp"
+#include "kerf/fit/band_fit.hpp"
 #include "kerf/fit/fit.hpp"
 
 namespace kerf::cli {
@@ -26,56 +30,12 @@ int usage_error(const std::string& message) {
   return kExitUsage;
 }
 
-std::string quoted(const std::string& s) { return "\"" + s + "\""; }
-
 // "1 piece", "5 pieces".
 std::string count(std::size_t n, const char* one, const char* many) {
   std::string s = std::to_string(n);
   s += ' ';
   s += n == 1 ? one : many;
   return s;
-}
-
-// --tol: a finite number > 0.
-bool parse_tol(const std::string& text, double& tol, std::string& error) {
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  // strtod skips leading blanks; an option value must not have them either
-  const bool blank = !text.empty() && std::isspace(static_cast<unsigned char>(text[0])) != 0;
-  if (text.empty() || blank || end != text.c_str() + text.size()) {
-    error = "--tol: not a number: " + quoted(text);
-    return false;
-  }
-  if (!std::isfinite(v)) {
-    error = "--tol: must be finite, got " + text;
-    return false;
-  }
-  if (!(v > 0.0)) {
-    error = "--tol: must be > 0, got " + text;
-    return false;
-  }
-  tol = v;
-  return true;
-}
-
-// --pieces: a whole number >= 1.
-bool parse_pieces(const std::string& text, std::uint32_t& pieces, std::string& error) {
-  const bool digits = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
-  if (!digits) {
-    error = "--pieces: must be a whole number >= 1, got " + quoted(text);
-    return false;
-  }
-  const std::size_t nz = text.find_first_not_of('0');
-  if (nz == std::string::npos) {
-    error = "--pieces: must be >= 1, got " + text;
-    return false;
-  }
-  if (text.size() - nz > 9) {  // up to 999999999, far beyond any point count
-    error = "--pieces: too large, got " + text;
-    return false;
-  }
-  pieces = static_cast<std::uint32_t>(std::strtoul(text.c_str() + nz, nullptr, 10));
-  return true;
 }
 
 bool parse_method(const std::string& text, fit::Method& method) {
@@ -102,7 +62,15 @@ CLI::App* add_fit_command(CLI::App& app, FitOptions& opts) {
   fit->add_option("--pieces", opts.pieces,
                   "Number of pieces: find the smallest tol instead of giving --tol")
       ->type_name("K");
-  fit->add_option("--criterion", opts.criterion, "Error criterion (only: vertex)")
+  fit->add_option("--tol-left", opts.tol_left,
+                  "band: the band's width left of the path (>= 0; default --tol)")
+      ->type_name("A");
+  fit->add_option("--tol-right", opts.tol_right,
+                  "band: the band's width right of the path (>= 0; default --tol)")
+      ->type_name("B");
+  fit->add_option("--criterion", opts.criterion,
+                  "vertex (points within tol of their arc) or band (the whole arc within the "
+                  "tolerance band of the polyline)")
       ->type_name("NAME")
       ->capture_default_str();
   fit->add_option("--method", opts.method, "optimal, esgi-max or esgi-mean")
@@ -117,44 +85,86 @@ CLI::App* add_fit_command(CLI::App& app, FitOptions& opts) {
   return fit;
 }
 
-int run_fit(const FitOptions& opts) {
+namespace {
+
+// Checks the options that do not depend on the input; 0 when they are fine.
+int check_options(const FitOptions& opts, bool band, fit::Method& method, std::uint32_t& pieces,
+                  double& tol) {
   std::string error;
-  if (opts.criterion != "vertex")
-    return usage_error("--criterion: " + quoted(opts.criterion) +
-                       " is not supported (only vertex is implemented)");
-  fit::Method method{};
+  if (!band && opts.criterion != "vertex")
+    return usage_error("--criterion: unknown criterion " + quoted(opts.criterion) +
+                       " (expected vertex or band)");
   if (!parse_method(opts.method, method))
     return usage_error("--method: unknown method " + quoted(opts.method) +
                        " (expected optimal, esgi-max or esgi-mean)");
+  if (band && method != fit::Method::optimal)
+    return usage_error("--method: " + quoted(opts.method) +
+                       " is a vertex-criterion rule; --criterion band is always optimal");
+  if (!band && (!opts.tol_left.empty() || !opts.tol_right.empty()))
+    return usage_error("--tol-left and --tol-right need --criterion band");
   if (opts.format != "esgi" && opts.format != "json")
     return usage_error("--format: unknown format " + quoted(opts.format) +
                        " (expected esgi or json)");
-  const bool by_pieces = !opts.pieces.empty();
-  double tol = 0.0;
-  std::uint32_t pieces = 0;
-  if (by_pieces) {
+  if (!opts.pieces.empty()) {
     if (!opts.tol.empty()) return usage_error("--tol and --pieces cannot be used together");
     if (!parse_pieces(opts.pieces, pieces, error)) return usage_error(error);
-  } else {
-    if (opts.tol.empty()) return usage_error("--tol: required (or give --pieces)");
-    if (!parse_tol(opts.tol, tol, error)) return usage_error(error);
+  } else if (!band && opts.tol.empty()) {
+    return usage_error("--tol: required (or give --pieces)");
   }
+  if (!opts.tol.empty() && !parse_length("--tol", opts.tol, false, tol, error))
+    return usage_error(error);
+  double side = 0.0;
+  if (!opts.tol_left.empty() && !parse_length("--tol-left", opts.tol_left, true, side, error))
+    return usage_error(error);
+  if (!opts.tol_right.empty() && !parse_length("--tol-right", opts.tol_right, true, side, error))
+    return usage_error(error);
+  return kExitOk;
+}
+
+}  // namespace
+
+int run_fit(const FitOptions& opts) {
+  const bool band = opts.criterion == "band";
+  const bool by_pieces = !opts.pieces.empty();
+  fit::Method method{};
+  std::uint32_t pieces = 0;
+  double tol = 0.0;
+  if (const int rc = check_options(opts, band, method, pieces, tol); rc != kExitOk) return rc;
 
   const io::PointFile in = io::read_points(opts.file);
   if (!in.ok) {
     std::fprintf(stderr, "%s\n", io::describe_error(in).c_str());
     return kExitUsage;
   }
+  if (!band && !in.tols.empty()) {
+    std::fprintf(stderr, "%s:%zu: a third column (per-point tol) needs --criterion band\n",
+                 in.file.c_str(), in.point_lines[0]);
+    return kExitUsage;
+  }
+  std::vector<fit::BandWidth<double>> widths;
+  if (band) {
+    std::string error;
+    const WidthOptions w{opts.tol, opts.tol_left, opts.tol_right, by_pieces};
+    if (!band_widths(w, in, widths, error)) return usage_error(error);
+  }
 
   const std::size_t n = in.points.size();
-  io::FitStorage storage(n);
-  const fit::Workspace<double> ws = storage.workspace();
   const Span<const Vec2<double>> pts(in.points.data(), n);
-  const Span<fit::Piece<double>> dst = storage.pieces();
+  std::vector<fit::Piece<double>> piece_store(n - 1);
+  const Span<fit::Piece<double>> dst(piece_store.data(), piece_store.size());
 
   const auto t0 = std::chrono::steady_clock::now();
-  const Result<fit::Fit<double>> r = by_pieces ? fit::fit_min_error(pts, pieces, method, ws, dst)
-                                               : fit::fit_min_count(pts, tol, method, ws, dst);
+  Result<fit::Fit<double>> r = Status::invalid_argument;
+  if (band) {
+    io::BandStorage storage(n);
+    const Span<const fit::BandWidth<double>> ws_widths(widths.data(), n);
+    r = by_pieces ? fit::fit_band_min_error(pts, ws_widths, pieces, storage.workspace(), dst)
+                  : fit::fit_band_min_count(pts, ws_widths, storage.workspace(), dst);
+  } else {
+    io::FitStorage storage(n);
+    r = by_pieces ? fit::fit_min_error(pts, pieces, method, storage.workspace(), dst)
+                  : fit::fit_min_count(pts, tol, method, storage.workspace(), dst);
+  }
   const auto t1 = std::chrono::steady_clock::now();
   if (!r.ok()) {
     std::size_t where = 0;
@@ -172,6 +182,8 @@ int run_fit(const FitOptions& opts) {
     return kExitFailure;
   }
   const Span<const fit::Piece<double>> fitted(dst.data(), r.value().pieces);
+  // A band piece crosses each inner point's gate, so it passes within the
+  // widest width of every inner point: the vertex check applies to it too.
   if (const std::string bad = check_fit(pts, fitted, r.value().tol); !bad.empty()) {
     std::fprintf(stderr,
                  "kerf: %s: internal error: the fit fails its own check (%s); nothing written\n",
@@ -180,6 +192,7 @@ int run_fit(const FitOptions& opts) {
   }
 
   io::FitReport report;
+  report.criterion = band ? "band" : "vertex";
   report.method = opts.method.c_str();
   report.fit = r.value();
   report.pieces = fitted;

@@ -20,6 +20,8 @@ inline constexpr int kExitUsage = 2;    // bad options or bad input
 struct FitOptions {
   std::string tol;
   std::string pieces;
+  std::string tol_left;   // band only
+  std::string tol_right;  // band only
   std::string criterion = "vertex";
   std::string method = "optimal";
   std::string format = "esgi";

@@ -96,6 +96,7 @@ PointFile fail(PointFile f, std::size_t line, std::string reason) {
   f.reason = std::move(reason);
   f.points.clear();
   f.point_lines.clear();
+  f.tols.clear();
   return f;
 }
 
@@ -105,6 +106,8 @@ PointFile parse_points(std::string_view text, std::string display_name) {
   PointFile f;
   f.file = std::move(display_name);
   std::vector<std::string_view> fields;
+  std::size_t columns = 0;       // 2 or 3, fixed by the first point's line
+  std::size_t columns_line = 0;
   std::size_t line_no = 0;
   std::size_t pos = 0;
   while (pos < text.size()) {
@@ -117,20 +120,35 @@ PointFile parse_points(std::string_view text, std::string display_name) {
       line = line.substr(0, hash);
     if (!split_fields(line, fields)) return fail(std::move(f), line_no, "empty field");
     if (fields.empty()) continue;
-    if (fields.size() != 2)
+    if (fields.size() != 2 && fields.size() != 3)
       return fail(std::move(f), line_no,
-                  "expected 2 columns, got " + std::to_string(fields.size()));
+                  "expected 2 or 3 columns, got " + std::to_string(fields.size()));
+    if (columns == 0) {
+      columns = fields.size();
+      columns_line = line_no;
+    } else if (fields.size() != columns) {
+      std::string reason = "expected " + std::to_string(columns) + " columns like line " +
+                           std::to_string(columns_line) + ", got " + std::to_string(fields.size());
+      return fail(std::move(f), line_no, std::move(reason));
+    }
     Vec2<double> p;
     std::string reason;
     if (!parse_number(fields[0], p.x, reason) || !parse_number(fields[1], p.y, reason))
       return fail(std::move(f), line_no, reason);
+    double tol = 0.0;
+    if (columns == 3) {
+      if (!parse_number(fields[2], tol, reason)) return fail(std::move(f), line_no, "tol: " + reason);
+      if (!(tol > 0.0)) return fail(std::move(f), line_no, "tol must be > 0, got " + quote(fields[2]));
+    }
     if (!f.points.empty() && f.points.back() == p) {
       ++f.duplicates_dropped;
+      if (columns == 3) f.tols.back() = std::fmin(f.tols.back(), tol);  // the stricter one
       continue;
     }
     if (f.points.size() >= kMaxPoints) return fail(std::move(f), line_no, "too many points");
     f.points.push_back(p);
     f.point_lines.push_back(line_no);
+    if (columns == 3) f.tols.push_back(tol);
   }
   if (f.points.size() < 2) {
     // (the reason first: arguments are evaluated in no fixed order, and fail() empties f)

@@ -1,7 +1,8 @@
 // Reading the ordered points of a cut path from a text file or stdin.
 //
 // One "x y" pair per line, the two numbers separated by spaces, tabs or one
-// comma (with optional blanks around it). '#' starts a comment that runs to
+// comma (with optional blanks around it). A third column, on every line or
+// none, is that point's own tolerance (> 0), for the band criterion. '#' starts a comment that runs to
 // the end of the line; blank lines are skipped; CRLF line ends are accepted.
 // Consecutive duplicate points are dropped and counted.
 //
@@ -29,6 +30,7 @@ struct PointFile {
   std::string reason;        // why it failed, e.g. `not a number: "abc"`
   std::vector<Vec2<double>> points;       // after dropping consecutive duplicates
   std::vector<std::size_t> point_lines;   // the source line of each kept point
+  std::vector<double> tols;               // each kept point's tol: empty unless 3 columns
   std::size_t duplicates_dropped = 0;
 };
 

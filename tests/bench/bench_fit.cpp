@@ -13,6 +13,7 @@
 #include <cstring>
 #include <vector>
 
+#include "bench_util.hpp"
 #include "io/fit_storage.hpp"
 #include "kerf/fit/fit.hpp"
 
@@ -22,18 +23,10 @@ using kerf::Vec2;
 namespace fit = kerf::fit;
 
 constexpr double kTol = 0.01;
-constexpr double kAmplitude = 50.0;
-constexpr double kPeriod = 200.0;
-
-// n points on y = A sin(2 pi x / P) with x spacing dx.
-std::vector<Vec2<double>> sine(std::size_t n, double dx) {
-  std::vector<Vec2<double>> p(n);
-  for (std::size_t k = 0; k < n; ++k) {
-    const double x = static_cast<double>(k) * dx;
-    p[k] = {x, kAmplitude * std::sin(2.0 * M_PI * x / kPeriod)};
-  }
-  return p;
-}
+using kerf_bench::kAmplitude;
+using kerf_bench::kPeriod;
+using kerf_bench::sine;
+using kerf_bench::growth_exponent;
 
 struct Run {
   std::uint32_t pieces = 0;
@@ -67,21 +60,6 @@ Run measure(const std::vector<Vec2<double>>& p, bool whole_fit, int repeat) {
     best.seconds = std::min(best.seconds, std::chrono::duration<double>(t1 - t0).count());
   }
   return best;
-}
-
-// Least-squares slope of log(seconds) against log(n).
-double growth_exponent(const std::vector<double>& n, const std::vector<double>& t) {
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  const double m = static_cast<double>(n.size());
-  for (std::size_t k = 0; k < n.size(); ++k) {
-    const double x = std::log(n[k]);
-    const double y = std::log(t[k]);
-    sx += x;
-    sy += y;
-    sxx += x * x;
-    sxy += x * y;
-  }
-  return (m * sxy - sx * sy) / (m * sxx - sx * sx);
 }
 
 void table(const char* title, double span, double dx, std::size_t max_n, bool whole_fit, int repeat) {

@@ -5,6 +5,7 @@
 #include "kerf/fit/esgi.hpp"
 #include "kerf/fit/fit.hpp"
 #include "kerf/fit/min_count.hpp"
+#include "kerf/fit/prefix_guard.hpp"
 #include "kerf/fit/vertex_pair.hpp"
 
 namespace kerf::fit {
@@ -30,6 +31,7 @@ struct Oracle {
     const EsgiRule rule = method == Method::esgi_max ? EsgiRule::max : EsgiRule::mean;
     return !(esgi_arc(rule, pts, i, j, eps, eps).error > eps);
   }
+  bool alive(std::uint32_t i, std::uint32_t j) const { return prefix_guard(pts, i, j, eps); }
 };
 
 // The problem as the search sees it: the points scaled by a power of two
@@ -68,7 +70,7 @@ Result<std::uint32_t> count_at(Span<const Vec2<S>> pts, S eps, Method method, Wo
   AngleSet<S> set = make_set(ws);
   Oracle<S> oracle{pts.data(), eps, method, &set};
   const auto n = static_cast<std::uint32_t>(pts.size());
-  const Result<MinCount> r = min_count(pts.data(), n, eps, oracle, ws.words, budget, pred);
+  const Result<MinCount> r = min_count(n, oracle, ws.words, budget, pred);
   if (!r.ok()) return r.status();
   return r.value().pieces;
 }

@@ -2,9 +2,9 @@
 // layer by layer, in O(n) memory beyond the input.
 //
 // Feasibility is not monotone in j (p_i -> p_j may work when p_i -> p_{j-1}
-// does not), so a start point i is given up only when the monotone necessary
-// condition in fit/prefix_guard.hpp fails for it; until then every later j
-// is tried. Layer k+1 is built by walking j upwards from the first start in
+// does not), so a start point i is given up only when the oracle's monotone
+// necessary condition fails for it (fit/prefix_guard.hpp for the vertex
+// criterion); until then every later j is tried. Layer k+1 is built by walking j upwards from the first start in
 // layer k and asking the live starts of layer k, nearest first, for one that
 // reaches j. The walk ends when every start of layer k is dead, so a node left
 // out of layer k+1 is provably unreachable in k+1 pieces.
@@ -14,7 +14,7 @@
 
 #include "kerf/core/span.hpp"
 #include "kerf/core/status.hpp"
-#include "kerf/fit/prefix_guard.hpp"
+#include "kerf/geom/vec2.hpp"
 
 namespace kerf::fit {
 
@@ -28,12 +28,14 @@ struct MinCount {
 };
 
 // Oracle: bool feasible(i, j, hint) for i < j, where hint is a word kept per
-// start for the oracle's own use (0 at first). pred receives, for each reached
+// start for the oracle's own use (0 at first), and bool alive(i, j), asked
+// after feasible(i, j) failed: false only if no j' >= j can be reached from
+// i (a monotone necessary condition; the start is then dropped for good). pred receives, for each reached
 // node, the start of its last piece. Stops with pieces = 0 as soon as more
 // than `budget` pieces would be needed.
-template <class S, class Oracle>
-Result<MinCount> min_count(const Vec2<S>* pts, std::uint32_t n, S eps, Oracle& feasible,
-                           Span<std::uint32_t> words, std::uint32_t budget, std::uint32_t*& pred_out) {
+template <class Oracle>
+Result<MinCount> min_count(std::uint32_t n, Oracle& feasible, Span<std::uint32_t> words,
+                           std::uint32_t budget, std::uint32_t*& pred_out) {
   if (n < 2) return Status::invalid_argument;
   if (words.size() < min_count_words(n)) return Status::capacity_exceeded;
   std::uint32_t* dist = words.data();
@@ -67,7 +69,7 @@ Result<MinCount> min_count(const Vec2<S>* pts, std::uint32_t n, S eps, Oracle& f
           break;
         }
         // Only a start that just failed needs the guard's verdict.
-        if (!prefix_guard(pts, i, j, eps)) {
+        if (!feasible.alive(i, j)) {
           cur[s] = unreached;
           died = true;
         }

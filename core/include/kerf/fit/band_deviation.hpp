@@ -1,0 +1,177 @@
+// How far a band piece strays from its polyline: the largest distance from
+// a point of the arc (or line) p_i -> p_j to the polyline p_i..p_j.
+//
+// The piece crosses gate k at q_k (q_i = p_i, q_j = p_j); between q_k and
+// q_{k+1} it lies in cell k, whose nearest polyline part is edge k (the
+// gates are the corners' bisectors). So the piece's deviation is at most
+// the largest, over k, of the distance to edge k along that stretch, and
+// equals it unless a far part of the polyline folds back within tol. Along
+// one stretch that distance is a smooth function between the points where
+// the arc crosses the normals at p_k and p_{k+1} (where "nearest to the
+// edge's inside" turns into "nearest to an end"); its maxima are at those
+// crossings, at the stretch's ends, where the arc runs parallel to the edge,
+// or where it is farthest from p_k or p_{k+1}. All of these are evaluated.
+//
+// Points on the arc are ordered by sigma, the angle between the start
+// tangent and the chord to the point (half the angle turned so far), as a
+// pseudo-angle: the arc is sigma in [0, psi], and nothing here needs the
+// centre, which is far away on nearly straight arcs.
+#pragma once
+
+#include "kerf/fit/band_region.hpp"
+#include "kerf/geom/segment.hpp"
+
+namespace kerf::fit {
+
+template <class S>
+class ArcProbe {
+ public:
+  // The arc from a to b with unit start tangent t and turning side m (the
+  // unit normal of t towards the centre), or the line (d.y == 0), where d is
+  // (cos psi, sin psi) up to scale in the chord frame (u, n).
+  ArcProbe(Vec2<S> a, Vec2<S> b, Vec2<S> d, int orient) : a_(a), b_(b) {
+    const Vec2<S> u = b - a;
+    const S len = u.norm();
+    u_ = u * (S(1) / len);
+    n_ = u_.perp() * S(orient);
+    const S dl = d.norm();
+    d_ = d * (S(1) / dl);
+    t_ = u_ * d_.x - n_ * d_.y;  // t = (cos psi, -sin psi) in the frame
+    m_ = n_ * d_.x + u_ * d_.y;  // t rotated towards the bulge's far side
+    h_ = len / S(2);
+    psi_ = sigma(b);
+  }
+  bool line() const { return !(d_.y > S(0)); }
+
+  // sigma of a point on the circle, as a pseudo-angle in [0, 2].
+  S sigma(Vec2<S> x) const {
+    const Vec2<S> v = x - a_;
+    const S px = v.dot(t_);
+    const S py = max_of(S(0), v.dot(m_));
+    if (px == S(0) && py == S(0)) return S(0);
+    return S(1) - px / (Scalar<S>::abs(px) + py);
+  }
+  bool on_arc(Vec2<S> x) const {
+    const S s = sigma(x);
+    return !(s > psi_);
+  }
+
+  // The points where the circle meets the line p + s g (s free); returns
+  // how many (0..2) were written.
+  int meet_line(Vec2<S> p, Vec2<S> g, Vec2<S> out[2]) const {
+    // power * sin(psi) = d.y A - d.x Y with A = (x-a).(x-b), Y = 2h (x-mid).n
+    const Vec2<S> mid = midpoint(a_, b_);
+    const S qa = d_.y * g.norm2();
+    const S qb = d_.y * g.dot(p * S(2) - a_ - b_) - d_.x * S(2) * h_ * g.dot(n_);
+    const S qc = d_.y * (p - a_).dot(p - b_) - d_.x * S(2) * h_ * (p - mid).dot(n_);
+    if (qa == S(0)) {
+      if (qb == S(0)) return 0;
+      out[0] = p + g * (-qc / qb);
+      return 1;
+    }
+    const S disc = qb * qb - S(4) * qa * qc;
+    if (disc < S(0)) return 0;
+    const S sq = Scalar<S>::sqrt(disc);
+    const S q = -(qb + (qb < S(0) ? -sq : sq)) / S(2);
+    int k = 0;
+    if (q != S(0)) {
+      out[k++] = p + g * (q / qa);
+      out[k++] = p + g * (qc / q);
+    } else {
+      out[k++] = p;
+    }
+    return k;
+  }
+
+  // The points of the circle where its tangent is parallel to e (unit).
+  int parallel_to(Vec2<S> e, Vec2<S> out[2]) const {
+    if (line()) return 0;
+    // The tangent has turned by theta = 2 sigma where it is parallel to e.
+    const S ct = e.dot(t_);
+    const S st = e.dot(m_);
+    Vec2<S> half = (ct > S(-0.5)) ? Vec2<S>{S(1) + ct, st} : Vec2<S>{st, S(1) - ct};
+    if (half.y < S(0)) half = -half;
+    const S hl = half.norm();
+    if (!(hl > S(0))) return 0;
+    half = half * (S(1) / hl);
+    // The chord from a at angle sigma has length 2 r sin(sigma) = 2 h sin(sigma) / sin(psi).
+    const Vec2<S> other{-half.y, half.x};  // sigma + pi/2 (the opposite tangent)
+    int k = 0;
+    const Vec2<S> both[2] = {half, other};
+    for (const Vec2<S>& c : both) {
+      if (c.y < S(0)) continue;
+      const S chord = S(2) * h_ * c.y / d_.y;
+      out[k++] = a_ + (t_ * c.x + m_ * c.y) * chord;
+    }
+    return k;
+  }
+
+  // The point of the circle farthest from p, when the radius is moderate.
+  bool farthest_from(Vec2<S> p, Vec2<S>& out) const {
+    if (line() || d_.y < S(1e-6)) return false;  // nearly straight: never on the arc
+    const S r = h_ / d_.y;
+    const Vec2<S> c = a_ + m_ * r;
+    const Vec2<S> v = c - p;
+    const S len = v.norm();
+    if (!(len > S(0))) return false;
+    out = c + v * (r / len);
+    return true;
+  }
+
+ private:
+  Vec2<S> a_, b_, u_, n_, d_, t_, m_;
+  S h_{};
+  S psi_{};
+};
+
+// The deviation of the piece p_i -> p_j of region R with direction d and
+// orientation orient (see fit/band_pair.hpp), in R's units.
+template <class S>
+S band_deviation(const BandRegion<S>& r, std::uint32_t i, std::uint32_t j, Vec2<S> d, int orient) {
+  const ArcProbe<S> arc(r.point(i), r.point(j), d, orient);
+  S worst = S(0);
+  Vec2<S> from = r.point(i);
+  for (std::uint32_t k = i; k < j; ++k) {
+    const Vec2<S> p0 = r.point(k);
+    const Vec2<S> p1 = r.point(k + 1);
+    Vec2<S> to = p1;
+    if (k + 1 < j) {  // where the arc crosses gate k + 1
+      Vec2<S> hits[2];
+      const int m = arc.meet_line(p1, r.vertex(k + 1).b, hits);
+      const S s_from = arc.sigma(from);
+      bool found = false;
+      for (int t = 0; t < m; ++t) {
+        const S s = arc.sigma(hits[t]);
+        if (arc.on_arc(hits[t]) && !(s < s_from) && (!found || s < arc.sigma(to))) {
+          to = hits[t];
+          found = true;
+        }
+      }
+    }
+    const S lo = arc.sigma(from);
+    const S hi = arc.sigma(to);
+    auto consider = [&](Vec2<S> x) {
+      const S s = arc.sigma(x);
+      if (!(s < lo) && !(s > hi)) worst = max_of(worst, distance_to_line_segment(p0, p1, x));
+    };
+    worst = max_of(worst, distance_to_line_segment(p0, p1, from));
+    worst = max_of(worst, distance_to_line_segment(p0, p1, to));
+    if (!arc.line()) {
+      const Vec2<S> e = (p1 - p0) * (S(1) / (p1 - p0).norm());
+      Vec2<S> pts[2];
+      const Vec2<S> ends[2] = {p0, p1};
+      for (const Vec2<S>& base : ends) {
+        const int m = arc.meet_line(base, e.perp(), pts);
+        for (int t = 0; t < m; ++t) consider(pts[t]);
+        Vec2<S> far{};
+        if (arc.farthest_from(base, far)) consider(far);
+      }
+      const int m = arc.parallel_to(e, pts);
+      for (int t = 0; t < m; ++t) consider(pts[t]);
+    }
+    from = to;
+  }
+  return worst;
+}
+
+}  // namespace kerf::fit

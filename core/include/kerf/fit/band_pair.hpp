@@ -1,0 +1,205 @@
+// The exact band test for one candidate piece p_i -> p_j: the set of valid
+// arcs (Theorem 2.11 of Drysdale, Rote, Sturm) in one orientation.
+//
+// Every arc from a = p_i to b = p_j is fixed by its orientation and psi in
+// [0, pi), half its sweep: psi = 0 is the line, psi = pi/2 the half circle.
+// A counter-clockwise arc bulges to the right of a -> b. The clockwise case
+// is the same one mirrored in the chord, so one routine handles both: it
+// works in a frame whose y axis is the chord's left normal times `orient`
+// (+1 for counter-clockwise), and "left" in the paper becomes gate side
+// +orient.
+//
+// With d = (cos psi, sin psi) and, for a point q, A = (q - a).(q - b) and Y
+// = (q - mid).N (N the frame's normal, |N| = |b - a|), the power of q with
+// respect to the arc's circle times sin psi is  P = d.y A - d.x Y  = d.(-Y, A).
+// So "q is outside the disc" (P >= 0) and "q is inside" (P <= 0) are each a
+// half-plane through the origin in d, and so are the end conditions:
+//  - the paper's wedges (Lemmas 2.3-2.5): for each gate m strictly between,
+//    the disc contains the gate's end on side +orient and excludes the other
+//    end, so the circle crosses the gate exactly once, the right way round;
+//  - the rays on the bisector (Lemma 2.6): the arc leaves a through gate i
+//    forwards, t_a = (cos psi, -sin psi), and reaches b forwards through
+//    gate j, t_b = (cos psi, sin psi), in the frame;
+//  - the Voronoi region of p_i (Lemmas 2.7-2.10): no point of the boundary
+//    chain on the bulge side (side -orient) between gates i and j lies
+//    inside the disc. For the chain's vertices that is one half-plane each;
+//    for the inside of a chain segment, the binding points are where the
+//    circle through a, b and the point is extreme along the segment, the
+//    roots of a quadratic, plus where the segment crosses the chord line.
+//    The other chain needs no test: the cells are convex (assumption (C)),
+//    so the arc between two gate crossings stays on the far side of their
+//    chord from it.
+// A half-plane d.w >= 0 meets the half circle psi in [0, pi] in a prefix or
+// a suffix (it is a half circle too), so the valid set is always one
+// interval [lo, hi], kept as pseudo-angles (fit/angle_set.hpp): no
+// trigonometry and no square roots, and the line is simply psi = 0. This is
+// the paper's test restricted to the bisector, done per pair instead of
+// keeping the 2-D regions: the search's hints make failing pairs O(1).
+#pragma once
+
+#include <cstdint>
+
+#include "kerf/fit/angle_set.hpp"
+#include "kerf/fit/band_region.hpp"
+
+namespace kerf::fit {
+
+// Valid arcs of one orientation as an interval of psi's pseudo-angle,
+// 0 = the line, 2 = the full circle (excluded).
+template <class S>
+struct PsiRange {
+  S lo = S(0);
+  S hi = S(2);
+  bool empty() const { return hi < lo || !(lo < S(2)); }
+};
+
+template <class S>
+class BandPair {
+ public:
+  BandPair(const BandRegion<S>& r, std::uint32_t i, std::uint32_t j, int orient)
+      : r_(r), i_(i), j_(j), orient_(orient), a_(r.point(i)), b_(r.point(j)) {
+    const Vec2<S> u = b_ - a_;
+    mid_ = midpoint(a_, b_);
+    u_ = u;
+    n_ = u.perp() * S(orient);
+  }
+
+  // The end conditions alone.
+  bool ends(PsiRange<S>& range) const {
+    const Vec2<S> f = r_.forward(i_, false);
+    const Vec2<S> g = r_.forward(j_, true);
+    cut(range, {f.dot(u_), -f.dot(n_)});
+    cut(range, {g.dot(u_), g.dot(n_)});
+    return !range.empty();
+  }
+
+  // Adds cell k's conditions (i <= k < j): its bulge-side chain, and gate
+  // k + 1 when that gate lies strictly between the ends.
+  bool cell(std::uint32_t k, PsiRange<S>& range) const {
+    if (k > i_ && r_.vertex(k).barrier) {
+      range.lo = S(2);
+      return false;
+    }
+    BandChain<S> c;
+    r_.chain(k, -orient_, c);
+    for (int t = (k == i_ ? 0 : 1); t < c.size; ++t) outside(range, c.pt[t]);
+    if (range.empty()) return false;
+    // Clear at both ends of the range means clear inside it (a segment's
+    // valid set is an interval); the ends are taken once, before the
+    // segments narrow the range, which only makes that test stricter.
+    const Vec2<S> lo = direction_of(range.lo);
+    const Vec2<S> hi = direction_of(range.hi);
+    for (int t = 0; t + 1 < c.size && !range.empty(); ++t) segment(range, lo, hi, c.pt[t], c.pt[t + 1]);
+    if (k + 1 < j_) inside(range, r_.gate_end(k + 1, orient_));
+    return !range.empty();
+  }
+
+  // The whole test; `fail` is set to the cell that emptied the range. The
+  // conditions commute, so the cells are visited in bit-reversed order
+  // (middle, ends, quarters, ...): a piece too long for the band usually
+  // fails on a few far-apart gates together, long before a scan in order
+  // would bring them together.
+  bool run(PsiRange<S>& range, std::uint32_t& fail) const {
+    range = PsiRange<S>{};
+    if (!ends(range)) {
+      fail = i_;
+      return false;
+    }
+    const std::uint32_t len = j_ - i_;
+    std::uint32_t bits = 0;
+    while ((1u << bits) < len) ++bits;
+    for (std::uint32_t t = 0; t < (1u << bits); ++t) {
+      std::uint32_t rev = 0;
+      for (std::uint32_t b = 0; b < bits; ++b) rev |= ((t >> b) & 1u) << (bits - 1 - b);
+      if (rev >= len) continue;
+      const std::uint32_t k = i_ + rev;
+      if (!cell(k, range)) {
+        fail = k;
+        return false;
+      }
+    }
+    return true;
+  }
+
+  // Centre and direction E of the arc at pseudo-angle q (q > 0).
+  Vec2<S> centre(S q) const {
+    const Vec2<S> d = direction_of(q);
+    // centre = mid + n_unit * h cot(psi) on the bulge's far side: with
+    // n = |u| n_unit and h = |u| / 2 that is mid + n (d.x / d.y) / 2.
+    return mid_ + n_ * (d.x / (S(2) * d.y));
+  }
+
+ private:
+  static S pseudo(Vec2<S> d) { return S(1) - d.x / (Scalar<S>::abs(d.x) + d.y); }
+
+  // Intersects the range with the half-plane d.w >= 0.
+  static void cut(PsiRange<S>& r, Vec2<S> w) {
+    if (w.x > S(0)) {
+      r.hi = min_of(r.hi, pseudo({-w.y, w.x}));
+    } else if (w.x < S(0)) {
+      r.lo = max_of(r.lo, pseudo({w.y, -w.x}));
+    } else if (w.y < S(0)) {
+      r.hi = min_of(r.hi, S(0));
+    }
+  }
+
+  S area(Vec2<S> q) const { return (q - a_).dot(q - b_); }
+  S offset(Vec2<S> q) const { return (q - mid_).dot(n_); }
+  void outside(PsiRange<S>& r, Vec2<S> q) const { cut(r, {-offset(q), area(q)}); }
+  void inside(PsiRange<S>& r, Vec2<S> q) const { cut(r, {offset(q), -area(q)}); }
+
+  // min over t in [0, 1] of the power of q1 + t (q2 - q1) is >= 0 at d
+  // (the end points are already known to be outside).
+  bool clear(Vec2<S> d, S a1, S y1, S vd, S dd, S dn) const {
+    const S c2 = d.y * dd;
+    if (!(c2 > S(0))) return true;
+    const S c1 = S(2) * d.y * vd - d.x * dn;
+    if (!(c1 < S(0)) || -c1 >= S(2) * c2) return true;  // minimum at an end
+    const S p1 = d.y * a1 - d.x * y1;
+    return S(4) * c2 * p1 >= c1 * c1;
+  }
+
+  void segment(PsiRange<S>& r, Vec2<S> lo, Vec2<S> hi, Vec2<S> q1, Vec2<S> q2) const {
+    const Vec2<S> dq = q2 - q1;
+    const Vec2<S> v1 = q1 - mid_;
+    const S a1 = area(q1);
+    const S y1 = v1.dot(n_);
+    const S vd = v1.dot(dq);
+    const S dd = dq.norm2();
+    const S dn = dq.dot(n_);
+    if (clear(lo, a1, y1, vd, dd, dn) && clear(hi, a1, y1, vd, dd, dn)) return;
+    // The circle through a, b and q(t) is extreme where A Y' = Y A':
+    //   dd dn t^2 + 2 y1 dd t + (2 y1 vd - a1 dn) = 0.
+    const S qa = dd * dn;
+    const S qb = S(2) * y1 * dd;
+    const S qc = S(2) * y1 * vd - a1 * dn;
+    S roots[3];
+    int m = 0;
+    if (qa != S(0)) {
+      const S disc = qb * qb - S(4) * qa * qc;
+      if (disc >= S(0)) {
+        const S sq = Scalar<S>::sqrt(disc);
+        const S t1 = (-qb - (qb < S(0) ? -sq : sq)) / (S(2) * qa);  // no cancellation
+        roots[m++] = t1;
+        if (t1 != S(0)) roots[m++] = qc / (qa * t1);
+      }
+    } else if (qb != S(0)) {
+      roots[m++] = -qc / qb;
+    }
+    if (dn != S(0)) roots[m++] = -y1 / dn;  // where it crosses the chord line
+    for (int t = 0; t < m; ++t)
+      if (roots[t] > S(0) && roots[t] < S(1)) outside(r, q1 + dq * roots[t]);
+  }
+
+  const BandRegion<S>& r_;
+  std::uint32_t i_;
+  std::uint32_t j_;
+  int orient_;
+  Vec2<S> a_;
+  Vec2<S> b_;
+  Vec2<S> mid_{};
+  Vec2<S> u_{};
+  Vec2<S> n_{};
+};
+
+}  // namespace kerf::fit

@@ -1,0 +1,246 @@
+// Definitions behind fit/band_region.hpp (see the construction there).
+#pragma once
+
+#include "kerf/fit/band_region.hpp"
+
+namespace kerf::fit {
+
+namespace band_detail {
+
+// A direction's angle as a number in [0, 4) that grows with the angle
+// ("diamond angle"): enough to add up how far a polygon turns.
+template <class S>
+S diamond(Vec2<S> v) {
+  const S ax = Scalar<S>::abs(v.x);
+  const S ay = Scalar<S>::abs(v.y);
+  const S t = v.y / (ax + ay);  // in [-1, 1]
+  if (v.x >= S(0)) return v.y >= S(0) ? t : S(4) + t;
+  return S(2) - t;
+}
+
+template <class S>
+void push(BandChain<S>& c, Vec2<S> p) {
+  if (c.size > 0 && c.pt[c.size - 1] == p) return;
+  KERF_ASSERT(c.size < kBandChainMax);
+  c.pt[c.size++] = p;
+}
+
+}  // namespace band_detail
+
+template <class S>
+void BandRegion<S>::set_vertex(std::uint32_t k, S left, S right) {
+  using M = Scalar<S>;
+  BandVertex<S>& v = v_[k];
+  v.left = left;
+  v.right = right;
+  v.turn = 0;
+  v.barrier = false;
+  v.gate_left = left;
+  v.gate_right = right;
+  if (k == 0) {
+    v.b = v_[0].n;
+    return;
+  }
+  const Vec2<S> n0 = v_[k - 1].n;
+  if (k + 1 == n_) {
+    v.b = n0;
+    return;
+  }
+  const Vec2<S> n1 = v.n;
+  const Vec2<S> sum = n0 + n1;
+  const S len = sum.norm();
+  if (!(len > S(1e-6))) {  // a cusp: the path turns back on itself
+    v.b = n0;
+    v.gate_left = v.gate_right = S(0);
+    v.barrier = true;
+    return;
+  }
+  v.b = sum * (S(1) / len);
+  const S turn = n0.cross(n1);
+  v.turn = static_cast<std::int8_t>(turn > S(0) ? 1 : (turn < S(0) ? -1 : 0));
+  const S co = v.b.dot(n1);  // cos(a / 2)
+  const S si = M::abs(v.b.cross(n1));
+  const S c = (left - right) / S(2);
+  const S w = (left + right) / S(2);
+  const S disc = w * w - c * c * si * si;
+  const S root = M::sqrt(disc > S(0) ? disc : S(0));
+  v.gate_left = max_of(S(0), c * co + root);
+  v.gate_right = max_of(S(0), root - c * co);
+  if (v.gate_left == S(0) && v.gate_right == S(0)) v.barrier = true;
+  // The outer side is the left one at a right turn. Its gate end, seen from
+  // the centre of each edge's disc, against that disc's offset point.
+  const int side = v.turn < 0 ? 1 : -1;
+  const S width = side > 0 ? left : right;
+  v.split[0] = v.split[1] = 0;
+  if (v.turn != 0 && width > S(0) && w > S(0)) {
+    const Vec2<S> end = v.b * (side > 0 ? v.gate_left : -v.gate_right);  // from p_k
+    const Vec2<S> e_in = (end - n0 * c) * (S(1) / w);
+    const Vec2<S> e_out = (end - n1 * c) * (S(1) / w);
+    v.split[0] = split_depth(n0 * S(side), e_in, w, width);
+    v.split[1] = split_depth(e_out, n1 * S(side), w, width);
+  }
+}
+
+// How many times the corner arc between unit directions e1 and e2 (radius
+// w) must be halved for every chord's sagitta to be <= 1% of the side's
+// width: cos of half a chord's angle is |e1 + e2| / 2 at first, and each
+// halving takes c to sqrt((1 + c) / 2). At most 4 (16 chords).
+template <class S>
+std::uint8_t BandRegion<S>::split_depth(Vec2<S> e1, Vec2<S> e2, S w, S width) {
+  S c = (e1 + e2).norm() / S(2);
+  std::uint8_t depth = 0;
+  while (depth < 4 && w * (S(1) - c) > S(0.01) * width) {
+    c = Scalar<S>::sqrt((S(1) + c) / S(2));
+    ++depth;
+  }
+  return depth;
+}
+
+// The chords of the disc of vertex k's side of edge `edge`, from `from` to
+// `to` (both on its circle), halved `depth` times; pushes the inner points
+// and `to`.
+template <class S>
+void BandRegion<S>::corner(std::uint32_t k, std::uint32_t edge, Vec2<S> from, Vec2<S> to,
+                           int depth, BandChain<S>& out) const {
+  if (depth > 0) {
+    const BandVertex<S>& v = v_[k];
+    const S c = (v.left - v.right) / S(2);
+    const S w = (v.left + v.right) / S(2);
+    const Vec2<S> centre = p_[k] + v_[edge].n * c;
+    struct Piece {
+      Vec2<S> e1, e2;  // unit directions from the centre
+      int depth;
+    };
+    Piece stack[8];
+    int top = 0;
+    stack[top++] = {(from - centre) * (S(1) / w), (to - centre) * (S(1) / w), 0};
+    while (top > 0) {
+      const Piece s = stack[--top];
+      const Vec2<S> sum = s.e1 + s.e2;
+      const S len = sum.norm();
+      if (s.depth >= depth || !(len > S(0))) {
+        if (top > 0) band_detail::push(out, centre + s.e2 * w);  // the last one is `to`
+        continue;
+      }
+      const Vec2<S> mid = sum * (S(1) / len);
+      stack[top++] = {mid, s.e2, s.depth + 1};  // popped second
+      stack[top++] = {s.e1, mid, s.depth + 1};  // popped first
+    }
+  }
+  band_detail::push(out, to);
+}
+
+template <class S>
+void BandRegion<S>::chain(std::uint32_t k, int side, BandChain<S>& out) const {
+  out.size = 0;
+  const BandVertex<S>& a = v_[k];
+  const BandVertex<S>& b = v_[k + 1];
+  const Vec2<S> n = a.n;
+  const S sa = side > 0 ? a.left : -a.right;  // signed offsets of the edge's side
+  const S sb = side > 0 ? b.left : -b.right;
+  const Vec2<S> start = gate_end(k, side);
+  const Vec2<S> end = gate_end(k + 1, side);
+  band_detail::push(out, start);
+  // Outer side of the corner at k: round from the gate end to the offset
+  // edge. (At an end gate, and on the inner side, the chain starts straight.)
+  if (k > 0 && a.turn == -side && sa != S(0)) corner(k, k, start, p_[k] + n * sa, a.split[1], out);
+  // Outer side at k + 1: along the offset edge, then round to the gate end.
+  // On the inner side the offset edge's end lies past gate k + 1, so the
+  // chain heads straight for the gate end.
+  if (k + 2 < n_ && b.turn == -side && sb != S(0)) {
+    const Vec2<S> off = p_[k + 1] + n * sb;
+    band_detail::push(out, off);
+    corner(k + 1, k, off, end, b.split[0], out);
+  } else {
+    band_detail::push(out, end);
+  }
+}
+
+// Walks the cell's outline (left chain forwards, right chain backwards: a
+// clockwise loop) and checks every turn is to the right and that it turns
+// exactly once around. bad_side: +1 left, -1 right, 0 both.
+template <class S>
+bool BandRegion<S>::cell_convex(std::uint32_t k, int& bad_side) const {
+  BandChain<S> l;
+  BandChain<S> r;
+  chain(k, 1, l);
+  chain(k, -1, r);
+  Vec2<S> loop[2 * kBandChainMax];
+  int side_of[2 * kBandChainMax];
+  int m = 0;
+  // Chain points carry rounding of a few ulps of the coordinates, which on
+  // the tiny chords of a gentle corner is a visible turn. A turn counts only
+  // when the point lies farther than that noise from its neighbours' line.
+  const S big = max_of(max_of(Scalar<S>::abs(p_[k].x), Scalar<S>::abs(p_[k].y)),
+                       max_of(Scalar<S>::abs(p_[k + 1].x), Scalar<S>::abs(p_[k + 1].y)));
+  const S noise = S(4096) * Scalar<S>::epsilon() * big;
+  const S tiny = max_of(S(1e-12) * (p_[k + 1] - p_[k]).norm(), noise);
+  auto add = [&](Vec2<S> q, int side) {
+    if (m > 0 && (q - loop[m - 1]).norm() <= tiny) return;
+    loop[m] = q;
+    side_of[m++] = side;
+  };
+  for (int t = 0; t < l.size; ++t) add(l.pt[t], 1);
+  for (int t = r.size; t-- > 0;) add(r.pt[t], -1);
+  while (m > 1 && (loop[m - 1] - loop[0]).norm() <= tiny) --m;
+  if (m < 3) return true;  // a cell narrowed to a segment
+  S total = S(0);
+  bool reflex_left = false;
+  bool reflex_right = false;
+  for (int t = 0; t < m; ++t) {
+    const Vec2<S> e1 = loop[t] - loop[(t + m - 1) % m];
+    const Vec2<S> e2 = loop[(t + 1) % m] - loop[t];
+    const S cross = e1.cross(e2);
+    if (cross > S(1e-9) * e1.norm() * e2.norm() && cross > noise * (e1 + e2).norm()) {
+      (side_of[t] > 0 ? reflex_left : reflex_right) = true;
+    }
+    S d = band_detail::diamond(e2) - band_detail::diamond(e1);
+    if (d > S(2)) d -= S(4);
+    if (d <= S(-2)) d += S(4);
+    total += d;
+  }
+  const bool once = Scalar<S>::abs(total + S(4)) < S(0.5);
+  if (once && !reflex_left && !reflex_right) return true;
+  bad_side = (!once || (reflex_left && reflex_right)) ? 0 : (reflex_left ? 1 : -1);
+  return false;
+}
+
+template <class S>
+Status BandRegion<S>::build(const BandWidth<S>* widths, S scale) {
+  if (n_ < 2) return Status::invalid_argument;
+  for (std::uint32_t k = 0; k + 1 < n_; ++k) {
+    const Vec2<S> d = p_[k + 1] - p_[k];
+    v_[k].n = d.perp() * (S(1) / d.norm());
+  }
+  v_[n_ - 1].n = v_[n_ - 2].n;
+  for (std::uint32_t k = 0; k < n_; ++k)
+    set_vertex(k, widths[k].left * scale, widths[k].right * scale);
+  const S floor = S(1.0) / S(1099511627776.0);  // 2^-40 of the width asked for
+  for (int pass = 0; pass < 100; ++pass) {
+    bool changed = false;
+    for (std::uint32_t k = 0; k + 1 < n_; ++k) {
+      int bad = 0;
+      if (cell_convex(k, bad)) continue;
+      changed = true;
+      for (std::uint32_t q = k; q <= k + 1; ++q) {
+        BandVertex<S>& v = v_[q];
+        S left = v.left;
+        S right = v.right;
+        if (bad >= 0) left = left / S(2) < widths[q].left * scale * floor ? S(0) : left / S(2);
+        if (bad <= 0) right = right / S(2) < widths[q].right * scale * floor ? S(0) : right / S(2);
+        set_vertex(q, left, right);
+      }
+    }
+    if (!changed) return Status::ok;
+  }
+  // Still not convex after 100 rounds: give up the width of what is left.
+  for (std::uint32_t k = 0; k + 1 < n_; ++k) {
+    int bad = 0;
+    if (cell_convex(k, bad)) continue;
+    set_vertex(k, S(0), S(0));
+    set_vertex(k + 1, S(0), S(0));
+  }
+  return Status::ok;
+}
+
+}  // namespace kerf::fit

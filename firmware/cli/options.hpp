@@ -1,0 +1,19 @@
+// Checking option values given as text, so that every message has the same
+// "--option: reason" form (the caller prefixes "kerf: ").
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace kerf::cli {
+
+std::string quoted(const std::string& s);
+
+// A finite number > 0 (allow_zero: >= 0) for option `name`.
+bool parse_length(const std::string& name, const std::string& text, bool allow_zero, double& out,
+                  std::string& error);
+
+// --pieces: a whole number >= 1.
+bool parse_pieces(const std::string& text, std::uint32_t& pieces, std::string& error);
+
+}  // namespace kerf::cli

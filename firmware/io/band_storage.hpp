@@ -1,0 +1,31 @@
+// Heap-backed storage for core's band fitter, for host programs (the CLI,
+// tests, benchmarks). core itself never allocates: it takes these spans.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "kerf/fit/band_fit.hpp"
+
+namespace kerf::io {
+
+class BandStorage {
+ public:
+  explicit BandStorage(std::size_t n)
+      : words_(fit::band_workspace_words(n)), points_(n), vertices_(n), pieces_(n > 1 ? n - 1 : 1) {}
+
+  fit::BandWorkspace<double> workspace() {
+    return {{words_.data(), words_.size()},
+            {points_.data(), points_.size()},
+            {vertices_.data(), vertices_.size()}};
+  }
+  Span<fit::Piece<double>> pieces() { return {pieces_.data(), pieces_.size()}; }
+
+ private:
+  std::vector<std::uint32_t> words_;
+  std::vector<Vec2<double>> points_;
+  std::vector<fit::BandVertex<double>> vertices_;
+  std::vector<fit::Piece<double>> pieces_;
+};
+
+}  // namespace kerf::io
