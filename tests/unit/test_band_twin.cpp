@@ -2,6 +2,7 @@
 // on tiny hand-made regions, and against the band checker.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "band_checker.hpp"
@@ -118,6 +119,69 @@ TEST(BandTwin, WavePiecesPassTheChecker) {
     const BandReport rep = check_band_fit(p, w, pieces, kSlack);
     EXPECT_TRUE(rep.ok) << tol << ": " << rep.why;
     for (const VPiece& pc : pieces) EXPECT_LE(band_piece_deviation(p, pc), tol * (1 + 1e-8));
+  }
+}
+
+TEST(BandTwin, LeftWidthZeroAllowsOnlyRightBulges) {
+  // L = 0: the left chain runs along the path itself. The line touches it
+  // all along, which is allowed.
+  const auto p = straight_points(5);
+  const BandRegion r = ideal_region(p, asymmetric_widths(5, 0.0, 0.2));
+  VPiece pc;
+  ASSERT_TRUE(twin_pair_valid(r, 0, 4, &pc));
+  EXPECT_FALSE(pc.arc);
+  EXPECT_EQ(twin_min_pieces(r), 1);
+  // A dip to y = -0.1 at x = 1. With L = 0 an arc p0 -> p2 must pass p1 on
+  // its right, and then sags 0.025 below the edges (R = 0.005): two pieces.
+  // With L = 0.05 a shallower arc passes p1 on its left: one piece.
+  const std::vector<VPoint> dip{{0, 0}, {1, -0.1}, {2, 0}};
+  EXPECT_EQ(twin_min_pieces(ideal_region(dip, asymmetric_widths(3, 0.0, 0.005))), 2);
+  EXPECT_EQ(twin_min_pieces(ideal_region(dip, asymmetric_widths(3, 0.05, 0.005))), 1);
+  // Zero gates everywhere: only the single edges remain.
+  BandRegion flat = r;
+  for (std::size_t k = 0; k < 5; ++k) flat.gate_right[k] = p[k];
+  for (std::size_t k = 0; k < 4; ++k) flat.chain_right[k] = {p[k], p[k + 1]};
+  EXPECT_FALSE(twin_pair_valid(flat, 0, 2));  // zero-length gate 1 cannot be stabbed
+  EXPECT_EQ(twin_min_pieces(flat), 4);
+}
+
+// Random gentle polylines (turns under 70 degrees, widths under a third of
+// the shortest edge, so the ideal gates do not cross): the ideal region with
+// straight chains lies inside the band (each edge's band is convex and holds
+// both gates' ends), so every piece the twin accepts must pass the checker.
+TEST(BandTwin, RandomPolylinesTwinPiecesPassTheChecker) {
+  unsigned state = 12345u;
+  auto uniform = [&state]() {
+    state = state * 1664525u + 1013904223u;
+    return static_cast<double>(state >> 8) / 16777216.0;
+  };
+  for (int trial = 0; trial < 24; ++trial) {
+    const std::size_t n = 6 + static_cast<std::size_t>(trial % 7);
+    std::vector<VPoint> p{{0, 0}};
+    double heading = 0, shortest = 1e300;
+    for (std::size_t k = 1; k < n; ++k) {
+      heading += (uniform() - 0.5) * 2 * 1.2;
+      const double len = 0.5 + uniform();
+      shortest = std::min(shortest, len);
+      p.push_back({p.back().x + len * std::cos(heading), p.back().y + len * std::sin(heading)});
+    }
+    const double tol = shortest * (0.02 + 0.3 * uniform());
+    BandWidths w;
+    if (trial % 3 == 0) {
+      w = symmetric_widths(n, tol);
+    } else if (trial % 3 == 1) {
+      w = asymmetric_widths(n, tol * uniform(), tol * uniform());
+    } else {
+      std::vector<double> t;
+      for (std::size_t k = 0; k < n; ++k) t.push_back(tol * (0.2 + 0.8 * uniform()));
+      w = per_vertex_widths(t);
+    }
+    std::vector<VPiece> pieces;
+    const int count = twin_min_pieces(ideal_region(p, w), &pieces);
+    ASSERT_GT(count, 0) << trial;  // consecutive lines are always valid here
+    EXPECT_LE(count, static_cast<int>(n) - 1);
+    const BandReport rep = check_band_fit(p, w, pieces, kSlack);
+    EXPECT_TRUE(rep.ok) << "trial " << trial << ": " << rep.why;
   }
 }
 
