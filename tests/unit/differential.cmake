@@ -12,3 +12,15 @@ target_compile_definitions(kerf_differential_tests PRIVATE
   KERF_TEST_DATA_DIR="${CMAKE_CURRENT_SOURCE_DIR}/../data")
 kerf_warnings(kerf_differential_tests)
 gtest_discover_tests(kerf_differential_tests DISCOVERY_MODE PRE_TEST)
+
+# The band fitter against the band referee (checker and twin) in tests/support.
+add_executable(kerf_band_tests
+  assert_handler.cpp
+  test_band_differential.cpp
+)
+target_link_libraries(kerf_band_tests PRIVATE kerf_io kerf_test_support GTest::gtest_main)
+target_include_directories(kerf_band_tests PRIVATE ${PROJECT_SOURCE_DIR}/tests/support)
+target_compile_definitions(kerf_band_tests PRIVATE
+  KERF_TEST_DATA_DIR="${CMAKE_CURRENT_SOURCE_DIR}/../data")
+kerf_warnings(kerf_band_tests)
+gtest_discover_tests(kerf_band_tests DISCOVERY_MODE PRE_TEST)

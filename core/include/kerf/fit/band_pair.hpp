@@ -189,6 +189,13 @@ class BandPair {
     if (dn != S(0)) roots[m++] = -y1 / dn;  // where it crosses the chord line
     for (int t = 0; t < m; ++t)
       if (roots[t] > S(0) && roots[t] < S(1)) outside(r, q1 + dq * roots[t]);
+    // A segment that starts or ends on a or b itself (a side of width 0)
+    // has w(t) = (-Y, A) -> 0 there, and the binding condition is the limit
+    // of its direction: the segment must leave that end outside the disc.
+    const S a2 = area(q2);
+    const S y2 = (q2 - mid_).dot(n_);
+    if (a1 == S(0) && y1 == S(0)) cut(r, {-dn, S(2) * vd});                      // t -> 0+
+    if (a2 == S(0) && y2 == S(0)) cut(r, {dn, -S(2) * (q2 - mid_).dot(dq)});     // t -> 1-
   }
 
   const BandRegion<S>& r_;
