@@ -153,6 +153,34 @@ TEST(ArcInBand, HugeRadiusArcIsAsGoodAsTheLine) {
   EXPECT_NEAR(worst, -0.1, 1e-8);
 }
 
+TEST(ArcInBand, FarFromTheOriginKeepsItsAccuracy) {
+  // The same cases a million units away: the slack (1e-9 of the scale) still
+  // separates 0.99 tol from 1.01 tol, and the sampled circle still needs its sagitta.
+  const double ox = 1e6, oy = -2e6, tol = 0.1, slack = 4e-9;
+  std::vector<VPoint> p = straight_points(5);
+  for (VPoint& q : p) q = {q.x + ox, q.y + oy};
+  const auto w = symmetric_widths(5, tol);
+  EXPECT_TRUE(arc_in_band(p, w, shifted(line_piece(p, 0, 4), 0, 0.99 * tol), slack));
+  EXPECT_FALSE(arc_in_band(p, w, shifted(line_piece(p, 0, 4), 0, 1.01 * tol), slack));
+  EXPECT_TRUE(arc_in_band(p, w, bulge_piece(p, 0, 4, -0.99 * tol), slack));
+  EXPECT_FALSE(arc_in_band(p, w, bulge_piece(p, 0, 4, -1.01 * tol), slack));
+
+  const double r = 10, step = kPi / 6;
+  std::vector<VPoint> c;
+  for (int k = 0; k < 3; ++k) c.push_back({ox + r * std::cos(k * step), oy + r * std::sin(k * step)});
+  VPiece arc = line_piece(c, 0, 2);
+  arc.arc = true;
+  arc.cx = ox;
+  arc.cy = oy;
+  arc.dir = 1;
+  const double sag = r * (1 - std::cos(step / 2));
+  EXPECT_TRUE(arc_in_band(c, symmetric_widths(3, 1.01 * sag), arc, 1e-8));
+  EXPECT_FALSE(arc_in_band(c, symmetric_widths(3, 0.99 * sag), arc, 1e-8));
+  const double dev = band_piece_deviation(c, arc);
+  EXPECT_GE(dev, sag * (1 - 1e-9));
+  EXPECT_LE(dev, sag * (1 + 1e-8));
+}
+
 TEST(SegmentInBand, ProvesAndRefutesSegments) {
   const std::vector<VPoint> p{{0, 0}, {2, 0}, {2, 2}};
   const auto w = symmetric_widths(3, 0.1);
