@@ -217,5 +217,55 @@ TEST(Deviation, LineCuttingACorner) {
   EXPECT_LE(dev, std::sqrt(0.5) * (1 + 2e-9));
 }
 
+// Points of an arc piece the plain way: centre, radius and polar angle.
+std::vector<VPoint> plain_arc_samples(const VPiece& pc, int count) {
+  const double r = std::hypot(pc.sx - pc.cx, pc.sy - pc.cy);
+  const double a0 = std::atan2(pc.sy - pc.cy, pc.sx - pc.cx);
+  const double a1 = std::atan2(pc.ey - pc.cy, pc.ex - pc.cx);
+  double sweep = std::fmod(pc.dir * (a1 - a0), 2 * kPi);
+  if (sweep < 0) sweep += 2 * kPi;
+  std::vector<VPoint> out;
+  for (int i = 0; i <= count; ++i) {
+    const double a = a0 + pc.dir * sweep * i / count;
+    out.push_back({pc.cx + r * std::cos(a), pc.cy + r * std::sin(a)});
+  }
+  return out;
+}
+
+// Random arcs over random polylines, against dense plain sampling: the
+// certified answers must bound the samples, and be close to them.
+TEST(ArcInBand, AgreesWithDenseSamplingOnRandomArcs) {
+  unsigned state = 777u;
+  auto uniform = [&state]() {
+    state = state * 1664525u + 1013904223u;
+    return static_cast<double>(state >> 8) / 16777216.0;
+  };
+  const int count = 20000;
+  for (int trial = 0; trial < 30; ++trial) {
+    std::vector<VPoint> p{{0, 0}};
+    for (int k = 1; k < 6; ++k) p.push_back({p.back().x + 0.5 + uniform(), p.back().y + uniform() - 0.5});
+    const BandWidths w{{0.05 + 0.2 * uniform(), 0.1, 0.05 + 0.2 * uniform(), 0.15, 0.1, 0.05},
+                       {0.1, 0.05 + 0.2 * uniform(), 0.2, 0.05 + 0.1 * uniform(), 0.1, 0.12}};
+    const VPiece pc = bulge_piece(p, 0, 5, (uniform() - 0.5) * 0.8);
+    const std::vector<VPoint> xs = plain_arc_samples(pc, count);
+    double len = 0, worst_band = -1e300, worst_dist = 0;
+    for (std::size_t i = 0; i < xs.size(); ++i) {
+      if (i > 0) len += std::hypot(xs[i].x - xs[i - 1].x, xs[i].y - xs[i - 1].y);
+      worst_band = std::max(worst_band, band_value(xs[i], p, w, 0, 5));
+      worst_dist = std::max(worst_dist, band_value(xs[i], p, symmetric_widths(6, 0.0), 0, 5));
+    }
+    const double spacing = len / count;
+    // The deviation bounds every sample and is within the spacing of them.
+    const double dev = band_piece_deviation(p, pc);
+    EXPECT_GE(dev, worst_dist - 1e-12) << trial;
+    EXPECT_LE(dev, worst_dist + spacing) << trial;
+    // The band check: a sample outside means no; a clear margin means yes.
+    for (double slack : {worst_band - 2 * spacing, worst_band + 2 * spacing}) {
+      const bool inside = arc_in_band(p, w, pc, slack);
+      EXPECT_EQ(inside, slack > worst_band) << trial << " slack " << slack;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace kerf_test
