@@ -47,7 +47,9 @@ double band_value(VPoint x, const std::vector<VPoint>& pts, const BandWidths& wi
 // <= slack - sag at both ends (that term is convex along the chord and the
 // sub-arc stays within sag of its chord). Fails when a sample exceeds slack or
 // the subdivision cap (depth 60, 2^22 samples) is hit. *worst (if given)
-// receives the largest band value sampled.
+// receives the largest band value sampled. Points are computed from the start
+// point, tangent and curvature (no centre), so rounding stays near 1e-16 of
+// the coordinates, far below the slack the tests pass (1e-9 of the scale).
 bool arc_in_band(const std::vector<VPoint>& pts, const BandWidths& widths, const VPiece& piece,
                  double slack, double* worst = nullptr);
 

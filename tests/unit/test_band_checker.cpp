@@ -153,6 +153,34 @@ TEST(ArcInBand, HugeRadiusArcIsAsGoodAsTheLine) {
   EXPECT_NEAR(worst, -0.1, 1e-8);
 }
 
+TEST(ArcInBand, FarFromTheOriginKeepsItsAccuracy) {
+  // The same cases a million units away: the slack (1e-9 of the scale) still
+  // separates 0.99 tol from 1.01 tol, and the sampled circle still needs its sagitta.
+  const double ox = 1e6, oy = -2e6, tol = 0.1, slack = 4e-9;
+  std::vector<VPoint> p = straight_points(5);
+  for (VPoint& q : p) q = {q.x + ox, q.y + oy};
+  const auto w = symmetric_widths(5, tol);
+  EXPECT_TRUE(arc_in_band(p, w, shifted(line_piece(p, 0, 4), 0, 0.99 * tol), slack));
+  EXPECT_FALSE(arc_in_band(p, w, shifted(line_piece(p, 0, 4), 0, 1.01 * tol), slack));
+  EXPECT_TRUE(arc_in_band(p, w, bulge_piece(p, 0, 4, -0.99 * tol), slack));
+  EXPECT_FALSE(arc_in_band(p, w, bulge_piece(p, 0, 4, -1.01 * tol), slack));
+
+  const double r = 10, step = kPi / 6;
+  std::vector<VPoint> c;
+  for (int k = 0; k < 3; ++k) c.push_back({ox + r * std::cos(k * step), oy + r * std::sin(k * step)});
+  VPiece arc = line_piece(c, 0, 2);
+  arc.arc = true;
+  arc.cx = ox;
+  arc.cy = oy;
+  arc.dir = 1;
+  const double sag = r * (1 - std::cos(step / 2));
+  EXPECT_TRUE(arc_in_band(c, symmetric_widths(3, 1.01 * sag), arc, 1e-8));
+  EXPECT_FALSE(arc_in_band(c, symmetric_widths(3, 0.99 * sag), arc, 1e-8));
+  const double dev = band_piece_deviation(c, arc);
+  EXPECT_GE(dev, sag * (1 - 1e-9));
+  EXPECT_LE(dev, sag * (1 + 1e-8));
+}
+
 TEST(SegmentInBand, ProvesAndRefutesSegments) {
   const std::vector<VPoint> p{{0, 0}, {2, 0}, {2, 2}};
   const auto w = symmetric_widths(3, 0.1);
@@ -187,6 +215,56 @@ TEST(Deviation, LineCuttingACorner) {
   const double dev = band_piece_deviation(p, line_piece(p, 0, 2));
   EXPECT_GE(dev, std::sqrt(0.5) * (1 - 1e-15));
   EXPECT_LE(dev, std::sqrt(0.5) * (1 + 2e-9));
+}
+
+// Points of an arc piece the plain way: centre, radius and polar angle.
+std::vector<VPoint> plain_arc_samples(const VPiece& pc, int count) {
+  const double r = std::hypot(pc.sx - pc.cx, pc.sy - pc.cy);
+  const double a0 = std::atan2(pc.sy - pc.cy, pc.sx - pc.cx);
+  const double a1 = std::atan2(pc.ey - pc.cy, pc.ex - pc.cx);
+  double sweep = std::fmod(pc.dir * (a1 - a0), 2 * kPi);
+  if (sweep < 0) sweep += 2 * kPi;
+  std::vector<VPoint> out;
+  for (int i = 0; i <= count; ++i) {
+    const double a = a0 + pc.dir * sweep * i / count;
+    out.push_back({pc.cx + r * std::cos(a), pc.cy + r * std::sin(a)});
+  }
+  return out;
+}
+
+// Random arcs over random polylines, against dense plain sampling: the
+// certified answers must bound the samples, and be close to them.
+TEST(ArcInBand, AgreesWithDenseSamplingOnRandomArcs) {
+  unsigned state = 777u;
+  auto uniform = [&state]() {
+    state = state * 1664525u + 1013904223u;
+    return static_cast<double>(state >> 8) / 16777216.0;
+  };
+  const int count = 20000;
+  for (int trial = 0; trial < 30; ++trial) {
+    std::vector<VPoint> p{{0, 0}};
+    for (int k = 1; k < 6; ++k) p.push_back({p.back().x + 0.5 + uniform(), p.back().y + uniform() - 0.5});
+    const BandWidths w{{0.05 + 0.2 * uniform(), 0.1, 0.05 + 0.2 * uniform(), 0.15, 0.1, 0.05},
+                       {0.1, 0.05 + 0.2 * uniform(), 0.2, 0.05 + 0.1 * uniform(), 0.1, 0.12}};
+    const VPiece pc = bulge_piece(p, 0, 5, (uniform() - 0.5) * 0.8);
+    const std::vector<VPoint> xs = plain_arc_samples(pc, count);
+    double len = 0, worst_band = -1e300, worst_dist = 0;
+    for (std::size_t i = 0; i < xs.size(); ++i) {
+      if (i > 0) len += std::hypot(xs[i].x - xs[i - 1].x, xs[i].y - xs[i - 1].y);
+      worst_band = std::max(worst_band, band_value(xs[i], p, w, 0, 5));
+      worst_dist = std::max(worst_dist, band_value(xs[i], p, symmetric_widths(6, 0.0), 0, 5));
+    }
+    const double spacing = len / count;
+    // The deviation bounds every sample and is within the spacing of them.
+    const double dev = band_piece_deviation(p, pc);
+    EXPECT_GE(dev, worst_dist - 1e-12) << trial;
+    EXPECT_LE(dev, worst_dist + spacing) << trial;
+    // The band check: a sample outside means no; a clear margin means yes.
+    for (double slack : {worst_band - 2 * spacing, worst_band + 2 * spacing}) {
+      const bool inside = arc_in_band(p, w, pc, slack);
+      EXPECT_EQ(inside, slack > worst_band) << trial << " slack " << slack;
+    }
+  }
 }
 
 }  // namespace
