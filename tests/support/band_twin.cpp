@@ -29,8 +29,11 @@ bool well_formed(const BandRegion& r) {
 }
 
 // Forward normal of gate k: across the gate, towards p_{k+1} (gate n-1: away
-// from p_{n-2}); a zero-length gate falls back to the path's own direction.
-VPoint forward_normal(const BandRegion& r, std::size_t k) {
+// from p_{n-2}). A zero-length gate (a barrier: a cusp, or a vertex whose
+// band was narrowed to nothing) has no direction of its own: a piece that
+// arrives there uses the edge it arrives on, a piece that leaves the edge it
+// leaves on (as the checker does at a cusp).
+VPoint forward_normal(const BandRegion& r, std::size_t k, bool arriving) {
   const std::size_t n = r.pts.size();
   const VPoint ahead = k + 1 < n ? sub(r.pts[k + 1], r.pts[k]) : sub(r.pts[k], r.pts[k - 1]);
   const VPoint g = sub(r.gate_left[k], r.gate_right[k]);
@@ -39,9 +42,9 @@ VPoint forward_normal(const BandRegion& r, std::size_t k) {
     if (dot(f, ahead) < 0) f = {-f.x, -f.y};
     return f;
   }
-  const VPoint before = k > 0 ? unit(sub(r.pts[k], r.pts[k - 1])) : VPoint{0, 0};
-  const VPoint after = k + 1 < n ? unit(sub(r.pts[k + 1], r.pts[k])) : VPoint{0, 0};
-  return unit({before.x + after.x, before.y + after.y});
+  if (k == 0) return unit(sub(r.pts[1], r.pts[0]));
+  if (k + 1 == n) return unit(sub(r.pts[k], r.pts[k - 1]));
+  return arriving ? unit(sub(r.pts[k], r.pts[k - 1])) : unit(sub(r.pts[k + 1], r.pts[k]));
 }
 
 double wrap_pi(double a) {
@@ -128,15 +131,16 @@ class PairTwin {
     const VPoint t0{a.tx, a.ty};
     const double tu = dot(t0, u_);
     const VPoint t1{2 * tu * u_.x - t0.x, 2 * tu * u_.y - t0.y};  // t0 mirrored on the chord
-    if (dot(t0, forward_normal(r_, i_)) < -kDotSlack) return false;
-    if (dot(t1, forward_normal(r_, j_)) < -kDotSlack) return false;
+    if (dot(t0, forward_normal(r_, i_, false)) < -kDotSlack) return false;
+    if (dot(t1, forward_normal(r_, j_, true)) < -kDotSlack) return false;
     // (a) each inner gate cut once, on the arc, moving forward.
     for (std::size_t m = i_ + 1; m < j_; ++m)
       if (!stabs(a, m)) return false;
-    // (b) no chain segment of the cells crossed.
+    // (b) no chain segment of the cells crossed, and the arc never leaves R
+    // (which also catches an arc that leaves through a chain vertex).
     for (std::size_t k = i_; k < j_; ++k)
       if (crosses(a, r_.chain_left[k]) || crosses(a, r_.chain_right[k])) return false;
-    return true;
+    return stays_inside(a);
   }
 
   bool stabs(const ArcParam& a, std::size_t m) const {
@@ -157,7 +161,7 @@ class PairTwin {
     const VPoint x{g0.x + hit * (g1.x - g0.x), g0.y + hit * (g1.y - g0.y)};
     const double s = arc_position(a, x);
     if (s < -touch_ || s > a.length + touch_) return false;
-    return dot(arc_tangent(a, s), forward_normal(r_, m)) > 0;
+    return dot(arc_tangent(a, s), forward_normal(r_, m, false)) > 0;
   }
 
   bool crosses(const ArcParam& a, const std::vector<VPoint>& chain) const {
@@ -181,6 +185,58 @@ class PairTwin {
         const double s = arc_position(a, x);
         if (s >= 0 && s <= a.length) return true;
       }
+    }
+    return false;
+  }
+
+  // Splits the arc at every point where it meets R's boundary between gates
+  // i and j (both chains of cells i..j-1 and the end gates) and requires the
+  // middle of each part to lie in one of those cells (or on its outline).
+  bool stays_inside(const ArcParam& a) const {
+    std::vector<double> cuts{0.0, a.length};
+    auto add_segment = [&](VPoint s0, VPoint s1) {
+      double t[2];
+      const int roots = circle_line_roots(a, s0, s1, t);
+      for (int m = 0; m < roots; ++m) {
+        // A contact at a segment's end may come out a rounding step outside.
+        if (t[m] < -1e-9 || t[m] > 1 + 1e-9) continue;
+        const double tm = std::clamp(t[m], 0.0, 1.0);
+        const double s = arc_position(a, {s0.x + tm * (s1.x - s0.x), s0.y + tm * (s1.y - s0.y)});
+        if (s > 0 && s < a.length) cuts.push_back(s);
+      }
+    };
+    for (std::size_t k = i_; k < j_; ++k)
+      for (const auto* chain : {&r_.chain_left[k], &r_.chain_right[k]})
+        for (std::size_t t = 0; t + 1 < chain->size(); ++t) add_segment((*chain)[t], (*chain)[t + 1]);
+    add_segment(r_.gate_left[i_], r_.gate_right[i_]);
+    add_segment(r_.gate_left[j_], r_.gate_right[j_]);
+    std::sort(cuts.begin(), cuts.end());
+    for (std::size_t c = 0; c + 1 < cuts.size(); ++c) {
+      if (cuts[c + 1] - cuts[c] <= touch_) continue;
+      if (!in_region(arc_point(a, (cuts[c] + cuts[c + 1]) / 2))) return false;
+    }
+    return true;
+  }
+
+  // In (or within touch_ of) the outline of a cell i..j-1: its left chain,
+  // then its right chain backwards.
+  bool in_region(VPoint x) const {
+    for (std::size_t k = i_; k < j_; ++k) {
+      std::vector<VPoint> poly = r_.chain_left[k];
+      poly.insert(poly.end(), r_.chain_right[k].rbegin(), r_.chain_right[k].rend());
+      int winding = 0;
+      bool on_edge = false;
+      for (std::size_t t = 0; t < poly.size(); ++t) {
+        const VPoint u = poly[t], v = poly[(t + 1) % poly.size()];
+        const VPoint e = sub(v, u);
+        const double len2 = dot(e, e);
+        const double f = len2 > 0 ? std::clamp(dot(sub(x, u), e) / len2, 0.0, 1.0) : 0.0;
+        if (norm(sub(x, {u.x + f * e.x, u.y + f * e.y})) <= touch_) on_edge = true;
+        const double side = e.x * (x.y - u.y) - e.y * (x.x - u.x);
+        if (u.y <= x.y && v.y > x.y && side > 0) ++winding;
+        if (u.y > x.y && v.y <= x.y && side < 0) --winding;
+      }
+      if (on_edge || winding != 0) return true;
     }
     return false;
   }

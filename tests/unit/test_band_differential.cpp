@@ -45,6 +45,8 @@ std::string describe(const Case& c) {
   s.precision(17);
   s << c.name << " tol " << c.tol << " points:";
   for (const VPoint& p : c.pts) s << " (" << p.x << "," << p.y << ")";
+  s << " widths (left,right):";
+  for (std::size_t k = 0; k < c.pts.size(); ++k) s << " (" << c.widths.left[k] << "," << c.widths.right[k] << ")";
   return s.str();
 }
 

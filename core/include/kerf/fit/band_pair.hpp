@@ -82,7 +82,9 @@ class BandPair {
     }
     BandChain<S> c;
     r_.chain(k, -orient_, c);
-    for (int t = (k == i_ ? 0 : 1); t < c.size; ++t) outside(range, c.pt[t]);
+    // Every point, the one shared with the previous cell too: cells are not
+    // visited in order, and the segment test below needs both ends applied.
+    for (int t = 0; t < c.size; ++t) outside(range, c.pt[t]);
     if (range.empty()) return false;
     // Clear at both ends of the range means clear inside it (a segment's
     // valid set is an interval); the ends are taken once, before the
@@ -144,7 +146,10 @@ class BandPair {
   }
 
   S area(Vec2<S> q) const { return (q - a_).dot(q - b_); }
-  S offset(Vec2<S> q) const { return (q - mid_).dot(n_); }
+  // Measured from a, not from the midpoint: (b - a).perp(b - a) is exactly
+  // 0 in floating point, so a point on a or b gets exactly w = 0 (no
+  // condition) instead of a rounding residue that would cut the range.
+  S offset(Vec2<S> q) const { return (q - a_).dot(n_); }
   void outside(PsiRange<S>& r, Vec2<S> q) const { cut(r, {-offset(q), area(q)}); }
   void inside(PsiRange<S>& r, Vec2<S> q) const { cut(r, {offset(q), -area(q)}); }
 
@@ -161,21 +166,28 @@ class BandPair {
 
   void segment(PsiRange<S>& r, Vec2<S> lo, Vec2<S> hi, Vec2<S> q1, Vec2<S> q2) const {
     const Vec2<S> dq = q2 - q1;
-    const Vec2<S> v1 = q1 - mid_;
     const S a1 = area(q1);
-    const S y1 = v1.dot(n_);
-    const S vd = v1.dot(dq);
+    const S y1 = offset(q1);
+    const S vd = dq.dot((q1 - a_) + (q1 - b_)) / S(2);  // (q1 - mid).dq
     const S dd = dq.norm2();
     const S dn = dq.dot(n_);
     if (clear(lo, a1, y1, vd, dd, dn) && clear(hi, a1, y1, vd, dd, dn)) return;
     // The circle through a, b and q(t) is extreme where A Y' = Y A':
     //   dd dn t^2 + 2 y1 dd t + (2 y1 vd - a1 dn) = 0.
+    // An end on a or b (w = 0 there) is always a root; it is divided out,
+    // since rounding would put it just inside (0, 1).
     const S qa = dd * dn;
     const S qb = S(2) * y1 * dd;
     const S qc = S(2) * y1 * vd - a1 * dn;
+    const S a2 = area(q2);
+    const S y2 = offset(q2);
+    const bool from_end = a1 == S(0) && y1 == S(0);
+    const bool to_end = a2 == S(0) && y2 == S(0);
     S roots[3];
     int m = 0;
-    if (qa != S(0)) {
+    if (from_end || to_end) {
+      if (qa != S(0) && !(from_end && to_end)) roots[m++] = to_end ? qc / qa : -qb / qa;
+    } else if (qa != S(0)) {
       const S disc = qb * qb - S(4) * qa * qc;
       if (disc >= S(0)) {
         const S sq = Scalar<S>::sqrt(disc);
@@ -186,16 +198,19 @@ class BandPair {
     } else if (qb != S(0)) {
       roots[m++] = -qc / qb;
     }
-    if (dn != S(0)) roots[m++] = -y1 / dn;  // where it crosses the chord line
+    // Where it crosses the chord line (for a segment from a or b, only there).
+    if (dn != S(0) && !from_end && !to_end) roots[m++] = -y1 / dn;
+    // (Next to an end on a or b the limit below already binds; a point a
+    // rounding step from it would carry only noise.)
+    const S lo_t = from_end ? S(1e-9) : S(0);
+    const S hi_t = to_end ? S(1) - S(1e-9) : S(1);
     for (int t = 0; t < m; ++t)
-      if (roots[t] > S(0) && roots[t] < S(1)) outside(r, q1 + dq * roots[t]);
+      if (roots[t] > lo_t && roots[t] < hi_t) outside(r, q1 + dq * roots[t]);
     // A segment that starts or ends on a or b itself (a side of width 0)
     // has w(t) = (-Y, A) -> 0 there, and the binding condition is the limit
     // of its direction: the segment must leave that end outside the disc.
-    const S a2 = area(q2);
-    const S y2 = (q2 - mid_).dot(n_);
-    if (a1 == S(0) && y1 == S(0)) cut(r, {-dn, S(2) * vd});                      // t -> 0+
-    if (a2 == S(0) && y2 == S(0)) cut(r, {dn, -S(2) * (q2 - mid_).dot(dq)});     // t -> 1-
+    if (from_end) cut(r, {-dn, S(2) * vd});                             // t -> 0+
+    if (to_end) cut(r, {dn, -dq.dot((q2 - a_) + (q2 - b_))});          // t -> 1-
   }
 
   const BandRegion<S>& r_;

@@ -31,7 +31,7 @@
 //    the one-sided boundary test of the pair test (fit/band_pair.hpp)
 //    relies. A cell that is not (short edges, sharp turns) has that side's
 //    widths at both its vertices halved, and the build repeats until all
-//    cells are convex; a width below 2^-40 of the original becomes 0. A
+//    cells are convex; a width below 2^-20 of the original becomes 0. A
 //    smaller disc of the same side edge stays inside the original one, so
 //    the narrowed R is still inside the band. This is where kerf narrows R
 //    as section 2.1 of the paper allows; a vertex narrowed to nothing on

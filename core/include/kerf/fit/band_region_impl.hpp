@@ -64,8 +64,10 @@ void BandRegion<S>::set_vertex(std::uint32_t k, S left, S right) {
   const S w = (left + right) / S(2);
   const S disc = w * w - c * c * si * si;
   const S root = M::sqrt(disc > S(0) ? disc : S(0));
-  v.gate_left = max_of(S(0), c * co + root);
-  v.gate_right = max_of(S(0), root - c * co);
+  // A side of width 0 has a gate half of exactly 0 (the formula leaves a
+  // rounding residue, which would put a chain point next to, not on, p_k).
+  v.gate_left = left == S(0) ? S(0) : max_of(S(0), c * co + root);
+  v.gate_right = right == S(0) ? S(0) : max_of(S(0), root - c * co);
   if (v.gate_left == S(0) && v.gate_right == S(0)) v.barrier = true;
   // The outer side is the left one at a right turn. Its gate end, seen from
   // the centre of each edge's disc, against that disc's offset point.
@@ -138,19 +140,45 @@ void BandRegion<S>::chain(std::uint32_t k, int side, BandChain<S>& out) const {
   const Vec2<S> n = a.n;
   const S sa = side > 0 ? a.left : -a.right;  // signed offsets of the edge's side
   const S sb = side > 0 ? b.left : -b.right;
+  // The edge's side of the band is bounded by the outer common tangent of
+  // its end discs (centres p + c n, radii w). Without a taper that is the
+  // offset edge p_k + sa n -> p_{k+1} + sb n; with one, the tangent points
+  // move round the discs, which keeps the cell convex where a widening
+  // band meets an outer corner.
+  const S ca = (a.left - a.right) / S(2), wa = (a.left + a.right) / S(2);
+  const S cb = (b.left - b.right) / S(2), wb = (b.left + b.right) / S(2);
+  const Vec2<S> c0 = p_[k] + n * ca;
+  const Vec2<S> c1 = p_[k + 1] + n * cb;
+  Vec2<S> t0 = p_[k] + n * sa;
+  Vec2<S> t1 = p_[k + 1] + n * sb;
+  if (wa != wb) {
+    const Vec2<S> d = c1 - c0;
+    const S len = d.norm();
+    const S delta = (wb - wa) / len;
+    if (delta < S(1) && delta > S(-1)) {
+      const Vec2<S> e = d * (S(1) / len);
+      const Vec2<S> m = e * (-delta) + e.perp() * (S(side) * Scalar<S>::sqrt(S(1) - delta * delta));
+      t0 = c0 + m * wa;
+      t1 = c1 + m * wb;
+    }
+  }
   const Vec2<S> start = gate_end(k, side);
   const Vec2<S> end = gate_end(k + 1, side);
   band_detail::push(out, start);
-  // Outer side of the corner at k: round from the gate end to the offset
-  // edge. (At an end gate, and on the inner side, the chain starts straight.)
-  if (k > 0 && a.turn == -side && sa != S(0)) corner(k, k, start, p_[k] + n * sa, a.split[1], out);
-  // Outer side at k + 1: along the offset edge, then round to the gate end.
-  // On the inner side the offset edge's end lies past gate k + 1, so the
-  // chain heads straight for the gate end.
-  if (k + 2 < n_ && b.turn == -side && sb != S(0)) {
-    const Vec2<S> off = p_[k + 1] + n * sb;
-    band_detail::push(out, off);
-    corner(k + 1, k, off, end, b.split[0], out);
+  // Outer side of the corner at k: round from the gate end to the tangent.
+  // (At an end gate, and on the inner side, the chain starts straight.)
+  // A taper turns the tangent point round its disc; past the gate's line
+  // it belongs to the next cell, and the chain goes straight instead.
+  const Vec2<S> fa{a.b.y, -a.b.x};
+  const Vec2<S> fb{b.b.y, -b.b.x};
+  if (k > 0 && a.turn == -side && sa != S(0) && (t0 - p_[k]).dot(fa) > S(0))
+    corner(k, k, start, t0, a.split[1], out);
+  // Outer side at k + 1: along the tangent, then round to the gate end. On
+  // the inner side the tangent's end lies past gate k + 1, so the chain
+  // heads straight for the gate end.
+  if (k + 2 < n_ && b.turn == -side && sb != S(0) && (t1 - p_[k + 1]).dot(fb) < S(0)) {
+    band_detail::push(out, t1);
+    corner(k + 1, k, t1, end, b.split[0], out);
   } else {
     band_detail::push(out, end);
   }
@@ -215,7 +243,7 @@ Status BandRegion<S>::build(const BandWidth<S>* widths, S scale) {
   v_[n_ - 1].n = v_[n_ - 2].n;
   for (std::uint32_t k = 0; k < n_; ++k)
     set_vertex(k, widths[k].left * scale, widths[k].right * scale);
-  const S floor = S(1.0) / S(1099511627776.0);  // 2^-40 of the width asked for
+  const S floor = S(1.0) / S(1048576.0);  // 2^-20 of the width asked for
   for (int pass = 0; pass < 100; ++pass) {
     bool changed = false;
     for (std::uint32_t k = 0; k + 1 < n_; ++k) {
