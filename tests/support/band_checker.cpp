@@ -131,7 +131,10 @@ BandReport check_band_piece(const std::vector<VPoint>& pts, const BandWidths& wi
     return fail();
   }
 
-  // Inner gates: each is cut, the first cuts in increasing arc length.
+  // Inner gates: each is cut, in order along the arc. Where the ideal gates
+  // of short edges overlap, the arc may also cut a gate early (on a part that
+  // reaches past its neighbours), so the rule is that some choice of cuts,
+  // one per gate, increases: each gate's first cut after the previous one.
   const double along_slack = 1e-12 * (arc.length + scale);
   double prev = -along_slack;
   for (std::size_t m = pc.first + 1; m < pc.last; ++m) {
@@ -139,14 +142,17 @@ BandReport check_band_piece(const std::vector<VPoint>& pts, const BandWidths& wi
     double t[2];
     const int roots = circle_line_roots(arc, g.right, g.left, t);
     double cut = -1;
+    bool any = false;
     for (int r = 0; r < roots; ++r) {
       if (t[r] < -kRel || t[r] > 1 + kRel) continue;
       const VPoint x{g.right.x + t[r] * (g.left.x - g.right.x),
                      g.right.y + t[r] * (g.left.y - g.right.y)};
       const double s = arc_position(arc, x);
       if (s < -along_slack || s > arc.length + along_slack) continue;
-      if (cut < 0 || s < cut) cut = std::max(s, 0.0);
+      any = true;
+      if (s > prev && (cut < 0 || s < cut)) cut = std::max(s, 0.0);
     }
+    if (any && cut < 0) cut = prev;  // cut, but only before: reported below
     if (cut < 0) {
       why << "does not cut gate " << m;
       return fail();

@@ -82,7 +82,8 @@ struct BandReport {
 // One piece: index range, finite values, end points on p_first / p_last
 // (1e-9 relative), equal radii, no cusp strictly inside, start and end
 // tangents to the forward side of gates first and last (dot >= -1e-9), every
-// inner gate cut by the piece with the first cuts strictly ordered along it,
+// inner gate cut by the piece, in order (each gate's first cut after the
+// previous gate's chosen cut: ideal gates of short edges may overlap),
 // and arc_in_band at slack.
 BandReport check_band_piece(const std::vector<VPoint>& pts, const BandWidths& widths,
                             const VPiece& piece, double slack);

@@ -17,6 +17,7 @@ gtest_discover_tests(kerf_differential_tests DISCOVERY_MODE PRE_TEST)
 add_executable(kerf_band_tests
   assert_handler.cpp
   test_band_differential.cpp
+  test_band_fit.cpp
 )
 target_link_libraries(kerf_band_tests PRIVATE kerf_io kerf_test_support GTest::gtest_main)
 target_include_directories(kerf_band_tests PRIVATE ${PROJECT_SOURCE_DIR}/tests/support)
