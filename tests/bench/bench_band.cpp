@@ -115,7 +115,7 @@ int main(int argc, char** argv) {
   if (ns.size() >= 2)
     std::printf("growth exponent of the search (least squares over n with >= 20 pieces): %.3f\n",
                 kerf_bench::growth_exponent(ns, ts));
-  std::printf("fit pt/s is the whole fit: count, the smallest-band tie-break (~30 searches), "
+  std::printf("fit pt/s is the whole fit: count, the smallest-band tie-break (~20 searches), "
               "pieces and their deviation; band/vtx is the search time ratio.\n");
   return 0;
 }

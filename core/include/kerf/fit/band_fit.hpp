@@ -27,7 +27,7 @@ struct BandWorkspace {
 
 // Fewest pieces inside the band of `widths` (one per point, each side >= 0,
 // some side > 0). Among all solutions with that count it returns one whose
-// band, scaled down uniformly, is smallest (to 1e-9 relative): that is
+// band, scaled down uniformly, is smallest (to 1e-6 relative): that is
 // fit.tol (in the widths' units: the largest width times the scale).
 // Piece::error is the piece's largest distance from the polyline between
 // its end points; fit.max_error the largest of those.

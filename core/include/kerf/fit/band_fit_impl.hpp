@@ -113,10 +113,10 @@ Result<std::uint32_t> count_at(const Problem<S>& pb, S scale, std::uint32_t budg
   return r.value().pieces;
 }
 
-// Smallest scale in (0, hi] (to 1e-9 relative) at which `pieces` suffice,
+// Smallest scale in (0, hi] (to `rel` relative) at which `pieces` suffice,
 // given that they suffice at hi.
 template <class S>
-Result<S> bisect_scale(const Problem<S>& pb, std::uint32_t pieces, S hi) {
+Result<S> bisect_scale(const Problem<S>& pb, std::uint32_t pieces, S hi, S rel) {
   std::uint32_t* pred = nullptr;
   S lo = hi * S(1e-12);
   {
@@ -124,7 +124,7 @@ Result<S> bisect_scale(const Problem<S>& pb, std::uint32_t pieces, S hi) {
     if (!c.ok()) return c.status();
     if (c.value() != 0) return lo;  // exact data: any positive width is enough
   }
-  for (int it = 0; it < 200 && hi - lo > hi * S(1e-9); ++it) {
+  for (int it = 0; it < 200 && hi - lo > hi * rel; ++it) {
     const S mid = lo + (hi - lo) / S(2);
     const Result<std::uint32_t> c = count_at(pb, mid, pieces, pred);
     if (!c.ok()) return c.status();
@@ -256,8 +256,9 @@ Result<Fit<S>> fit_band_min_count(Span<const Vec2<S>> pts, Span<const BandWidth<
   const Result<std::uint32_t> count =
       band_detail::count_at(pb, S(1), static_cast<std::uint32_t>(pts.size()), pred);
   if (!count.ok()) return count.status();
-  // The tie-break: the smallest band that still allows this count.
-  const Result<S> best = band_detail::bisect_scale(pb, count.value(), S(1));
+  // The tie-break: the smallest band that still allows this count, to 1e-6
+  // (each step is a whole search; finer would change no cut).
+  const Result<S> best = band_detail::bisect_scale(pb, count.value(), S(1), S(1e-6));
   if (!best.ok()) return best.status();
   Result<Fit<S>> fit = band_detail::build(pts, pb, best.value(), count.value(), out);
   if (fit.ok()) fit.value().tol = band_detail::widest(widths);  // as asked
@@ -279,7 +280,7 @@ Result<Fit<S>> fit_band_min_error(Span<const Vec2<S>> pts, Span<const BandWidth<
     if (grow == 40) return Status::infeasible;
     hi = hi * S(2);
   }
-  const Result<S> best = band_detail::bisect_scale(pb, pieces, hi);
+  const Result<S> best = band_detail::bisect_scale(pb, pieces, hi, S(1e-9));
   if (!best.ok()) return best.status();
   return band_detail::build(pts, pb, best.value(), pieces, out);
 }
