@@ -12,8 +12,13 @@
 //   override drops, and at corners.
 // - Corner rule: where the tangent turns by theta > corner_angle, the speed at
 //   the joint is at most accel * period / (2 sin(theta / 2)), the speed at
-//   which the velocity vector changes by accel * period in one period. Smaller
-//   turns count as tangent-continuous and are run at full feed.
+//   which the velocity vector changes by accel * period in one period. The
+//   steps that cross or leave the corner keep to it. Smaller turns count as
+//   tangent-continuous and are run at full feed. In the plane, the velocity
+//   vector therefore changes by at most 2 * accel * period per period at a
+//   corner (the ramp's accel along the path plus the corner's), and by the
+//   ramp's accel elsewhere, apart from the centripetal v^2 / r on arcs, which
+//   the interpolator does not limit.
 // - Look-ahead runs over the whole queue (until the braking distance is
 //   covered), so the end ramp starts in time even when the last segments are
 //   shorter than the braking distance. The end of the queue is a stop: if the

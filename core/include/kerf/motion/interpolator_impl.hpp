@@ -96,7 +96,11 @@ S Interpolator<S>::plan_step() const {
       const QueuedSegment<S>& next = queue_[j + 1];
       w = min_of(next.corner_step, next.path.feed * override_ * t);
     }
-    if (w < x) x = min_of(x, max_step_before(d, w, a));
+    // A slow point (w > 0) must not be reached by a faster step either: a step
+    // that ends exactly on a corner is followed by one that leaves it, and
+    // both must keep to the corner speed. The end of the queue is reached
+    // exactly.
+    if (w < x) x = min_of(x, max_step_before(w > S(0) ? d - snap_ : d, w, a));
     if (j + 1 < n) d = d + queue_[j + 1].length;
   }
   // Never brake harder than the limit (the plan above only guarantees it up to
@@ -132,7 +136,8 @@ Setpoint<S> Interpolator<S>::step() {
     const QueuedSegment<S>& f = queue_.front();
     const bool last = queue_.size() == 1;
     const S rest = f.length - u_;
-    if (last ? rest > snap_ : rest > S(0)) break;
+    // a step that ends exactly on a joint stays on it: the next plan sees the joint
+    if (last ? rest > snap_ : rest >= S(0)) break;
     if (last) {
       last_.position = f.path.geometry.end;
       last_.segment = front_index_;
