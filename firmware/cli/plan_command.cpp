@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <sys/stat.h>
 
 #include "cli/fit_command.hpp"
 #include "cli/plan_path.hpp"
@@ -59,11 +60,17 @@ bool write_all(const std::string& path, const std::string& text) {
   std::FILE* f = std::fopen(path.c_str(), "wb");
   if (f == nullptr) return false;
   const std::size_t n = std::fwrite(text.data(), 1, text.size(), f);
-  const bool ok = n == text.size() && std::fflush(f) == 0;
-  const int saved = errno;
-  if (std::fclose(f) != 0 || !ok) {
-    std::remove(path.c_str());  // nothing half-written is left behind
-    errno = ok ? errno : saved;
+  bool ok = n == text.size() && std::fflush(f) == 0;
+  int why = errno;
+  if (std::fclose(f) != 0 && ok) {
+    ok = false;
+    why = errno;
+  }
+  if (!ok) {
+    struct stat st {};
+    if (::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode))
+      std::remove(path.c_str());  // nothing half-written is left behind
+    errno = why;
     return false;
   }
   return true;
