@@ -69,8 +69,9 @@ inline double path_length(const std::vector<Seg>& path) {
 }
 
 inline MotionConfig<double> config(double period, double accel, double corner_deg = 1.0,
-                                   double cpm = 1000.0) {
+                                   double cpm = 1000.0, double jerk = 0.0) {
   MotionConfig<double> c;
+  c.jerk = jerk;
   c.period = period;
   c.accel = accel;
   c.corner_angle = corner_deg * kPi / 180;
@@ -85,7 +86,9 @@ inline std::vector<Setpoint<double>> run_path(const std::vector<Seg>& path,
                                               const MotionConfig<double>& c,
                                               std::size_t capacity = 64) {
   std::vector<QueuedSegment<double>> slots(capacity);
-  Interpolator<double> ip(Span<QueuedSegment<double>>(slots.data(), slots.size()));
+  std::vector<double> window(Interpolator<double>::jerk_window_size(c));
+  Interpolator<double> ip(Span<QueuedSegment<double>>(slots.data(), slots.size()),
+                          Span<double>(window.data(), window.size()));
   if (ip.configure(c) != Status::ok) return {};
   std::vector<Setpoint<double>> out;
   std::size_t next = 0;

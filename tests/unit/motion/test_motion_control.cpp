@@ -125,7 +125,10 @@ TEST(MotionControl, RejectsBadSegmentsAndLimits) {
   EXPECT_EQ(ip.queued(), 1u);
 
   MotionConfig<double> c = config(1e-3, 2000);
-  c.jerk = 1e5;  // S-curve ramps are not implemented: refused, not ignored
+  c.jerk = 1e5;  // an S-curve needs a window of ceil(2 * 2000 / (1e5 * 1e-3)) = 40 values
+  EXPECT_EQ(Interpolator<double>::jerk_window_size(c), 40u);
+  EXPECT_EQ(ip.configure(c), Status::capacity_exceeded);
+  c.jerk = -1;
   EXPECT_EQ(ip.configure(c), Status::invalid_argument);
   c = config(0.0, 2000);
   EXPECT_EQ(ip.configure(c), Status::invalid_argument);
