@@ -28,6 +28,7 @@ struct PlanSummary {
   double cruise_fraction = 0;  // of the periods, those at the programmed feed
   double max_accel_path = 0;   // mm/s^2, along the path (from s)
   double max_accel_plane = 0;  // mm/s^2, of the x-y velocity vector
+  double max_jerk_path = 0;    // mm/s^3, along the path
 };
 
 // Runs the path at `feed` (mm/s) and appends one CSV row per setpoint to
