@@ -228,7 +228,9 @@ Setpoint<S> Interpolator<S>::step() {
     plan_at_end_ = false;
     ended = true;
   } else {
-    last_.position = point_at(f, max_of(out_s_ - out_base_, S(0)));
+    // on the plan's own segment and level with it, u_ is the exact offset
+    const S local = lead_ == 0 && out_s_ == s_plan ? u_ : out_s_ - out_base_;
+    last_.position = point_at(f, max_of(local, S(0)));
   }
   last_.s = out_s_;
   last_.speed = moved / config_.period;
@@ -239,6 +241,7 @@ Setpoint<S> Interpolator<S>::step() {
     lead_ = 0;
     u_ = S(0);
     base_ = out_base_ = out_s_;
+    slow_until_ = S(0);
     tail_end_ = last_.position;
     ended = true;
   }
