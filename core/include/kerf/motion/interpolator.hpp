@@ -88,9 +88,10 @@ class Interpolator {
   // The window an S-curve with these limits needs (1 when jerk is 0).
   static std::size_t jerk_window_size(const MotionConfig<S>& c);
 
-  // Sets the limits; must be called before push() and step(), while idle.
-  // invalid_argument (and nothing changed) for a limit out of range;
-  // capacity_exceeded when the jerk window is smaller than jerk_window_size.
+  // Sets the limits and resets (see reset()); must be called before push()
+  // and step(). invalid_argument (and nothing changed) for a limit out of
+  // range; capacity_exceeded when the jerk window is smaller than
+  // jerk_window_size(c).
   Status configure(const MotionConfig<S>& c);
 
   // Appends a segment. capacity_exceeded when the queue is full,
