@@ -142,6 +142,13 @@ int run_plan(const PlanOptions& opts) {
   config.jerk = jerk;
   config.corner_angle = corner * kPi / 180;
   config.counts_per_mm = {cpm, cpm};
+  // Refused before running: runs whose trace would not fit in memory.
+  if (motion::Interpolator<double>::jerk_window_size(config) > kMaxJerkWindow)
+    return usage_error("--jerk: too small for --accel and --period (the S-curve would span more "
+                       "than " + std::to_string(kMaxJerkWindow) + " periods)");
+  if (fitted_length(path) / (feed / 60 * period) > static_cast<double>(kMaxSetpoints))
+    return usage_error("--period: the run would take more than " +
+                       std::to_string(kMaxSetpoints) + " periods");
   std::string trace = "t_s,s_mm,x_mm,y_mm,x_counts,y_counts,segment\n";
   PlanSummary sum;
   if (!run_plan_path(path, feed / 60, config, trace, sum, error)) {

@@ -13,13 +13,6 @@ namespace kerf::cli {
 
 namespace {
 
-// A run that would take more periods than this is refused: it would write
-// gigabytes of trace (a period in ms given as s, say).
-constexpr std::size_t kMaxSetpoints = 50000000;
-// An S-curve averages over 2 accel / (jerk period) periods; beyond this the
-// jerk is so small that the ramps would be longer than any cut.
-constexpr std::size_t kMaxJerkWindow = 1000000;
-
 // Fixed-point millimetres (1 nm), never "-0.000000".
 void append_mm(std::string& out, double v) {
   char buf[40];
@@ -59,18 +52,21 @@ bool fit_path(const std::vector<Vec2<double>>& pts, double tol, const std::strin
   return true;
 }
 
+double fitted_length(const std::vector<Segment<double>>& path) {
+  double sum = 0;
+  for (const Segment<double>& g : path) {
+    const Result<motion::QueuedSegment<double>> q = motion::prepare_segment<double>({g, 1.0, 0});
+    if (q.ok()) sum += q.value().length;
+  }
+  return sum;
+}
+
 bool run_plan_path(const std::vector<Segment<double>>& path, double feed,
                    const motion::MotionConfig<double>& config, std::string& trace,
                    PlanSummary& summary, std::string& error) {
   using namespace motion;
   std::vector<QueuedSegment<double>> slots(64);
-  const std::size_t window_size = Interpolator<double>::jerk_window_size(config);
-  if (window_size > kMaxJerkWindow) {
-    error = "--jerk: too small for --accel and --period (the S-curve would span more than " +
-            std::to_string(kMaxJerkWindow) + " periods)";
-    return false;
-  }
-  std::vector<double> window(window_size);
+  std::vector<double> window(Interpolator<double>::jerk_window_size(config));
   Interpolator<double> ip(Span<QueuedSegment<double>>(slots.data(), slots.size()),
                           Span<double>(window.data(), window.size()));
   if (ip.configure(config) != Status::ok) {

@@ -31,6 +31,16 @@ struct PlanSummary {
   double max_jerk_path = 0;    // mm/s^3, along the path
 };
 
+// A run that would take more periods than this is refused: it would write
+// gigabytes of trace (a period in ms given as s, say).
+inline constexpr std::size_t kMaxSetpoints = 10000000;
+// An S-curve averages over 2 accel / (jerk period) periods; beyond this the
+// jerk is so small that the ramps would be longer than any cut.
+inline constexpr std::size_t kMaxJerkWindow = 1000000;
+
+// The length of the fitted path, mm.
+double fitted_length(const std::vector<Segment<double>>& path);
+
 // Runs the path at `feed` (mm/s) and appends one CSV row per setpoint to
 // trace. The setpoint budget guards against a period far too small for the
 // path; false with error set when the interpolator refuses a segment.
