@@ -48,7 +48,7 @@ Scenario random_scenario(std::mt19937_64& rng) {
 TEST(MotionRandom, InvariantsHoldOnRandomPathsWithHoldsAndOverrides) {
   std::mt19937_64 rng(44);
   std::uniform_real_distribution<double> u(0.0, 1.0);
-  for (int run = 0; run < 300; ++run) {
+  for (int run = 0; run < 120; ++run) {
     const Scenario sc = random_scenario(rng);
     const MotionConfig<double>& c = sc.config;
     std::vector<QueuedSegment<double>> slots(1 + static_cast<std::size_t>(5 * u(rng)));
