@@ -6,6 +6,7 @@
 #include <new>
 
 #include "cli/fit_command.hpp"
+#include "cli/plan_command.hpp"
 
 #ifndef KERF_VERSION
 #define KERF_VERSION "unknown"
@@ -19,6 +20,8 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     FitOptions fit_opts;
     CLI::App* fit = add_fit_command(app, fit_opts);
+    PlanOptions plan_opts;
+    CLI::App* plan = add_plan_command(app, plan_opts);
     try {
       app.parse(argc, argv);
     } catch (const CLI::Success& e) {  // --help, --version
@@ -28,6 +31,7 @@ int main(int argc, char** argv) {
       return kExitUsage;
     }
     if (fit->parsed()) return run_fit(fit_opts);
+    if (plan->parsed()) return run_plan(plan_opts);
     return kExitUsage;  // require_subcommand(1) makes this unreachable
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "kerf: out of memory\n");
