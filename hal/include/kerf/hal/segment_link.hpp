@@ -75,6 +75,8 @@ class SegmentLink {
   virtual LinkError push(const SegmentCommand& seg, BoardStatus& status) = 0;
   virtual LinkError status(BoardStatus& status) = 0;
   virtual LinkError command(Command c) = 0;
+  // Transactions sent again after a failed attempt, since creation.
+  virtual std::uint64_t resends() const = 0;
   // Text of the last error, for the operator (static storage, no allocation).
   virtual const char* last_error() const = 0;
 };

@@ -44,7 +44,7 @@ class ModbusSegmentLink final : public SegmentLink {
   LinkError command(Command c) override;
   const char* last_error() const override { return error_; }
 
-  std::uint64_t resends() const { return resends_; }      // transactions sent again
+  std::uint64_t resends() const override { return resends_; }
   std::uint64_t reconnects() const { return reconnects_; }
 
  private:
@@ -54,10 +54,19 @@ class ModbusSegmentLink final : public SegmentLink {
   template <class F>
   LinkError transact(Op op, F&& attempt);
   LinkError fail(LinkError e, const char* what, int err);
+  // One request/reply, built and checked here rather than by libmodbus so
+  // that every reply is validated the same way on both transports: unit id,
+  // TCP transaction id, function code, exception, byte count, echo. Reads
+  // `nread` registers into `out` for FC03/FC23. Returns -1 with errno set.
+  int exchange(const std::uint8_t* pdu, int n, int nread, std::uint16_t* out);
+  // After a timeout or a bad reply: discard bytes until the line has been
+  // quiet for one response timeout, so a late reply cannot answer the resend.
+  void drain();
 
   ModbusConfig cfg_;
   modbus_t* ctx_ = nullptr;
   bool connected_ = false;
+  std::uint16_t tid_ = 0;  // TCP transaction id of the last request
   std::uint64_t resends_ = 0;
   std::uint64_t reconnects_ = 0;
   char error_[200] = {};
