@@ -6,6 +6,9 @@
 #include <new>
 
 #include "cli/fit_command.hpp"
+#if KERF_HAVE_MODBUS
+#include "cli/sim_command.hpp"
+#endif
 
 #ifndef KERF_VERSION
 #define KERF_VERSION "unknown"
@@ -19,6 +22,10 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     FitOptions fit_opts;
     CLI::App* fit = add_fit_command(app, fit_opts);
+#if KERF_HAVE_MODBUS
+    SimOptions sim_opts;
+    CLI::App* sim = add_sim_command(app, sim_opts);
+#endif
     try {
       app.parse(argc, argv);
     } catch (const CLI::Success& e) {  // --help, --version
@@ -28,6 +35,9 @@ int main(int argc, char** argv) {
       return kExitUsage;
     }
     if (fit->parsed()) return run_fit(fit_opts);
+#if KERF_HAVE_MODBUS
+    if (sim->parsed()) return run_sim(sim_opts);
+#endif
     return kExitUsage;  // require_subcommand(1) makes this unreachable
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "kerf: out of memory\n");

@@ -171,6 +171,21 @@ bool MotionBoard::wait_until(const std::function<bool(const hal::BoardStatus&)>&
                            [&] { return pred(status_locked()); });
 }
 
+bool MotionBoard::wait_sim_time(double t_s) {
+  std::unique_lock<std::mutex> lock(mu_);
+  auto reached = [&] { return static_cast<double>(ticks_) * cfg_.servo_period_s >= t_s; };
+  changed_.wait(lock, [&] {
+    return reached() || cancel_waits_ || state_ == BoardState::done || state_ == BoardState::fault;
+  });
+  return reached();
+}
+
+void MotionBoard::cancel_waits() {
+  std::lock_guard<std::mutex> lock(mu_);
+  cancel_waits_ = true;
+  changed_.notify_all();
+}
+
 std::vector<TraceSample> MotionBoard::trace() const {
   std::lock_guard<std::mutex> lock(mu_);
   return trace_;

@@ -56,6 +56,11 @@ class MotionBoard {
   // Blocks until pred(status) holds or the wall-clock deadline passes.
   bool wait_until(const std::function<bool(const hal::BoardStatus&)>& pred, double timeout_s);
 
+  // Blocks until simulated time reaches t_s, the board stops (done or fault)
+  // or cancel() is called; true when t_s was reached.
+  bool wait_sim_time(double t_s);
+  void cancel_waits();
+
   std::vector<TraceSample> trace() const;
   std::vector<std::uint32_t> executed() const;  // sequence numbers, in execution order
   double sim_time() const;
@@ -85,6 +90,7 @@ class MotionBoard {
   std::vector<std::uint32_t> executed_;
   std::thread servo_;
   bool servo_stop_ = false;
+  bool cancel_waits_ = false;
 };
 
 }  // namespace kerf::sim
