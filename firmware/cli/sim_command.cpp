@@ -99,14 +99,8 @@ CLI::App* add_sim_command(CLI::App& app, SimOptions& o) {
 }
 
 int run_sim(const SimOptions& opts) {
-  std::string why_not;
-  if (!sim::make_motion_executor({}, why_not)) {  // checked before anything runs
-    std::fprintf(stderr, "kerf: sim: %s\n", why_not.c_str());
-    return kExitFailure;
-  }
-  return run_sim_with(opts, [] {
-    std::string unused;
-    return sim::make_motion_executor({}, unused);
+  return run_sim_with(opts, [](std::string& why_not) {
+    return sim::make_motion_executor({}, why_not);
   });
 }
 
@@ -162,9 +156,14 @@ int run_sim_with(const SimOptions& opts, const ExecutorFactory& make_executor) {
   job.start = in.points.front();
   job.speed = speed;
   job.link_timeout_s = link_timeout;
-  job.make_executor = make_executor;
+  std::string why_not;
+  std::unique_ptr<sim::SegmentExecutor> exec = make_executor(why_not);
+  if (!exec) {
+    std::fprintf(stderr, "kerf: sim: %s\n", why_not.c_str());
+    return kExitFailure;
+  }
 
-  const control::SimJobResult res = control::run_sim_job(job);
+  const control::SimJobResult res = control::run_sim_job(job, std::move(exec));
   if (!res.setup_error.empty()) {
     std::fprintf(stderr, "kerf: sim: cannot start the simulated board: %s\n", res.setup_error.c_str());
     return kExitFailure;

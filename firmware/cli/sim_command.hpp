@@ -31,7 +31,8 @@ struct SimOptions {
 
 CLI::App* add_sim_command(CLI::App& app, SimOptions& opts);
 
-using ExecutorFactory = std::function<std::unique_ptr<sim::SegmentExecutor>()>;
+// Makes the board's executor, or returns null with the reason in why_not.
+using ExecutorFactory = std::function<std::unique_ptr<sim::SegmentExecutor>(std::string& why_not)>;
 
 // Runs it with the board's motion executor; returns the exit code.
 int run_sim(const SimOptions& opts);

@@ -34,13 +34,12 @@ void inject(sim::BoardServer& server, const ScheduledFault& f) {
 
 }  // namespace
 
-SimJobResult run_sim_job(const SimJob& job) {
+SimJobResult run_sim_job(const SimJob& job, std::unique_ptr<sim::SegmentExecutor> exec) {
   SimJobResult res;
   const auto wall0 = std::chrono::steady_clock::now();
   sim::BoardConfig bc;
   bc.servo_period_s = job.servo_period_s;
   bc.start = job.start;
-  std::unique_ptr<sim::SegmentExecutor> exec = job.make_executor ? job.make_executor() : nullptr;
   if (!exec) {
     res.setup_error = "no motion executor";
     return res;

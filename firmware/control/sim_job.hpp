@@ -5,7 +5,6 @@
 #pragma once
 
 #include <cstdint>
-#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -31,7 +30,6 @@ struct SimJob {
   double servo_period_s = 0.001;
   double link_timeout_s = 1.0;  // the board's watchdog is half of it
   std::vector<ScheduledFault> faults;
-  std::function<std::unique_ptr<sim::SegmentExecutor>()> make_executor;
 };
 
 struct SimJobResult {
@@ -44,7 +42,7 @@ struct SimJobResult {
   double wall_s = 0.0;
 };
 
-SimJobResult run_sim_job(const SimJob& job);
+SimJobResult run_sim_job(const SimJob& job, std::unique_ptr<sim::SegmentExecutor> executor);
 
 const char* to_string(FaultKind k);
 
