@@ -1,0 +1,134 @@
+// The constant-feed interpolator. A sender (the CLI, a motion board, a drive
+// simulator) pushes segments; each servo period it calls step() and gets one
+// setpoint: the exact position, the drive counts, the path length travelled.
+//
+// Motion rules:
+// - Each period advances feed * override * period along the path. What is left
+//   of a step at a joint carries into the next segment, so the speed does not
+//   dip at joints.
+// - Ramps are trapezoidal: the step changes by at most A = accel * period^2
+//   per period (the acceleration along the path). They happen only at the
+//   start, at the end of the queue, on feed hold / abort, where the feed or the
+//   override drops, and at corners.
+// - Corner rule: where the tangent turns by theta > corner_angle, the speed at
+//   the joint is at most accel * period / (2 sin(theta / 2)), the speed at
+//   which the velocity vector changes by accel * period in one period. Smaller
+//   turns count as tangent-continuous and are run at full feed.
+// - Look-ahead runs over the whole queue (until the braking distance is
+//   covered), so the end ramp starts in time even when the last segments are
+//   shorter than the braking distance. The end of the queue is a stop: if the
+//   sender does not keep the queue full, the head stops there, exactly.
+// - The path is never overshot and never run backwards.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "kerf/core/span.hpp"
+#include "kerf/core/status.hpp"
+#include "kerf/motion/counts.hpp"
+#include "kerf/motion/path_geometry.hpp"
+#include "kerf/motion/path_queue.hpp"
+#include "kerf/motion/ramp/lookahead.hpp"
+
+namespace kerf::motion {
+
+enum class MotionState : std::uint8_t {
+  idle,      // nothing queued yet (or after reset)
+  running,   // moving, or about to
+  stopping,  // feed hold or abort: braking on the path
+  held,      // feed hold: at rest on the path; resume() continues
+  done,      // the queue ran out (or an abort finished): at rest
+};
+
+template <class S>
+struct MotionConfig {
+  S period{};                         // servo period T, s (> 0)
+  S accel{};                          // acceleration limit along the path, mm/s^2 (> 0)
+  S jerk{};                           // 0: trapezoidal. S-curve is not implemented yet: > 0 is rejected
+  S corner_angle{};                   // rad in [0, pi]: tangent turns above it are corners
+  Vec2<S> counts_per_mm{S(1), S(1)};  // per axis (> 0)
+};
+
+template <class S>
+struct Setpoint {
+  Vec2<S> position{};          // exact commanded position, mm
+  Counts counts{};             // what the drives receive
+  S s{};                       // path length travelled since reset, mm
+  S speed{};                   // along the path over the last period, mm/s
+  std::uint64_t segment = 0;   // index of the segment (0 = first pushed since reset)
+  std::uint32_t sequence = 0;  // that segment's sequence number
+  MotionState state = MotionState::idle;
+};
+
+template <class S>
+class Interpolator {
+ public:
+  // storage: the queue's slots; its size is the queue capacity (>= 1).
+  explicit Interpolator(Span<QueuedSegment<S>> storage) : queue_(storage) {
+    KERF_ASSERT(storage.size() > 0);
+  }
+
+  // Sets the limits; must be called before push() and step(). invalid_argument
+  // (and nothing changed) for a limit out of range, or jerk > 0.
+  Status configure(const MotionConfig<S>& c);
+
+  // Appends a segment. capacity_exceeded when the queue is full,
+  // invalid_argument for a bad feed or geometry (see prepare_segment) or when
+  // it does not start where the previous segment ended. Nothing is changed then.
+  Status push(const PathSegment<S>& p);
+
+  // Advances one servo period and returns the setpoint.
+  Setpoint<S> step();
+
+  void hold() { hold_ = true; }  // brake to a stop on the path, then wait
+  void resume() { hold_ = false; }
+  void abort() { abort_ = true; }  // brake to a stop on the path, then drop the queue
+  // Feed override in percent, 10..200 (invalid_argument otherwise). Speed
+  // changes to it are ramped like any other.
+  Status set_override(S percent);
+  S override_percent() const { return override_ * S(100); }
+
+  // Back to idle at no position, the queue empty; the configuration is kept.
+  void reset();
+
+  MotionState state() const { return last_.state; }
+  const Setpoint<S>& last_setpoint() const { return last_; }
+  std::size_t queued() const { return queue_.size(); }
+  std::size_t capacity() const { return queue_.capacity(); }
+  std::size_t free_slots() const { return queue_.capacity() - queue_.size(); }
+  // Segments finished since reset, and the sequence number of the last one.
+  std::uint64_t completed_count() const { return completed_; }
+  bool has_completed() const { return completed_ > 0; }
+  std::uint32_t last_completed_sequence() const { return last_completed_sequence_; }
+  // How much further the head travels if hold() is called now, mm.
+  S braking_distance() const;
+
+ private:
+  S plan_step() const;
+  void complete_front();
+
+  PathQueue<S> queue_;
+  MotionConfig<S> config_{};
+  bool configured_ = false;
+  S accel_step_{};  // A = accel * period^2
+  S cos_corner_{};
+  S snap_{};        // an end closer than this is reached
+  S override_ = S(1);
+  bool hold_ = false;
+  bool abort_ = false;
+  S u_{};          // distance into the front segment
+  S base_{};       // path length at the front segment's start
+  S step_{};       // the last step, mm per period
+  bool has_position_ = false;
+  Vec2<S> tail_end_{};      // where the last pushed segment ends
+  Vec2<S> tail_tangent_{};  // and its direction there
+  std::uint64_t front_index_ = 0;
+  std::uint64_t completed_ = 0;
+  std::uint32_t last_completed_sequence_ = 0;
+  Setpoint<S> last_{};
+};
+
+}  // namespace kerf::motion
+
+#include "kerf/motion/interpolator_impl.hpp"
