@@ -13,7 +13,7 @@ double since(clock::time_point t) { return std::chrono::duration<double>(clock::
 
 bool transient(hal::LinkError e) {
   return e == hal::LinkError::timeout || e == hal::LinkError::disconnected ||
-         e == hal::LinkError::malformed;  // an exception the link did not retry is final
+         e == hal::LinkError::malformed || e == hal::LinkError::busy;  // other exceptions are final
 }
 
 // Retries `op` while the link fails transiently, for at most link_timeout_s.

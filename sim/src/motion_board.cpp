@@ -2,12 +2,21 @@
 
 #include <chrono>
 
+#include "kerf/core/assert.hpp"
+
 namespace kerf::sim {
 
 using hal::BoardState;
 
 MotionBoard::MotionBoard(const BoardConfig& cfg, std::unique_ptr<SegmentExecutor> executor)
-    : cfg_(cfg), exec_(std::move(executor)), ring_(cfg.capacity), pos_(cfg.start) {
+    : cfg_(cfg),
+      exec_(std::move(executor)),
+      ring_(cfg.capacity),
+      pos_(cfg.start),
+      tail_end_(cfg.start),
+      torch_of_(256) {
+  // torch_of_ must cover every segment in the queue and in the executor.
+  KERF_ASSERT(cfg.capacity + exec_->free_slots() < torch_of_.size());
   trace_.reserve(cfg.trace_reserve);
   trace_.push_back({0.0, pos_, 0, false});
 }
@@ -36,8 +45,20 @@ bool MotionBoard::command(std::uint16_t code) {
   bool ok = true;
   switch (static_cast<hal::Command>(code)) {
     case hal::Command::start: ok = state_ == BoardState::idle; if (ok) state_ = BoardState::running; break;
-    case hal::Command::hold: ok = state_ == BoardState::running; if (ok) state_ = BoardState::hold; break;
-    case hal::Command::resume: ok = state_ == BoardState::hold; if (ok) state_ = BoardState::running; break;
+    case hal::Command::hold:
+      ok = state_ == BoardState::running;
+      if (ok) {
+        state_ = BoardState::hold;
+        exec_->hold();
+      }
+      break;
+    case hal::Command::resume:
+      ok = state_ == BoardState::hold;
+      if (ok) {
+        state_ = BoardState::running;
+        exec_->resume();
+      }
+      break;
     case hal::Command::abort: fault_locked(hal::kFaultAbort); break;
     case hal::Command::fault_reset:
       ok = state_ == BoardState::fault;
@@ -54,12 +75,13 @@ bool MotionBoard::command(std::uint16_t code) {
 }
 
 void MotionBoard::fault_locked(std::uint16_t bit) {
-  // The safe state first: torch off, motion stopped, the queue dropped.
+  // The safe state first: torch off, the queue dropped, the axes braking to
+  // a stop on the path (the servo keeps ticking until they are at rest).
   torch_ = false;
   state_ = BoardState::fault;
   faults_ |= bit;
   count_ = 0;
-  executing_ = 0;
+  exec_->abort();
   changed_.notify_all();
 }
 
@@ -89,7 +111,13 @@ hal::BoardStatus MotionBoard::status() const {
 }
 
 bool MotionBoard::has_work_locked() const {
-  return state_ == BoardState::running && (executing_ != 0 || count_ > 0 || finish_);
+  if (state_ == BoardState::fault) return exec_busy_;  // still braking
+  if (state_ != BoardState::running && state_ != BoardState::hold) return false;
+  // As fast as possible, simulated time waits for the host: the board runs
+  // only while segments wait in its queue (or the job is finished), so wall-
+  // clock link latency cannot starve it. In real time, starving is real.
+  if (!realtime_ && state_ == BoardState::running) return count_ > 0 || finish_;
+  return exec_busy_ || count_ > 0 || (finish_ && state_ == BoardState::running);
 }
 
 void MotionBoard::tick() {
@@ -98,34 +126,35 @@ void MotionBoard::tick() {
 }
 
 void MotionBoard::tick_locked() {
-  if (state_ != BoardState::running) return;
-  if (executing_ == 0) {
-    if (count_ == 0) {
-      if (finish_) {
-        state_ = BoardState::done;
-        torch_ = false;
-        changed_.notify_all();
+  if (!has_work_locked()) return;
+  if (state_ == BoardState::running) {  // hand queued segments to the executor while it has room
+    while (count_ > 0 && exec_->free_slots() > 0) {
+      const hal::SegmentCommand& seg = ring_[head_];
+      if (!exec_->push(tail_end_, seg)) {
+        fault_locked(hal::kFaultBadSegment);
+        break;
       }
-      return;  // starved: wait for the host (its link timeout decides)
+      torch_of_[seg.seq % torch_of_.size()] = seg.torch ? 1 : 0;
+      tail_end_ = seg.end;
+      exec_busy_ = true;
+      head_ = (head_ + 1) % ring_.size();
+      --count_;
     }
-    const hal::SegmentCommand& seg = ring_[head_];
-    if (!exec_->begin(pos_, seg)) {
-      fault_locked(hal::kFaultBadSegment);
-      return;
-    }
-    executing_ = seg.seq;
-    torch_ = seg.torch;
-    head_ = (head_ + 1) % ring_.size();
-    --count_;
   }
+  const ExecStep e = exec_->step();
   ++ticks_;
-  const bool end = exec_->step(cfg_.servo_period_s, pos_);
-  trace_.push_back({static_cast<double>(ticks_) * cfg_.servo_period_s, pos_, executing_, torch_});
-  if (end) {
-    last_executed_ = executing_;
-    executed_.push_back(executing_);
-    executing_ = 0;
+  pos_ = e.position;
+  exec_busy_ = !e.at_rest;
+  for (std::uint32_t s = last_executed_ + 1; s <= e.last_completed && s > last_executed_; ++s)
+    executed_.push_back(s);  // sequence numbers are consecutive: the board only queues +1
+  if (e.last_completed > last_executed_) last_executed_ = e.last_completed;
+  executing_ = state_ == BoardState::fault ? 0 : e.running;
+  if (state_ != BoardState::fault) torch_ = e.running != 0 && torch_of_[e.running % torch_of_.size()] != 0;
+  if (state_ == BoardState::running && finish_ && count_ == 0 && e.at_rest) {
+    state_ = BoardState::done;
+    torch_ = false;
   }
+  trace_.push_back({static_cast<double>(ticks_) * cfg_.servo_period_s, pos_, executing_, torch_});
   changed_.notify_all();
 }
 
@@ -151,6 +180,7 @@ void MotionBoard::servo_loop(double speed) {
 
 void MotionBoard::start_servo(double speed) {
   servo_stop_ = false;
+  realtime_ = speed > 0.0;
   servo_ = std::thread([this, speed] { servo_loop(speed); });
 }
 

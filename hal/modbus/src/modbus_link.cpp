@@ -23,6 +23,7 @@ const char* to_string(LinkError e) {
     case LinkError::malformed: return "malformed reply";
     case LinkError::disconnected: return "disconnected";
     case LinkError::rejected: return "rejected by the board";
+    case LinkError::busy: return "board busy";
   }
   return "unknown";
 }
@@ -168,7 +169,7 @@ LinkError ModbusSegmentLink::transact(Op op, F&& attempt) {
     const int err = errno;
     last_err = err;
     if (is_exception(err)) {
-      last = LinkError::exception;
+      last = LinkError::busy;
       if (is_transient_exception(err)) continue;
       // The board's own refusals: a sequence gap, no credit, a bad value.
       if (err == EMBXILVAL || err == EMBXILADD) return fail(LinkError::rejected, what, err);

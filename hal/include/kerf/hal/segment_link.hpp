@@ -63,6 +63,7 @@ enum class LinkError : std::uint8_t {
   malformed,    // a reply that failed validation (unit id, length, CRC, content)
   disconnected, // could not (re)connect
   rejected,     // the board refused the segment (sequence gap, no credit, bad values)
+  busy,         // the board answered "busy" (or "acknowledge") to every retry
 };
 
 const char* to_string(LinkError e);

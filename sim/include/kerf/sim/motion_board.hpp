@@ -84,12 +84,16 @@ class MotionBoard {
   std::uint16_t duplicates_ = 0;
   bool finish_ = false;
   bool torch_ = false;
+  bool exec_busy_ = false;      // the executor is moving or has segments
   Vec2<double> pos_{};
+  Vec2<double> tail_end_{};     // where the last segment given to the executor ends
+  std::vector<std::uint8_t> torch_of_;  // torch flag by sequence number, modulo its size
   std::uint64_t ticks_ = 0;
   std::vector<TraceSample> trace_;
   std::vector<std::uint32_t> executed_;
   std::thread servo_;
   bool servo_stop_ = false;
+  bool realtime_ = true;  // false: the servo thread runs as fast as possible
   bool cancel_waits_ = false;
 };
 

@@ -1,8 +1,8 @@
-// The board's real executor: core/motion's constant-feed interpolator
-// behind sim::SegmentExecutor. This is the one place that binds the board to
-// core/motion (issue 4).
+// The board's real executor: core/motion's constant-feed interpolator behind
+// sim::SegmentExecutor. This is the one file that binds the board to core/motion.
 #pragma once
 
+#include <cstddef>
 #include <memory>
 #include <string>
 
@@ -12,10 +12,13 @@ namespace kerf::sim {
 
 struct MotionConfig {
   double servo_period_s = 0.001;
-  double counts_per_mm = 1000.0;  // the drive's resolution
+  double accel_mm_s2 = 2000.0;     // along the path
+  double corner_angle_rad = 0.05;  // tangent turns above this are corners
+  double counts_per_mm = 1000.0;   // the drives' resolution (1 count = 1 um, as on the wire)
+  std::size_t lookahead_slots = 16;
 };
 
-// Null, with the reason in `why_not`, when no interpolator is built in.
+// Null, with the reason in `why_not`, when the configuration is refused.
 std::unique_ptr<SegmentExecutor> make_motion_executor(const MotionConfig& cfg, std::string& why_not);
 
 }  // namespace kerf::sim

@@ -1,21 +1,34 @@
-// How the simulated board turns one queued segment into servo-period
-// positions. The board's motion comes from core/motion's interpolator through
-// this interface (one adapter file), so the board itself does not depend on it.
+// How the simulated board turns queued segments into servo-period positions.
+// The board moves segments from its Modbus queue into the executor as soon as
+// the executor has room, so an executor with look-ahead sees what comes next.
+// kerf's interpolator (core/motion) sits behind this in motion_executor.cpp.
 #pragma once
+
+#include <cstddef>
+#include <cstdint>
 
 #include "kerf/hal/segment_link.hpp"
 
 namespace kerf::sim {
 
+struct ExecStep {
+  Vec2<double> position{};          // what the drives hold after this period, mm
+  std::uint32_t running = 0;        // sequence number being run, 0 when none
+  std::uint32_t last_completed = 0; // highest sequence number finished
+  bool at_rest = true;              // not moving and nothing left to run
+};
+
 class SegmentExecutor {
  public:
   virtual ~SegmentExecutor() = default;
-  // Starts `seg` from `from` (the previous segment's end). False when the
-  // segment cannot be run (the board then faults with kFaultBadSegment).
-  virtual bool begin(Vec2<double> from, const hal::SegmentCommand& seg) = 0;
-  // Advances by one servo period of `period_s` seconds and writes the new
-  // position. Returns true once the segment's end is reached.
-  virtual bool step(double period_s, Vec2<double>& pos) = 0;
+  virtual std::size_t free_slots() const = 0;
+  // Appends `seg`, which starts at `from` (the previous segment's end or the
+  // board's position). False when the executor refuses it (bad geometry).
+  virtual bool push(Vec2<double> from, const hal::SegmentCommand& seg) = 0;
+  virtual ExecStep step() = 0;  // one servo period
+  virtual void hold() = 0;      // brake to a stop on the path
+  virtual void resume() = 0;
+  virtual void abort() = 0;     // brake to a stop, drop what is queued
 };
 
 // Reaches each segment's end point in one servo period. It exercises the
@@ -23,17 +36,33 @@ class SegmentExecutor {
 // tests and the link benchmark use it. `kerf sim` never does.
 class EndpointExecutor final : public SegmentExecutor {
  public:
-  bool begin(Vec2<double>, const hal::SegmentCommand& seg) override {
-    end_ = seg.end;
+  std::size_t free_slots() const override { return full_ ? 0 : 1; }
+  bool push(Vec2<double>, const hal::SegmentCommand& seg) override {
+    next_ = seg;
+    full_ = true;
     return true;
   }
-  bool step(double, Vec2<double>& pos) override {
-    pos = end_;
-    return true;
+  ExecStep step() override {
+    if (full_ && !held_) {
+      step_.position = next_.end;
+      step_.running = next_.seq;
+      step_.last_completed = next_.seq;
+      full_ = false;
+    } else {
+      step_.running = 0;
+    }
+    step_.at_rest = !full_;
+    return step_;
   }
+  void hold() override { held_ = true; }
+  void resume() override { held_ = false; }
+  void abort() override { full_ = false; }
 
  private:
-  Vec2<double> end_{};
+  hal::SegmentCommand next_{};
+  bool full_ = false;
+  bool held_ = false;
+  ExecStep step_{};
 };
 
 }  // namespace kerf::sim
