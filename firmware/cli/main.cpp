@@ -6,6 +6,7 @@
 #include <new>
 
 #include "cli/fit_command.hpp"
+#include "cli/sim_options.hpp"
 #if KERF_HAVE_MODBUS
 #include "cli/sim_command.hpp"
 #endif
@@ -22,10 +23,8 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     FitOptions fit_opts;
     CLI::App* fit = add_fit_command(app, fit_opts);
-#if KERF_HAVE_MODBUS
     SimOptions sim_opts;
     CLI::App* sim = add_sim_command(app, sim_opts);
-#endif
     try {
       app.parse(argc, argv);
     } catch (const CLI::Success& e) {  // --help, --version
@@ -37,6 +36,11 @@ int main(int argc, char** argv) {
     if (fit->parsed()) return run_fit(fit_opts);
 #if KERF_HAVE_MODBUS
     if (sim->parsed()) return run_sim(sim_opts);
+#else
+    if (sim->parsed()) {
+      std::fprintf(stderr, "kerf: sim: this build has no libmodbus (the target's libmodbus-dev was not found)\n");
+      return kExitFailure;
+    }
 #endif
     return kExitUsage;  // require_subcommand(1) makes this unreachable
   } catch (const std::bad_alloc&) {

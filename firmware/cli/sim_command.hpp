@@ -6,30 +6,11 @@
 #include <functional>
 #include <memory>
 #include <string>
-#include <vector>
 
+#include "cli/sim_options.hpp"
 #include "kerf/sim/segment_executor.hpp"
 
-namespace CLI {
-class App;
-}
-
 namespace kerf::cli {
-
-struct SimOptions {
-  std::string link;                 // modbus-tcp | modbus-rtu
-  std::string tol;
-  std::string criterion = "vertex";
-  std::string feed = "50";          // mm/s
-  std::vector<std::string> faults;  // KIND@SECONDS[:DURATION]
-  std::string report;
-  std::string trace;
-  std::string speed = "0";          // 0: as fast as possible
-  std::string link_timeout = "1";   // s
-  std::string file;
-};
-
-CLI::App* add_sim_command(CLI::App& app, SimOptions& opts);
 
 // Makes the board's executor, or returns null with the reason in why_not.
 using ExecutorFactory = std::function<std::unique_ptr<sim::SegmentExecutor>(std::string& why_not)>;

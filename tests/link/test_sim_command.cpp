@@ -5,6 +5,8 @@
 // again): 1.5 um, well inside the tol + 1 count.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -33,8 +35,13 @@ double json_number(const std::string& json, const std::string& key) {
 class SimCommand : public ::testing::TestWithParam<Wire> {
  protected:
   void SetUp() override {
-    dir_ = ::testing::TempDir();
-    points_ = dir_ + "kerf_sim_points.txt";
+    // Names of their own: ctest runs the cases in parallel processes.
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    std::string name = info->name();  // "Case/tcp"
+    for (char& c : name)
+      if (c == '/') c = '_';
+    dir_ = ::testing::TempDir() + "kerf_sim_" + std::to_string(::getpid()) + "_" + name + "_";
+    points_ = dir_ + "points.txt";
     std::ofstream f(points_);
     // A zigzag: any three points lie on a circle, so about one arc per two
     // steps: a few hundred segments, many more than the board's queue.
@@ -44,8 +51,8 @@ class SimCommand : public ::testing::TestWithParam<Wire> {
     cli::SimOptions o;
     o.link = GetParam() == Wire::tcp ? "modbus-tcp" : "modbus-rtu";
     o.tol = "0.01";
-    o.report = dir_ + "kerf_sim_report.json";
-    o.trace = dir_ + "kerf_sim_trace.csv";
+    o.report = dir_ + "report.json";
+    o.trace = dir_ + "trace.csv";
     o.link_timeout = "0.5";
     o.file = points_;
     std::remove(o.report.c_str());
@@ -53,6 +60,9 @@ class SimCommand : public ::testing::TestWithParam<Wire> {
     return o;
   }
   static int run(const cli::SimOptions& o) { return cli::run_sim(o); }
+  void TearDown() override {
+    for (const char* f : {"points.txt", "report.json", "trace.csv"}) std::remove((dir_ + f).c_str());
+  }
   std::string dir_, points_;
 };
 
