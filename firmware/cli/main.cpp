@@ -6,6 +6,7 @@
 #include <new>
 
 #include "cli/fit_command.hpp"
+#include "cli/plan_command.hpp"
 #include "cli/sim_options.hpp"
 #if KERF_HAVE_MODBUS
 #include "cli/sim_command.hpp"
@@ -23,6 +24,8 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     FitOptions fit_opts;
     CLI::App* fit = add_fit_command(app, fit_opts);
+    PlanOptions plan_opts;
+    CLI::App* plan = add_plan_command(app, plan_opts);
     SimOptions sim_opts;
     CLI::App* sim = add_sim_command(app, sim_opts);
     try {
@@ -34,6 +37,7 @@ int main(int argc, char** argv) {
       return kExitUsage;
     }
     if (fit->parsed()) return run_fit(fit_opts);
+    if (plan->parsed()) return run_plan(plan_opts);
 #if KERF_HAVE_MODBUS
     if (sim->parsed()) return run_sim(sim_opts);
 #else

@@ -124,7 +124,7 @@ int run_sim_with(const SimOptions& opts, const ExecutorFactory& make_executor) {
     c.end = p.segment.end;
     c.centre = p.segment.centre;
     c.dir = p.segment.dir;
-    c.feed = feed;
+    c.feed = feed / 60.0;  // mm/min -> mm/s, the wire's unit
     c.torch = true;
     job.segments.push_back(c);
   }

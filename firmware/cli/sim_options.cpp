@@ -14,7 +14,7 @@ CLI::App* add_sim_command(CLI::App& app, SimOptions& o) {
   s->add_option("--criterion", o.criterion, "Fit criterion (only: vertex)")
       ->type_name("NAME")
       ->capture_default_str();
-  s->add_option("--feed", o.feed, "Feed in mm/s")->type_name("F")->capture_default_str();
+  s->add_option("--feed", o.feed, "Feed in mm/min")->type_name("MM_PER_MIN")->capture_default_str();
   s->add_option("--fault", o.faults,
                 "KIND@SECONDS[:DURATION]: link-drop, link-stall, modbus-exception, crc-error")
       ->type_name("FAULT");

@@ -15,7 +15,7 @@ struct SimOptions {
   std::string link;                 // modbus-tcp | modbus-rtu
   std::string tol;
   std::string criterion = "vertex";
-  std::string feed = "50";          // mm/s
+  std::string feed = "3000";        // mm/min
   std::vector<std::string> faults;  // KIND@SECONDS[:DURATION]
   std::string report;
   std::string trace;

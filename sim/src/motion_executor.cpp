@@ -14,7 +14,10 @@ namespace {
 class InterpolatorExecutor final : public SegmentExecutor {
  public:
   explicit InterpolatorExecutor(const MotionConfig& cfg)
-      : storage_(cfg.lookahead_slots), interp_({storage_.data(), storage_.size()}), cfg_(cfg) {}
+      : storage_(cfg.lookahead_slots),
+        window_(64),  // S-curve averaging window; the board runs trapezoidal ramps (jerk 0)
+        interp_({storage_.data(), storage_.size()}, {window_.data(), window_.size()}),
+        cfg_(cfg) {}
 
   bool configure(std::string& why_not) {
     motion::MotionConfig<double> mc;
@@ -59,6 +62,7 @@ class InterpolatorExecutor final : public SegmentExecutor {
 
  private:
   std::vector<motion::QueuedSegment<double>> storage_;
+  std::vector<double> window_;
   motion::Interpolator<double> interp_;
   MotionConfig cfg_;
 };

@@ -10,10 +10,22 @@
 //   per period (the acceleration along the path). They happen only at the
 //   start, at the end of the queue, on feed hold / abort, where the feed or the
 //   override drops, and at corners.
+// - S-curve (jerk > 0): the trapezoidal path length s(t) is averaged over the
+//   last N = ceil(2 accel / (jerk period)) periods. A moving average of a
+//   profile whose step changes by at most A keeps that bound and changes the
+//   acceleration by at most 2A / N per period, i.e. the jerk limit. The head
+//   lags the trapezoidal plan by (N - 1) / 2 periods; it still never passes
+//   the plan, so the end, holds and aborts stay exact. At corners the steps
+//   are then averages too, so the corner speed holds only approximately.
 // - Corner rule: where the tangent turns by theta > corner_angle, the speed at
 //   the joint is at most accel * period / (2 sin(theta / 2)), the speed at
-//   which the velocity vector changes by accel * period in one period. Smaller
-//   turns count as tangent-continuous and are run at full feed.
+//   which the velocity vector changes by accel * period in one period. The
+//   steps that cross or leave the corner keep to it. Smaller turns count as
+//   tangent-continuous and are run at full feed. In the plane, the velocity
+//   vector therefore changes by at most 2 * accel * period per period at a
+//   corner (the ramp's accel along the path plus the corner's), and by the
+//   ramp's accel elsewhere, apart from the centripetal v^2 / r on arcs, which
+//   the interpolator does not limit.
 // - Look-ahead runs over the whole queue (until the braking distance is
 //   covered), so the end ramp starts in time even when the last segments are
 //   shorter than the braking distance. The end of the queue is a stop: if the
@@ -45,7 +57,7 @@ template <class S>
 struct MotionConfig {
   S period{};                         // servo period T, s (> 0)
   S accel{};                          // acceleration limit along the path, mm/s^2 (> 0)
-  S jerk{};                           // 0: trapezoidal. S-curve is not implemented yet: > 0 is rejected
+  S jerk{};                           // mm/s^3; 0: trapezoidal, > 0: S-curve (needs a window)
   S corner_angle{};                   // rad in [0, pi]: tangent turns above it are corners
   Vec2<S> counts_per_mm{S(1), S(1)};  // per axis (> 0)
 };
@@ -65,12 +77,19 @@ template <class S>
 class Interpolator {
  public:
   // storage: the queue's slots; its size is the queue capacity (>= 1).
-  explicit Interpolator(Span<QueuedSegment<S>> storage) : queue_(storage) {
+  // jerk_window: room for the S-curve's moving average, jerk_window_size(c)
+  // values; not needed for trapezoidal ramps.
+  explicit Interpolator(Span<QueuedSegment<S>> storage, Span<S> jerk_window = {})
+      : queue_(storage), window_(jerk_window) {
     KERF_ASSERT(storage.size() > 0);
   }
 
-  // Sets the limits; must be called before push() and step(). invalid_argument
-  // (and nothing changed) for a limit out of range, or jerk > 0.
+  // The window an S-curve with these limits needs (1 when jerk is 0).
+  static std::size_t jerk_window_size(const MotionConfig<S>& c);
+
+  // Sets the limits; must be called before push() and step(), while idle.
+  // invalid_argument (and nothing changed) for a limit out of range;
+  // capacity_exceeded when the jerk window is smaller than jerk_window_size.
   Status configure(const MotionConfig<S>& c);
 
   // Appends a segment. capacity_exceeded when the queue is full,
@@ -106,6 +125,8 @@ class Interpolator {
 
  private:
   S plan_step() const;
+  void advance_plan(S x);
+  S filtered(S s_plan);
   void complete_front();
 
   PathQueue<S> queue_;
@@ -117,9 +138,18 @@ class Interpolator {
   S override_ = S(1);
   bool hold_ = false;
   bool abort_ = false;
-  S u_{};          // distance into the front segment
-  S base_{};       // path length at the front segment's start
-  S step_{};       // the last step, mm per period
+  // The trapezoidal plan runs ahead on segment lead_ (the head may still be
+  // on an earlier one, with the S-curve's lag).
+  std::size_t lead_ = 0;
+  S u_{};          // distance into segment lead_
+  S base_{};       // path length at its start
+  S step_{};       // the plan's last step, mm per period
+  bool plan_at_end_ = false;  // the plan has reached the end of the queue
+  S out_base_{};   // path length at the front segment's start
+  S out_s_{};      // the head's path length
+  Span<S> window_{};
+  std::size_t window_n_ = 1;
+  std::size_t window_at_ = 0;
   bool has_position_ = false;
   Vec2<S> tail_end_{};      // where the last pushed segment ends
   Vec2<S> tail_tangent_{};  // and its direction there

@@ -45,7 +45,9 @@ S max_step_before(S d, S w, S a) {
   while (h(m + 1) < d) ++m;
   const S n = Scalar<S>::from_int(m + 1);
   const S x = d / n + a * Scalar<S>::from_int(m) / S(2);
-  const S top = w + a * n;
+  // The top of the bracket, less a few ulps: exactly at the top the last
+  // braking step would be W itself, which rounding may put just above W.
+  const S top = (w + a * n) * (S(1) - S(8) * Scalar<S>::epsilon());
   return x < top ? x : top;
 }
 

@@ -1,0 +1,171 @@
+#include "cli/plan_command.hpp"
+
+#include <CLI/CLI.hpp>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <sys/stat.h>
+
+#include "cli/fit_command.hpp"
+#include "cli/plan_path.hpp"
+#include "io/point_file.hpp"
+
+namespace kerf::cli {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+int usage_error(const std::string& message) {
+  std::fprintf(stderr, "kerf: %s\n", message.c_str());
+  return kExitUsage;
+}
+
+// A finite number > 0 (or >= 0 when zero_ok), with nothing around it.
+bool parse_number(const char* option, const std::string& text, bool zero_ok, double& value,
+                  std::string& error) {
+  const std::string name = option;
+  if (text.empty()) {
+    error = name + ": required";
+    return false;
+  }
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (std::isspace(static_cast<unsigned char>(text[0])) != 0 ||
+      end != text.c_str() + text.size()) {
+    error = name + ": not a number: \"" + text + "\"";
+    return false;
+  }
+  if (!std::isfinite(v)) {
+    error = name + ": must be finite, got " + text;
+    return false;
+  }
+  if (zero_ok ? !(v >= 0.0) : !(v > 0.0)) {
+    error = name + (zero_ok ? ": must be >= 0, got " : ": must be > 0, got ") + text;
+    return false;
+  }
+  value = v;
+  return true;
+}
+
+// Writes all of text to path ("-": stdout); false with errno if any of it failed.
+bool write_all(const std::string& path, const std::string& text) {
+  if (path == "-") {
+    const std::size_t n = std::fwrite(text.data(), 1, text.size(), stdout);
+    return std::fflush(stdout) == 0 && n == text.size();
+  }
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  if (f == nullptr) return false;
+  const std::size_t n = std::fwrite(text.data(), 1, text.size(), f);
+  bool ok = n == text.size() && std::fflush(f) == 0;
+  int why = errno;
+  if (std::fclose(f) != 0 && ok) {
+    ok = false;
+    why = errno;
+  }
+  if (!ok) {
+    struct stat st {};
+    if (::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode))
+      std::remove(path.c_str());  // nothing half-written is left behind
+    errno = why;
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+CLI::App* add_plan_command(CLI::App& app, PlanOptions& opts) {
+  CLI::App* plan = app.add_subcommand(
+      "plan", "Fit the points, then run the constant-feed interpolator and write its trace");
+  plan->add_option("--tol", opts.tol, "Largest distance of a point from its piece (> 0)")
+      ->type_name("EPS");
+  plan->add_option("--criterion", opts.criterion, "Error criterion (only: vertex)")
+      ->type_name("NAME")
+      ->capture_default_str();
+  plan->add_option("--feed", opts.feed, "Programmed feed, mm/min")->type_name("MM_PER_MIN");
+  plan->add_option("--period", opts.period, "Servo period, s")->type_name("S");
+  plan->add_option("--accel", opts.accel, "Acceleration limit along the path, mm/s^2")
+      ->type_name("MM_S2");
+  plan->add_option("--jerk", opts.jerk, "Jerk limit, mm/s^3 (S-curve: not implemented yet)")
+      ->type_name("MM_S3");
+  plan->add_option("--corner", opts.corner,
+                   "Tangent turns above this many degrees are corners (slowed down)")
+      ->type_name("DEG")
+      ->capture_default_str();
+  plan->add_option("--counts-per-mm", opts.counts_per_mm, "Drive counts per mm, both axes")
+      ->type_name("N");
+  plan->add_option("--trace", opts.trace, "Setpoint trace (CSV) to write; - for stdout")
+      ->type_name("OUT.csv");
+  plan->add_option("file", opts.file, "Point file, one \"x y\" per line; - for stdin")
+      ->type_name("FILE|-")
+      ->required();
+  return plan;
+}
+
+int run_plan(const PlanOptions& opts) {
+  std::string error;
+  double tol = 0, feed = 0, period = 0, accel = 0, corner = 0, cpm = 0;
+  if (!parse_number("--tol", opts.tol, false, tol, error)) return usage_error(error);
+  if (!criterion_supported(opts.criterion))
+    return usage_error("--criterion: \"" + opts.criterion +
+                       "\" is not supported (only vertex is implemented)");
+  if (!parse_number("--feed", opts.feed, false, feed, error) ||
+      !parse_number("--period", opts.period, false, period, error) ||
+      !parse_number("--accel", opts.accel, false, accel, error) ||
+      !parse_number("--corner", opts.corner, true, corner, error) ||
+      !parse_number("--counts-per-mm", opts.counts_per_mm, false, cpm, error))
+    return usage_error(error);
+  if (!opts.jerk.empty())
+    return usage_error("--jerk: S-curve ramps are not implemented yet (trapezoidal only)");
+  if (corner > 180) return usage_error("--corner: must be at most 180, got " + opts.corner);
+  if (opts.trace.empty()) return usage_error("--trace: required");
+
+  const io::PointFile in = io::read_points(opts.file);
+  if (!in.ok) {
+    std::fprintf(stderr, "%s\n", io::describe_error(in).c_str());
+    return kExitUsage;
+  }
+  std::vector<Segment<double>> path;
+  if (!fit_path(in.points, tol, opts.criterion, path, error)) {
+    std::fprintf(stderr, "kerf: %s: %s\n", in.file.c_str(), error.c_str());
+    return kExitFailure;
+  }
+
+  motion::MotionConfig<double> config;
+  config.period = period;
+  config.accel = accel;
+  config.corner_angle = corner * kPi / 180;
+  config.counts_per_mm = {cpm, cpm};
+  std::string trace = "t_s,s_mm,x_mm,y_mm,x_counts,y_counts,segment\n";
+  PlanSummary sum;
+  if (!run_plan_path(path, feed / 60, config, trace, sum, error)) {
+    std::fprintf(stderr, "kerf: %s: %s\n", in.file.c_str(), error.c_str());
+    return kExitFailure;
+  }
+  if (!write_all(opts.trace, trace)) {
+    std::fprintf(stderr, "kerf: --trace: cannot write %s: %s\n", opts.trace.c_str(),
+                 std::strerror(errno));
+    return kExitFailure;
+  }
+
+  char text[512];
+  std::snprintf(text, sizeof text,
+                "path: %zu %s, %.6f mm\n"
+                "time: %.6f s, %zu setpoints\n"
+                "cruise: %.1f %% of the periods at the programmed feed\n"
+                "max acceleration: %.6g mm/s^2 along the path (limit %.6g), %.6g mm/s^2 in "
+                "the plane\n",
+                path.size(), path.size() == 1 ? "piece" : "pieces", sum.length_mm, sum.time_s,
+                sum.setpoints, 100.0 * sum.cruise_fraction, sum.max_accel_path, accel,
+                sum.max_accel_plane);
+  // the summary goes where the trace does not
+  std::FILE* to = opts.trace == "-" ? stderr : stdout;
+  std::fputs(text, to);
+  return std::fflush(to) == 0 ? kExitOk : kExitFailure;
+}
+
+}  // namespace kerf::cli

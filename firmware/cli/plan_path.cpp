@@ -1,0 +1,129 @@
+#include "cli/plan_path.hpp"
+
+#include <algorithm>
+#include <cinttypes>
+#include <cmath>
+#include <cstdio>
+
+#include "cli/check_fit.hpp"
+#include "io/fit_storage.hpp"
+#include "kerf/fit/fit.hpp"
+
+namespace kerf::cli {
+
+namespace {
+
+// A run that would take more periods than this is refused: it would write
+// gigabytes of trace (a period in ms given as s, say).
+constexpr std::size_t kMaxSetpoints = 50000000;
+
+// Fixed-point millimetres (1 nm), never "-0.000000".
+void append_mm(std::string& out, double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.6f", std::fabs(v) < 5e-7 ? 0.0 : v);
+  out += buf;
+}
+
+}  // namespace
+
+bool criterion_supported(const std::string& criterion) {
+  return criterion == "vertex";  // "band" and "biarc" come with the fitters that implement them
+}
+
+bool fit_path(const std::vector<Vec2<double>>& pts, double tol, const std::string& criterion,
+              std::vector<Segment<double>>& out, std::string& error) {
+  if (!criterion_supported(criterion)) {
+    error = "--criterion: \"" + criterion + "\" is not supported (only vertex is implemented)";
+    return false;
+  }
+  const std::size_t n = pts.size();
+  io::FitStorage storage(n);
+  const Span<const Vec2<double>> points(pts.data(), n);
+  const Span<fit::Piece<double>> dst = storage.pieces();
+  const Result<fit::Fit<double>> r =
+      fit::fit_min_count(points, tol, fit::Method::optimal, storage.workspace(), dst);
+  if (!r.ok()) {
+    error = std::string("fit failed: ") + to_string(r.status());
+    return false;
+  }
+  const Span<const fit::Piece<double>> fitted(dst.data(), r.value().pieces);
+  if (const std::string bad = check_fit(points, fitted, r.value().tol); !bad.empty()) {
+    error = "internal error: the fit fails its own check (" + bad + ")";
+    return false;
+  }
+  out.clear();
+  for (const fit::Piece<double>& p : fitted) out.push_back(p.segment);
+  return true;
+}
+
+bool run_plan_path(const std::vector<Segment<double>>& path, double feed,
+                   const motion::MotionConfig<double>& config, std::string& trace,
+                   PlanSummary& summary, std::string& error) {
+  using namespace motion;
+  std::vector<QueuedSegment<double>> slots(64);
+  Interpolator<double> ip(Span<QueuedSegment<double>>(slots.data(), slots.size()));
+  if (ip.configure(config) != Status::ok) {
+    error = "the motion limits are out of range";
+    return false;
+  }
+  summary = PlanSummary{};
+  std::size_t next = 0;
+  std::size_t cruise = 0;
+  double prev_step = 0;
+  Vec2<double> prev_pos = path.front().start;
+  Vec2<double> prev_vel{};
+  const double t = config.period;
+  const auto note_motion = [&](double step, Vec2<double> pos) {
+    summary.max_accel_path = std::max(summary.max_accel_path, std::fabs(step - prev_step) / (t * t));
+    const Vec2<double> vel = (pos - prev_pos) * (1 / t);
+    summary.max_accel_plane = std::max(summary.max_accel_plane, (vel - prev_vel).norm() / t);
+    prev_step = step;
+    prev_pos = pos;
+    prev_vel = vel;
+  };
+  double prev_s = 0;
+  for (;;) {
+    while (next < path.size() && ip.free_slots() > 0) {
+      const Status s = ip.push({path[next], feed, static_cast<std::uint32_t>(next)});
+      if (s != Status::ok) {
+        error = "segment " + std::to_string(next) + " refused: " + to_string(s);
+        return false;
+      }
+      ++next;
+    }
+    const Setpoint<double> p = ip.step();
+    ++summary.setpoints;
+    if (summary.setpoints > kMaxSetpoints) {
+      error = "--period: the run would take more than " + std::to_string(kMaxSetpoints) +
+              " periods";
+      return false;
+    }
+    const double time = static_cast<double>(summary.setpoints) * t;
+    if (std::fabs(p.speed - feed) <= 1e-9 * feed) ++cruise;
+    note_motion(p.s - prev_s, p.position);
+    prev_s = p.s;
+    char head[40];
+    std::snprintf(head, sizeof head, "%.9g,", time);
+    trace += head;
+    append_mm(trace, p.s);
+    trace += ',';
+    append_mm(trace, p.position.x);
+    trace += ',';
+    append_mm(trace, p.position.y);
+    char tail[80];
+    std::snprintf(tail, sizeof tail, ",%" PRId64 ",%" PRId64 ",%" PRIu64 "\n", p.counts.x,
+                  p.counts.y, p.segment);
+    trace += tail;
+    if (p.state == MotionState::done) {
+      summary.time_s = time;
+      summary.length_mm = p.s;
+      break;
+    }
+  }
+  note_motion(0.0, prev_pos);  // at rest after the last setpoint
+  summary.cruise_fraction =
+      static_cast<double>(cruise) / static_cast<double>(summary.setpoints);
+  return true;
+}
+
+}  // namespace kerf::cli

@@ -1,0 +1,40 @@
+// The two stages of `kerf plan`, kept apart from option handling: fitting the
+// points into segments, and running the interpolator over them.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "kerf/geom/segment.hpp"
+#include "kerf/motion/interpolator.hpp"
+
+namespace kerf::cli {
+
+// The criteria fit_path knows. Checked before the input is read.
+bool criterion_supported(const std::string& criterion);
+
+// Fits the points into segments with the named criterion (only "vertex" so
+// far: the minimal vertex fit, method optimal). On failure, returns false and
+// sets error to a message without the "kerf: " prefix.
+bool fit_path(const std::vector<Vec2<double>>& pts, double tol, const std::string& criterion,
+              std::vector<Segment<double>>& out, std::string& error);
+
+// What the run measured from its own setpoints.
+struct PlanSummary {
+  double length_mm = 0;        // the fitted path's length
+  double time_s = 0;           // until the head is at rest at the end
+  std::size_t setpoints = 0;
+  double cruise_fraction = 0;  // of the periods, those at the programmed feed
+  double max_accel_path = 0;   // mm/s^2, along the path (from s)
+  double max_accel_plane = 0;  // mm/s^2, of the x-y velocity vector
+};
+
+// Runs the path at `feed` (mm/s) and appends one CSV row per setpoint to
+// trace. The setpoint budget guards against a period far too small for the
+// path; false with error set when the interpolator refuses a segment.
+bool run_plan_path(const std::vector<Segment<double>>& path, double feed,
+                   const motion::MotionConfig<double>& config, std::string& trace,
+                   PlanSummary& summary, std::string& error);
+
+}  // namespace kerf::cli

@@ -1,0 +1,108 @@
+// Throughput of the constant-feed interpolator (setpoints per second, double)
+// on three paths: tangent-continuous arcs, lines, and pieces much shorter than
+// one period's travel (several joints per step). The queue holds 64 segments
+// and is refilled as they complete, as a motion board would. Prints figures
+// measured in this run and the ratio to the 10 M/s target; it asserts
+// nothing about speed (machines are noisy).
+//
+// usage: kerf_bench_motion [--setpoints N]   (default 2e7 per path)
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <vector>
+
+#include "kerf/motion/interpolator.hpp"
+
+namespace {
+
+using namespace kerf;
+using namespace kerf::motion;
+
+constexpr double kTarget = 10e6;  // setpoints/s: a 1 kHz loop then uses < 0.1 % of a core
+
+enum class Shape { arcs, lines, short_pieces };
+
+// Segment k of an endless path of the given shape.
+class PathSource {
+ public:
+  explicit PathSource(Shape shape) : shape_(shape) {}
+  Segment<double> next() {
+    const Vec2<double> a = at_;
+    Segment<double> s;
+    if (shape_ == Shape::arcs) {  // S-bends: 60 degrees on r = 50, alternating side
+      const double r = 50, turn = M_PI / 3;
+      const int e = (k_ % 2 == 0) ? 1 : -1;
+      const Vec2<double> normal{-std::sin(heading_) * e, std::cos(heading_) * e};
+      const Vec2<double> c = a + normal * r;
+      const double a0 = std::atan2(a.y - c.y, a.x - c.x) + e * turn;
+      at_ = c + Vec2<double>{std::cos(a0), std::sin(a0)} * r;
+      heading_ += e * turn;
+      s = Segment<double>::arc(a, at_, c, e);
+    } else {
+      const double len = shape_ == Shape::lines ? 20.0 : 0.01;
+      at_ = a + Vec2<double>{0.6, 0.8} * len;
+      s = Segment<double>::line(a, at_);
+    }
+    ++k_;
+    return s;
+  }
+
+ private:
+  Shape shape_;
+  Vec2<double> at_{};
+  double heading_ = 0;
+  std::uint64_t k_ = 0;
+};
+
+struct Figures {
+  double per_second = 0;
+  std::int64_t checksum = 0;  // keeps the optimiser from dropping the work
+};
+
+Figures run(Shape shape, std::uint64_t setpoints) {
+  std::vector<QueuedSegment<double>> slots(64);
+  Interpolator<double> ip(Span<QueuedSegment<double>>(slots.data(), slots.size()));
+  MotionConfig<double> c;
+  c.period = 1e-3;
+  c.accel = 2000;
+  c.corner_angle = M_PI / 180;
+  c.counts_per_mm = {1000, 1000};
+  if (ip.configure(c) != Status::ok) std::abort();
+  PathSource src(shape);
+  std::uint32_t seq = 0;
+  Figures f;
+  const auto t0 = std::chrono::steady_clock::now();
+  for (std::uint64_t k = 0; k < setpoints; ++k) {
+    while (ip.free_slots() > 0)
+      if (ip.push({src.next(), 100.0, seq++}) != Status::ok) std::abort();
+    const Setpoint<double> p = ip.step();
+    f.checksum += p.counts.x ^ p.counts.y;
+  }
+  const auto t1 = std::chrono::steady_clock::now();
+  f.per_second = static_cast<double>(setpoints) / std::chrono::duration<double>(t1 - t0).count();
+  return f;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::uint64_t n = 20000000;
+  for (int i = 1; i + 1 < argc; i += 2)
+    if (std::strcmp(argv[i], "--setpoints") == 0) n = std::strtoull(argv[i + 1], nullptr, 10);
+  std::printf("constant-feed interpolator, double, 100 mm/s, 1 ms period, queue of 64\n");
+  std::printf("%-34s %14s %10s\n", "path", "setpoints/s", "x target");
+  const struct {
+    Shape shape;
+    const char* name;
+  } paths[] = {{Shape::arcs, "arcs (r 50, 60 deg S-bends)"},
+               {Shape::lines, "collinear lines of 20 mm"},
+               {Shape::short_pieces, "lines of 0.01 mm (10 per step)"}};
+  for (const auto& p : paths) {
+    const Figures f = run(p.shape, n);
+    std::printf("%-34s %14.3e %10.2f   (checksum %lld)\n", p.name, f.per_second,
+                f.per_second / kTarget, static_cast<long long>(f.checksum));
+  }
+  return 0;
+}
