@@ -16,15 +16,25 @@ function(kerf_header_only name header_dir)
 endfunction()
 
 # libmodbus (libmodbus-dev) for hal's Modbus backend and the simulated board.
-# A cross build searches only the target's multiarch folders; when the
-# target's package (libmodbus-dev:arm64 / :armhf) is not installed, the Modbus
-# parts are left out of that build instead of failing it.
+# A cross build looks for the target's multiarch library
+# (/usr/lib/<triple>/libmodbus.so from libmodbus-dev:arm64 / :armhf); its
+# headers are arch-independent and exposed through a link, as above, so the
+# cross compiler never searches the host's /usr/include. When the target's
+# library is not installed, the Modbus parts are left out of that build
+# instead of failing it.
 function(kerf_find_libmodbus)
   if(CMAKE_CROSSCOMPILING)
-    set(hints PATHS /usr/lib/${KERF_TRIPLE} /usr/include/${KERF_TRIPLE} NO_DEFAULT_PATH)
+    find_library(KERF_MODBUS_LIBRARY modbus PATHS /usr/lib/${KERF_TRIPLE}
+                 NO_DEFAULT_PATH NO_CMAKE_FIND_ROOT_PATH)
+    if(KERF_MODBUS_LIBRARY AND EXISTS /usr/include/modbus/modbus.h)
+      set(KERF_MODBUS_INCLUDE ${CMAKE_BINARY_DIR}/_headers/modbus)
+      file(MAKE_DIRECTORY ${KERF_MODBUS_INCLUDE})
+      file(CREATE_LINK /usr/include/modbus ${KERF_MODBUS_INCLUDE}/modbus SYMBOLIC)
+    endif()
+  else()
+    find_library(KERF_MODBUS_LIBRARY modbus)
+    find_path(KERF_MODBUS_INCLUDE modbus/modbus.h)
   endif()
-  find_library(KERF_MODBUS_LIBRARY modbus ${hints})
-  find_path(KERF_MODBUS_INCLUDE modbus/modbus.h ${hints})
   if(KERF_MODBUS_LIBRARY AND KERF_MODBUS_INCLUDE)
     add_library(kerf_dep_modbus INTERFACE)
     target_link_libraries(kerf_dep_modbus INTERFACE ${KERF_MODBUS_LIBRARY})
