@@ -57,6 +57,7 @@ bool MotionBoard::command(std::uint16_t code) {
       if (ok) {
         state_ = BoardState::running;
         exec_->resume();
+        exec_moving_ = true;  // tick again even if the queue waits on the host
       }
       break;
     case hal::Command::abort: fault_locked(hal::kFaultAbort); break;
@@ -117,6 +118,7 @@ bool MotionBoard::has_work_locked() const {
   // only while segments wait in its queue (or the job is finished), so wall-
   // clock link latency cannot starve it. In real time, starving is real.
   if (!realtime_ && state_ == BoardState::running) return count_ > 0 || finish_;
+  if (state_ == BoardState::hold) return exec_moving_;  // braking; at rest it waits for resume
   return exec_busy_ || count_ > 0 || (finish_ && state_ == BoardState::running);
 }
 
@@ -145,6 +147,7 @@ void MotionBoard::tick_locked() {
   ++ticks_;
   pos_ = e.position;
   exec_busy_ = !e.at_rest;
+  exec_moving_ = e.moving;
   for (std::uint32_t s = last_executed_ + 1; s <= e.last_completed && s > last_executed_; ++s)
     executed_.push_back(s);  // sequence numbers are consecutive: the board only queues +1
   if (e.last_completed > last_executed_) last_executed_ = e.last_completed;

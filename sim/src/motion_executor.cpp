@@ -53,6 +53,7 @@ class InterpolatorExecutor final : public SegmentExecutor {
     const bool moving = sp.state == motion::MotionState::running ||
                         sp.state == motion::MotionState::stopping;
     e.running = moving && interp_.queued() > 0 ? sp.sequence : 0;
+    e.moving = sp.speed > 0.0;
     e.at_rest = !moving && interp_.queued() == 0;
     return e;
   }

@@ -85,6 +85,7 @@ class MotionBoard {
   bool finish_ = false;
   bool torch_ = false;
   bool exec_busy_ = false;      // the executor is moving or has segments
+  bool exec_moving_ = false;    // it travelled in the last period
   Vec2<double> pos_{};
   Vec2<double> tail_end_{};     // where the last segment given to the executor ends
   std::vector<std::uint8_t> torch_of_;  // torch flag by sequence number, modulo its size

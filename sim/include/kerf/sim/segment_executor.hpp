@@ -15,6 +15,7 @@ struct ExecStep {
   Vec2<double> position{};          // what the drives hold after this period, mm
   std::uint32_t running = 0;        // sequence number being run, 0 when none
   std::uint32_t last_completed = 0; // highest sequence number finished
+  bool moving = false;              // travelled this period
   bool at_rest = true;              // not moving and nothing left to run
 };
 
@@ -48,8 +49,10 @@ class EndpointExecutor final : public SegmentExecutor {
       step_.running = next_.seq;
       step_.last_completed = next_.seq;
       full_ = false;
+      step_.moving = true;
     } else {
       step_.running = 0;
+      step_.moving = false;
     }
     step_.at_rest = !full_;
     return step_;
