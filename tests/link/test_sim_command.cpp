@@ -128,6 +128,23 @@ TEST_P(SimCommand, LinkDownTooLongStopsAndReportsTheLastSegment) {
   EXPECT_EQ(json_number(rep, "segments_executed"), last);
 }
 
+TEST_P(SimCommand, CrcErrorsAreRiddenOverRtuAndRefusedOverTcp) {
+  cli::SimOptions o = options();
+  o.faults = {"crc-error@0.2", "crc-error@1.5"};
+  if (GetParam() == Wire::tcp) {
+    ASSERT_EQ(run(o), 2);  // TCP frames carry no CRC
+    std::FILE* f = std::fopen(o.report.c_str(), "r");  // nothing written
+    EXPECT_EQ(f, nullptr);
+    if (f != nullptr) std::fclose(f);
+    return;
+  }
+  ASSERT_EQ(run(o), 0);
+  const std::string rep = slurp(o.report);
+  EXPECT_NE(rep.find("\"state\": \"done\""), std::string::npos) << rep;
+  EXPECT_EQ(json_number(rep, "segments_executed"), json_number(rep, "segments_planned"));
+  EXPECT_GE(json_number(rep, "segments_resent"), 2.0);
+}
+
 INSTANTIATE_TEST_SUITE_P(Wires, SimCommand, ::testing::Values(Wire::tcp, Wire::rtu), wire_name);
 
 }  // namespace
