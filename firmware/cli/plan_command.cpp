@@ -90,7 +90,7 @@ CLI::App* add_plan_command(CLI::App& app, PlanOptions& opts) {
   plan->add_option("--period", opts.period, "Servo period, s")->type_name("S");
   plan->add_option("--accel", opts.accel, "Acceleration limit along the path, mm/s^2")
       ->type_name("MM_S2");
-  plan->add_option("--jerk", opts.jerk, "Jerk limit, mm/s^3 (S-curve: not implemented yet)")
+  plan->add_option("--jerk", opts.jerk, "Jerk limit, mm/s^3: S-curve ramps (default: trapezoidal)")
       ->type_name("MM_S3");
   plan->add_option("--corner", opts.corner,
                    "Tangent turns above this many degrees are corners (slowed down)")
@@ -119,8 +119,9 @@ int run_plan(const PlanOptions& opts) {
       !parse_number("--corner", opts.corner, true, corner, error) ||
       !parse_number("--counts-per-mm", opts.counts_per_mm, false, cpm, error))
     return usage_error(error);
-  if (!opts.jerk.empty())
-    return usage_error("--jerk: S-curve ramps are not implemented yet (trapezoidal only)");
+  double jerk = 0;
+  if (!opts.jerk.empty() && !parse_number("--jerk", opts.jerk, true, jerk, error))
+    return usage_error(error);
   if (corner > 180) return usage_error("--corner: must be at most 180, got " + opts.corner);
   if (opts.trace.empty()) return usage_error("--trace: required");
 
@@ -138,8 +139,16 @@ int run_plan(const PlanOptions& opts) {
   motion::MotionConfig<double> config;
   config.period = period;
   config.accel = accel;
+  config.jerk = jerk;
   config.corner_angle = corner * kPi / 180;
   config.counts_per_mm = {cpm, cpm};
+  // Refused before running: runs whose trace would not fit in memory.
+  if (motion::Interpolator<double>::jerk_window_size(config) > kMaxJerkWindow)
+    return usage_error("--jerk: too small for --accel and --period (the S-curve would span more "
+                       "than " + std::to_string(kMaxJerkWindow) + " periods)");
+  if (fitted_length(path) / (feed / 60 * period) > static_cast<double>(kMaxSetpoints))
+    return usage_error("--period: the run would take more than " +
+                       std::to_string(kMaxSetpoints) + " periods");
   std::string trace = "t_s,s_mm,x_mm,y_mm,x_counts,y_counts,segment\n";
   PlanSummary sum;
   if (!run_plan_path(path, feed / 60, config, trace, sum, error)) {
@@ -152,6 +161,10 @@ int run_plan(const PlanOptions& opts) {
     return kExitFailure;
   }
 
+  char jerk_line[128] = "";
+  if (jerk > 0)
+    std::snprintf(jerk_line, sizeof jerk_line,
+                  "max jerk: %.6g mm/s^3 along the path (limit %.6g)\n", sum.max_jerk_path, jerk);
   char text[512];
   std::snprintf(text, sizeof text,
                 "path: %zu %s, %.6f mm\n"
@@ -165,6 +178,7 @@ int run_plan(const PlanOptions& opts) {
   // the summary goes where the trace does not
   std::FILE* to = opts.trace == "-" ? stderr : stdout;
   std::fputs(text, to);
+  std::fputs(jerk_line, to);
   return std::fflush(to) == 0 ? kExitOk : kExitFailure;
 }
 

@@ -13,10 +13,6 @@ namespace kerf::cli {
 
 namespace {
 
-// A run that would take more periods than this is refused: it would write
-// gigabytes of trace (a period in ms given as s, say).
-constexpr std::size_t kMaxSetpoints = 50000000;
-
 // Fixed-point millimetres (1 nm), never "-0.000000".
 void append_mm(std::string& out, double v) {
   char buf[40];
@@ -56,12 +52,23 @@ bool fit_path(const std::vector<Vec2<double>>& pts, double tol, const std::strin
   return true;
 }
 
+double fitted_length(const std::vector<Segment<double>>& path) {
+  double sum = 0;
+  for (const Segment<double>& g : path) {
+    const Result<motion::QueuedSegment<double>> q = motion::prepare_segment<double>({g, 1.0, 0});
+    if (q.ok()) sum += q.value().length;
+  }
+  return sum;
+}
+
 bool run_plan_path(const std::vector<Segment<double>>& path, double feed,
                    const motion::MotionConfig<double>& config, std::string& trace,
                    PlanSummary& summary, std::string& error) {
   using namespace motion;
   std::vector<QueuedSegment<double>> slots(64);
-  Interpolator<double> ip(Span<QueuedSegment<double>>(slots.data(), slots.size()));
+  std::vector<double> window(Interpolator<double>::jerk_window_size(config));
+  Interpolator<double> ip(Span<QueuedSegment<double>>(slots.data(), slots.size()),
+                          Span<double>(window.data(), window.size()));
   if (ip.configure(config) != Status::ok) {
     error = "the motion limits are out of range";
     return false;
@@ -70,11 +77,15 @@ bool run_plan_path(const std::vector<Segment<double>>& path, double feed,
   std::size_t next = 0;
   std::size_t cruise = 0;
   double prev_step = 0;
+  double prev_change = 0;
   Vec2<double> prev_pos = path.front().start;
   Vec2<double> prev_vel{};
   const double t = config.period;
   const auto note_motion = [&](double step, Vec2<double> pos) {
-    summary.max_accel_path = std::max(summary.max_accel_path, std::fabs(step - prev_step) / (t * t));
+    const double change = step - prev_step;
+    summary.max_accel_path = std::max(summary.max_accel_path, std::fabs(change) / (t * t));
+    summary.max_jerk_path = std::max(summary.max_jerk_path, std::fabs(change - prev_change) / (t * t * t));
+    prev_change = change;
     const Vec2<double> vel = (pos - prev_pos) * (1 / t);
     summary.max_accel_plane = std::max(summary.max_accel_plane, (vel - prev_vel).norm() / t);
     prev_step = step;
@@ -121,6 +132,7 @@ bool run_plan_path(const std::vector<Segment<double>>& path, double feed,
     }
   }
   note_motion(0.0, prev_pos);  // at rest after the last setpoint
+  note_motion(0.0, prev_pos);
   summary.cruise_fraction =
       static_cast<double>(cruise) / static_cast<double>(summary.setpoints);
   return true;

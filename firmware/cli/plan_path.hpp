@@ -28,7 +28,18 @@ struct PlanSummary {
   double cruise_fraction = 0;  // of the periods, those at the programmed feed
   double max_accel_path = 0;   // mm/s^2, along the path (from s)
   double max_accel_plane = 0;  // mm/s^2, of the x-y velocity vector
+  double max_jerk_path = 0;    // mm/s^3, along the path
 };
+
+// A run that would take more periods than this is refused: it would write
+// gigabytes of trace (a period in ms given as s, say).
+inline constexpr std::size_t kMaxSetpoints = 10000000;
+// An S-curve averages over 2 accel / (jerk period) periods; beyond this the
+// jerk is so small that the ramps would be longer than any cut.
+inline constexpr std::size_t kMaxJerkWindow = 1000000;
+
+// The length of the fitted path, mm.
+double fitted_length(const std::vector<Segment<double>>& path);
 
 // Runs the path at `feed` (mm/s) and appends one CSV row per setpoint to
 // trace. The setpoint budget guards against a period far too small for the

@@ -99,6 +99,53 @@ TEST(MotionControl, AbortStopsOnThePathAndDropsTheRest) {
   EXPECT_EQ(ip.last_completed_sequence(), 99u);
 }
 
+// A sender that falls behind: the head stops exactly where the queue ends
+// (done), and continues from there, with no jump, when more arrives. With
+// the S-curve, a segment pushed while the head still catches up is taken too.
+TEST(MotionControl, AStarvedQueueStopsAtItsEndAndContinuesWhenRefilled) {
+  for (const double jerk : {0.0, 1e5}) {
+    const auto c = config(1e-3, 2000, 1.0, 1000.0, jerk);
+    std::vector<QueuedSegment<double>> slots(4);
+    std::vector<double> window(Interpolator<double>::jerk_window_size(c));
+    Interpolator<double> ip(Span<QueuedSegment<double>>(slots.data(), slots.size()),
+                            Span<double>(window.data(), window.size()));
+    ASSERT_EQ(ip.configure(c), Status::ok);
+    ASSERT_EQ(ip.push({Seg::line({0, 0}, {5, 0}), 100.0, 1}), Status::ok);
+    Setpoint<double> p = ip.step();
+    double prev = p.s;
+    int periods = 1;
+    bool pushed_late = false;
+    while (p.state != MotionState::done) {
+      // with the S-curve, push while the plan is at the end but the head is not yet
+      if (!pushed_late && jerk > 0 && p.s > 4.99) {
+        ASSERT_EQ(ip.push({Seg::line({5, 0}, {5, 3}), 100.0, 2}), Status::ok);
+        pushed_late = true;
+      }
+      p = ip.step();
+      ASSERT_GE(p.s, prev);
+      ASSERT_LE(p.s - prev, 0.1 + 1e-12);
+      prev = p.s;
+      ASSERT_LT(++periods, 5000);
+    }
+    EXPECT_EQ(pushed_late, jerk > 0);
+    if (!pushed_late) {
+      EXPECT_EQ(p.position, (V{5, 0}));  // stopped exactly at the end of what it had
+      EXPECT_EQ(ip.last_completed_sequence(), 1u);
+      EXPECT_EQ(ip.step().position, (V{5, 0}));
+      ASSERT_EQ(ip.push({Seg::line({5, 0}, {5, 3}), 100.0, 2}), Status::ok);
+      do {
+        p = ip.step();
+        ASSERT_GE(p.s, prev);
+        ASSERT_LE(p.s - prev, 0.1 + 1e-12);
+        prev = p.s;
+      } while (p.state != MotionState::done);
+    }
+    EXPECT_EQ(p.position, (V{5, 3})) << "jerk " << jerk;
+    EXPECT_NEAR(p.s, 8.0, 1e-12);
+    EXPECT_EQ(ip.last_completed_sequence(), 2u);
+  }
+}
+
 TEST(MotionControl, AFullQueueRefusesAndKeepsWhatItHas) {
   Rig rig(2);
   Interpolator<double>& ip = rig.ip;

@@ -66,6 +66,35 @@ TEST(MotionSCurve, KeepsJerkAndAccelerationLimitsAndTheTrapezoidsGuarantees) {
   EXPECT_GT(cruise, 100);  // the first line is cruised at exactly the feed
 }
 
+TEST(MotionSCurve, KeepsToTheCornerSpeedAtSquareCorners) {
+  std::vector<Seg> path;
+  V at{0, 0};
+  for (int side = 0; side < 4; ++side) {
+    path.push_back(line_from(at, side * kPi / 2, 10));
+    at = path.back().end;
+  }
+  const auto c = config(1e-3, 500, 1.0, 200.0, 10000);  // a window of 100 periods
+  const auto sp = run_path(path, 20.0, c, 8);
+  ASSERT_FALSE(sp.empty());
+  EXPECT_EQ(sp.back().position, path.back().end);
+  const double corner_speed = c.accel * c.period / std::sqrt(2.0);
+  for (int corner = 1; corner <= 3; ++corner) {
+    const double s_corner = 10.0 * corner;
+    for (std::size_t k = 1; k < sp.size(); ++k) {
+      if (sp[k - 1].s <= s_corner + 1e-12 && sp[k].s > s_corner + 1e-12) {
+        EXPECT_LE(sp[k].speed, corner_speed * (1 + 1e-9)) << "corner " << corner;
+      }
+    }
+  }
+  for (std::size_t k = 2; k < sp.size(); ++k) {
+    const V v0 = (sp[k - 1].position - sp[k - 2].position) * (1 / c.period);
+    const V v1 = (sp[k].position - sp[k - 1].position) * (1 / c.period);
+    ASSERT_LE((v1 - v0).norm(), 2 * c.accel * c.period * (1 + 1e-9)) << "period " << k;
+  }
+  const Measured m = measure(sp, c.period);
+  EXPECT_LE(m.jerk, c.jerk * (1 + 1e-6));
+}
+
 TEST(MotionSCurve, FeedHoldStopsWithinTheBrakingDistance) {
   const auto c = config(1e-3, 1500, 1.0, 1000.0, 60000);
   std::vector<QueuedSegment<double>> slots(4);

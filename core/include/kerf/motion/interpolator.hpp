@@ -15,8 +15,9 @@
 //   profile whose step changes by at most A keeps that bound and changes the
 //   acceleration by at most 2A / N per period, i.e. the jerk limit. The head
 //   lags the trapezoidal plan by (N - 1) / 2 periods; it still never passes
-//   the plan, so the end, holds and aborts stay exact. At corners the steps
-//   are then averages too, so the corner speed holds only approximately.
+//   the plan, so the end, holds and aborts stay exact. So that the head
+//   keeps to a slow point's speed (a corner, a lower feed), the plan does so
+//   from (N + 1) steps before it, and at corners as far past it too.
 // - Corner rule: where the tangent turns by theta > corner_angle, the speed at
 //   the joint is at most accel * period / (2 sin(theta / 2)), the speed at
 //   which the velocity vector changes by accel * period in one period. The
@@ -87,9 +88,10 @@ class Interpolator {
   // The window an S-curve with these limits needs (1 when jerk is 0).
   static std::size_t jerk_window_size(const MotionConfig<S>& c);
 
-  // Sets the limits; must be called before push() and step(), while idle.
-  // invalid_argument (and nothing changed) for a limit out of range;
-  // capacity_exceeded when the jerk window is smaller than jerk_window_size.
+  // Sets the limits and resets (see reset()); must be called before push()
+  // and step(). invalid_argument (and nothing changed) for a limit out of
+  // range; capacity_exceeded when the jerk window is smaller than
+  // jerk_window_size(c).
   Status configure(const MotionConfig<S>& c);
 
   // Appends a segment. capacity_exceeded when the queue is full,
@@ -127,6 +129,7 @@ class Interpolator {
   S plan_step() const;
   void advance_plan(S x);
   S filtered(S s_plan);
+  S approach(S w) const;
   void complete_front();
 
   PathQueue<S> queue_;
@@ -145,6 +148,8 @@ class Interpolator {
   S base_{};       // path length at its start
   S step_{};       // the plan's last step, mm per period
   bool plan_at_end_ = false;  // the plan has reached the end of the queue
+  S slow_until_{};            // the plan keeps to slow_step_ until here (S-curve corners)
+  S slow_step_{};
   S out_base_{};   // path length at the front segment's start
   S out_s_{};      // the head's path length
   Span<S> window_{};

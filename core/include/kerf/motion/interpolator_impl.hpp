@@ -46,7 +46,7 @@ void Interpolator<S>::reset() {
   queue_.clear();
   hold_ = abort_ = false;
   lead_ = 0;
-  u_ = base_ = step_ = out_base_ = out_s_ = S(0);
+  u_ = base_ = step_ = out_base_ = out_s_ = slow_until_ = S(0);
   plan_at_end_ = false;
   for (std::size_t i = 0; i < window_n_ && i < window_.size(); ++i) window_[i] = S(0);
   window_at_ = 0;
@@ -105,8 +105,10 @@ S Interpolator<S>::plan_step() const {
   const bool stopping = hold_ || abort_;
   const S target = stopping ? S(0) : queue_[lead_].path.feed * override_ * t;
   S x = min_of(target, step_ + a);
-  // No point further away than the braking length of x can limit x.
-  const S reach = braking_length(x, S(0), a);
+  if (base_ + u_ < slow_until_) x = min_of(x, slow_step_);  // just past a corner
+  // No point further away than the braking length of x (plus the approach of
+  // a point slower than x) can limit x.
+  const S reach = braking_length(x, S(0), a) + (window_n_ > 1 ? approach(x) : S(0));
   const std::size_t n = queue_.size();
   S d = queue_[lead_].length - u_;
   for (std::size_t j = lead_; j < n && !(d > reach); ++j) {
@@ -119,12 +121,20 @@ S Interpolator<S>::plan_step() const {
     // that ends exactly on a corner is followed by one that leaves it, and
     // both must keep to the corner speed. The end of the queue is reached
     // exactly.
-    if (w < x) x = min_of(x, max_step_before(w > S(0) ? d - snap_ : d, w, a));
+    // With the S-curve, the head's step is the mean of the plan's last N
+    // steps, so the plan keeps to w from (N + 1) w before the point.
+    if (w < x) x = min_of(x, max_step_before(w > S(0) ? d - approach(w) : d, w, a));
     if (j + 1 < n) d = d + queue_[j + 1].length;
   }
   // Never brake harder than the limit (the plan above only guarantees it up to
   // rounding), never go backwards.
   return max_of(max_of(x, step_ - a), S(0));
+}
+
+// How far before a slow point (step limit w > 0) the plan keeps to w.
+template <class S>
+S Interpolator<S>::approach(S w) const {
+  return window_n_ > 1 ? Scalar<S>::from_int(static_cast<long>(window_n_) + 1) * w : snap_;
 }
 
 // Moves the plan on by x along the queue.
@@ -146,6 +156,13 @@ void Interpolator<S>::advance_plan(S x) {
     u_ = u_ - f.length;
     base_ = base_ + f.length;
     ++lead_;
+    // The S-curve's head reaches the corner later: keep to the corner speed
+    // for as long past it as before it.
+    const S w = queue_[lead_].corner_step;
+    if (window_n_ > 1 && w < Scalar<S>::infinity()) {
+      slow_step_ = base_ < slow_until_ ? min_of(slow_step_, w) : w;
+      slow_until_ = max_of(slow_until_, base_ + approach(w));
+    }
   }
   step_ = plan_at_end_ ? base_ + u_ - before : x;
 }
@@ -211,7 +228,9 @@ Setpoint<S> Interpolator<S>::step() {
     plan_at_end_ = false;
     ended = true;
   } else {
-    last_.position = point_at(f, max_of(out_s_ - out_base_, S(0)));
+    // on the plan's own segment and level with it, u_ is the exact offset
+    const S local = lead_ == 0 && out_s_ == s_plan ? u_ : out_s_ - out_base_;
+    last_.position = point_at(f, max_of(local, S(0)));
   }
   last_.s = out_s_;
   last_.speed = moved / config_.period;
@@ -222,6 +241,7 @@ Setpoint<S> Interpolator<S>::step() {
     lead_ = 0;
     u_ = S(0);
     base_ = out_base_ = out_s_;
+    slow_until_ = S(0);
     tail_end_ = last_.position;
     ended = true;
   }
