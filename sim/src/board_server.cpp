@@ -1,7 +1,6 @@
 #include "kerf/sim/board_server.hpp"
 
 #include <arpa/inet.h>
-#include <fcntl.h>
 #include <modbus/modbus.h>
 #include <netinet/in.h>
 #include <poll.h>

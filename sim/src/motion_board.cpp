@@ -66,6 +66,7 @@ bool MotionBoard::command(std::uint16_t code) {
       if (ok) {
         state_ = BoardState::idle;
         faults_ = 0;
+        tail_end_ = pos_;  // the next segment starts where the axes stopped
       }
       break;
     case hal::Command::finish: finish_ = true; break;
