@@ -67,6 +67,7 @@ bool MotionBoard::command(std::uint16_t code) {
         state_ = BoardState::idle;
         faults_ = 0;
         tail_end_ = pos_;  // the next segment starts where the axes stopped
+        dropped_through_ = last_accepted_;  // what the fault dropped never ran
       }
       break;
     case hal::Command::finish: finish_ = true; break;
@@ -149,8 +150,10 @@ void MotionBoard::tick_locked() {
   pos_ = e.position;
   exec_busy_ = !e.at_rest;
   exec_moving_ = e.moving;
-  for (std::uint32_t s = last_executed_ + 1; s <= e.last_completed && s > last_executed_; ++s)
-    executed_.push_back(s);  // sequence numbers are consecutive: the board only queues +1
+  // Sequence numbers are consecutive (the board only queues last + 1), so
+  // every number up to last_completed ran, except those a fault dropped.
+  const std::uint32_t from = last_executed_ > dropped_through_ ? last_executed_ : dropped_through_;
+  for (std::uint32_t s = from + 1; s <= e.last_completed && s > from; ++s) executed_.push_back(s);
   if (e.last_completed > last_executed_) last_executed_ = e.last_completed;
   executing_ = state_ == BoardState::fault ? 0 : e.running;
   if (state_ != BoardState::fault) torch_ = e.running != 0 && torch_of_[e.running % torch_of_.size()] != 0;

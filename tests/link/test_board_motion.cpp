@@ -99,6 +99,19 @@ TEST(BoardMotion, AbortTurnsTheTorchOffAndStopsOnThePath) {
   EXPECT_LT(s.position.x, 5.0 + 0.7);
   EXPECT_DOUBLE_EQ(s.position.y, 0.0);
   EXPECT_EQ(s.last_executed, 0u);
+  // After a fault reset the job goes on from where the axes stopped.
+  ASSERT_EQ(rig.link->command(hal::Command::fault_reset), LinkError::none);
+  hal::BoardStatus st;
+  hal::SegmentCommand next;
+  next.seq = 5;  // numbering continues: 1..4 were accepted, then dropped by the abort
+  next.end = {50.0, 0.0};
+  next.feed = 50.0;
+  ASSERT_EQ(rig.link->push(next, st), LinkError::none) << rig.link->last_error();
+  ASSERT_EQ(rig.link->command(hal::Command::start), LinkError::none);
+  ASSERT_EQ(rig.link->command(hal::Command::finish), LinkError::none);
+  ASSERT_TRUE(rig.run_until([](const hal::BoardStatus& b) { return b.state == BoardState::done; }, 5000));
+  EXPECT_DOUBLE_EQ(rig.board.status().position.x, 50.0);
+  EXPECT_EQ(rig.board.executed(), std::vector<std::uint32_t>{5});
 }
 
 }  // namespace

@@ -82,6 +82,7 @@ class MotionBoard {
   std::uint16_t faults_ = 0;
   std::uint32_t last_accepted_ = 0, executing_ = 0, last_executed_ = 0;
   std::uint16_t duplicates_ = 0;
+  std::uint32_t dropped_through_ = 0;  // sequence numbers up to here were dropped by a fault
   bool finish_ = false;
   bool torch_ = false;
   bool exec_busy_ = false;      // the executor is moving or has segments
