@@ -14,6 +14,8 @@ PACKAGES=(
   libgtest-dev googletest libbenchmark-dev
   # header-only deps (exposed to cross builds by KerfDeps.cmake)
   libcli11-dev
+  # hal's Modbus backend and sim's motion board (RTU and TCP)
+  libmodbus-dev
   # Linux SBC cross compilers, run under qemu-user
   g++-aarch64-linux-gnu g++-arm-linux-gnueabihf qemu-user
   # Cortex-M (bare metal): compiler, C/C++ runtime, nm/size, and qemu for a later run

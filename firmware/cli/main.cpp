@@ -7,6 +7,10 @@
 
 #include "cli/fit_command.hpp"
 #include "cli/plan_command.hpp"
+#include "cli/sim_options.hpp"
+#if KERF_HAVE_MODBUS
+#include "cli/sim_command.hpp"
+#endif
 
 #ifndef KERF_VERSION
 #define KERF_VERSION "unknown"
@@ -22,6 +26,8 @@ int main(int argc, char** argv) {
     CLI::App* fit = add_fit_command(app, fit_opts);
     PlanOptions plan_opts;
     CLI::App* plan = add_plan_command(app, plan_opts);
+    SimOptions sim_opts;
+    CLI::App* sim = add_sim_command(app, sim_opts);
     try {
       app.parse(argc, argv);
     } catch (const CLI::Success& e) {  // --help, --version
@@ -32,6 +38,14 @@ int main(int argc, char** argv) {
     }
     if (fit->parsed()) return run_fit(fit_opts);
     if (plan->parsed()) return run_plan(plan_opts);
+#if KERF_HAVE_MODBUS
+    if (sim->parsed()) return run_sim(sim_opts);
+#else
+    if (sim->parsed()) {
+      std::fprintf(stderr, "kerf: sim: this build has no libmodbus (the target's libmodbus-dev was not found)\n");
+      return kExitFailure;
+    }
+#endif
     return kExitUsage;  // require_subcommand(1) makes this unreachable
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "kerf: out of memory\n");

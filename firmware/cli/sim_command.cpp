@@ -1,0 +1,164 @@
+#include "cli/sim_command.hpp"
+
+#include <CLI/CLI.hpp>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+
+#include "cli/fit_command.hpp"
+#include "control/sim_job.hpp"
+#include "io/fit_storage.hpp"
+#include "io/point_file.hpp"
+#include "io/sim_output.hpp"
+#include "kerf/fit/fit.hpp"
+#include "kerf/sim/motion_executor.hpp"
+
+namespace kerf::cli {
+
+namespace {
+
+int usage_error(const std::string& message) {
+  std::fprintf(stderr, "kerf: %s\n", message.c_str());
+  return kExitUsage;
+}
+
+// A finite number; > 0, or >= 0 when zero_ok.
+bool parse_number(const std::string& opt, const std::string& text, bool zero_ok, double& out,
+                  std::string& error) {
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || std::isspace(static_cast<unsigned char>(text[0])) != 0 ||
+      end != text.c_str() + text.size()) {
+    error = opt + ": not a number: \"" + text + "\"";
+    return false;
+  }
+  if (!std::isfinite(v) || (zero_ok ? v < 0.0 : !(v > 0.0))) {
+    error = opt + ": must be a finite number " + (zero_ok ? ">= 0" : "> 0") + ", got " + text;
+    return false;
+  }
+  out = v;
+  return true;
+}
+
+// KIND@SECONDS[:DURATION]
+bool parse_fault(const std::string& text, bool rtu, control::ScheduledFault& f, std::string& error) {
+  const std::size_t at = text.find('@');
+  const std::string kind = text.substr(0, at);
+  if (kind == "link-drop") f.kind = control::FaultKind::link_drop;
+  else if (kind == "link-stall") f.kind = control::FaultKind::link_stall;
+  else if (kind == "modbus-exception") f.kind = control::FaultKind::modbus_exception;
+  else if (kind == "crc-error") f.kind = control::FaultKind::crc_error;
+  else {
+    error = "--fault: unknown kind \"" + kind +
+            "\" (expected link-drop, link-stall, modbus-exception or crc-error)";
+    return false;
+  }
+  if (f.kind == control::FaultKind::crc_error && !rtu) {
+    error = "--fault: crc-error needs --link modbus-rtu (TCP frames carry no CRC)";
+    return false;
+  }
+  if (at == std::string::npos) {
+    error = "--fault: expected KIND@SECONDS[:DURATION], got \"" + text + "\"";
+    return false;
+  }
+  const std::string rest = text.substr(at + 1);
+  const std::size_t colon = rest.find(':');
+  if (!parse_number("--fault", rest.substr(0, colon), true, f.at_s, error)) return false;
+  if (colon != std::string::npos &&
+      !parse_number("--fault", rest.substr(colon + 1), false, f.duration_s, error))
+    return false;
+  return true;
+}
+
+}  // namespace
+
+int run_sim(const SimOptions& opts) {
+  return run_sim_with(opts, [](std::string& why_not) {
+    return sim::make_motion_executor({}, why_not);
+  });
+}
+
+int run_sim_with(const SimOptions& opts, const ExecutorFactory& make_executor) {
+  std::string error;
+  if (opts.link != "modbus-tcp" && opts.link != "modbus-rtu")
+    return usage_error("--link: unknown link \"" + opts.link + "\" (expected modbus-tcp or modbus-rtu)");
+  const bool rtu = opts.link == "modbus-rtu";
+  if (opts.criterion != "vertex")
+    return usage_error("--criterion: \"" + opts.criterion + "\" is not supported (only vertex is implemented)");
+  double tol = 0.0, feed = 0.0, speed = 0.0, link_timeout = 0.0;
+  if (!parse_number("--tol", opts.tol, false, tol, error) ||
+      !parse_number("--feed", opts.feed, false, feed, error) ||
+      !parse_number("--speed", opts.speed, true, speed, error) ||
+      !parse_number("--link-timeout", opts.link_timeout, false, link_timeout, error))
+    return usage_error(error);
+  control::SimJob job;
+  for (const std::string& text : opts.faults) {
+    control::ScheduledFault f;
+    if (!parse_fault(text, rtu, f, error)) return usage_error(error);
+    job.faults.push_back(f);
+  }
+  const io::PointFile in = io::read_points(opts.file);
+  if (!in.ok) {
+    std::fprintf(stderr, "%s\n", io::describe_error(in).c_str());
+    return kExitUsage;
+  }
+  const std::size_t n = in.points.size();
+  io::FitStorage storage(n);
+  const Span<const Vec2<double>> pts(in.points.data(), n);
+  const Result<fit::Fit<double>> r =
+      fit::fit_min_count(pts, tol, fit::Method::optimal, storage.workspace(), storage.pieces());
+  if (!r.ok()) {
+    std::fprintf(stderr, "kerf: %s: fit failed: %s\n", in.file.c_str(), to_string(r.status()));
+    return r.status() == Status::invalid_argument || r.status() == Status::degenerate ? kExitUsage
+                                                                                       : kExitFailure;
+  }
+  std::vector<fit::Piece<double>> pieces;
+  for (std::uint32_t k = 0; k < r.value().pieces; ++k) {
+    const fit::Piece<double>& p = storage.piece(k);
+    pieces.push_back(p);
+    hal::SegmentCommand c;
+    c.seq = k + 1;
+    c.kind = p.segment.kind;
+    c.end = p.segment.end;
+    c.centre = p.segment.centre;
+    c.dir = p.segment.dir;
+    c.feed = feed / 60.0;  // mm/min -> mm/s, the wire's unit
+    c.torch = true;
+    job.segments.push_back(c);
+  }
+  job.rtu = rtu;
+  job.start = in.points.front();
+  job.speed = speed;
+  job.link_timeout_s = link_timeout;
+  std::string why_not;
+  std::unique_ptr<sim::SegmentExecutor> exec = make_executor(why_not);
+  if (!exec) {
+    std::fprintf(stderr, "kerf: sim: %s\n", why_not.c_str());
+    return kExitFailure;
+  }
+
+  const control::SimJobResult res = control::run_sim_job(job, std::move(exec));
+  if (!res.setup_error.empty()) {
+    std::fprintf(stderr, "kerf: sim: cannot start the simulated board: %s\n", res.setup_error.c_str());
+    return kExitFailure;
+  }
+  const io::SimSummary sum = io::summarise(res, pieces, opts.link);
+  if (!opts.trace.empty() && !io::write_file_atomically(opts.trace, io::format_trace_csv(res.trace))) {
+    std::fprintf(stderr, "kerf: --trace: cannot write %s: %s\n", opts.trace.c_str(), std::strerror(errno));
+    return kExitFailure;
+  }
+  if (!opts.report.empty() && !io::write_file_atomically(opts.report, io::format_sim_json(sum))) {
+    std::fprintf(stderr, "kerf: --report: cannot write %s: %s\n", opts.report.c_str(), std::strerror(errno));
+    return kExitFailure;
+  }
+  std::fputs(io::format_sim_summary(sum).c_str(), stdout);
+  if (!res.stream.ok) {
+    std::fprintf(stderr, "kerf: sim: stopped after segment %u: %s\n", sum.last_executed, sum.fault.c_str());
+    return kExitFailure;
+  }
+  return kExitOk;
+}
+
+}  // namespace kerf::cli

@@ -1,0 +1,70 @@
+// kerf's motion-board register map (see hal/modbus/REGISTERS.md). Shared by
+// the host-side client and the simulated board so the two cannot drift.
+// 32-bit values span two registers, high word first.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+
+#include "kerf/hal/segment_link.hpp"
+
+namespace kerf::hal::modbus_map {
+
+inline constexpr std::uint16_t kMapVersion = 1;
+inline constexpr int kDefaultUnit = 17;
+
+// Status block: holding registers 0..15, read-only.
+inline constexpr int kStatusAddr = 0;
+inline constexpr int kStatusRegs = 16;
+// Command register, written with FC06.
+inline constexpr int kCommandAddr = 32;
+// Segment slots: k consecutive slots written in one FC16/FC23 queue k segments.
+inline constexpr int kSlotAddr = 64;
+inline constexpr int kSlotRegs = 16;
+inline constexpr int kMaxSlotsPerWrite = 7;  // 112 registers; FC23 allows 121
+inline constexpr int kMapRegs = kSlotAddr + kSlotRegs * kMaxSlotsPerWrite;
+
+// Offsets inside the status block.
+enum StatusReg : int {
+  kRegVersion = 0, kRegState = 1, kRegCredit = 2, kRegFaults = 3,
+  kRegLastAccepted = 4, kRegExecuting = 6, kRegLastExecuted = 8,
+  kRegPosX = 10, kRegPosY = 12, kRegTorch = 14, kRegDuplicates = 15,
+};
+// Offsets inside a slot.
+enum SlotReg : int {
+  kSlotSeq = 0, kSlotKind = 2, kSlotDir = 3, kSlotEndX = 4, kSlotEndY = 6,
+  kSlotCentreX = 8, kSlotCentreY = 10, kSlotFeed = 12, kSlotFlags = 14, kSlotReserved = 15,
+};
+inline constexpr std::uint16_t kFlagTorch = 1;
+
+// Lengths travel as micrometres, feed as micrometres per second.
+inline constexpr double kUnitsPerMm = 1000.0;
+
+inline void put32(std::uint16_t* r, std::uint32_t v) {
+  r[0] = static_cast<std::uint16_t>(v >> 16);
+  r[1] = static_cast<std::uint16_t>(v & 0xFFFFu);
+}
+inline std::uint32_t get32(const std::uint16_t* r) {
+  return (static_cast<std::uint32_t>(r[0]) << 16) | r[1];
+}
+inline std::int32_t get_i32(const std::uint16_t* r) { return static_cast<std::int32_t>(get32(r)); }
+
+// mm -> integer micrometres; false when it does not fit in 32 bits.
+inline bool to_units(double mm, std::int32_t& out) {
+  const double u = std::nearbyint(mm * kUnitsPerMm);
+  if (!(u >= -2147483647.0 && u <= 2147483647.0)) return false;
+  out = static_cast<std::int32_t>(u);
+  return true;
+}
+inline double to_mm(std::int32_t units) { return units / kUnitsPerMm; }
+
+// Fills one slot; false when a value is out of range.
+bool encode_slot(const SegmentCommand& s, std::uint16_t* slot);
+// Reads one slot; false (with a reason) when it is not a valid segment.
+bool decode_slot(const std::uint16_t* slot, SegmentCommand& s, const char*& reason);
+
+void encode_status(const BoardStatus& st, std::uint16_t* regs);
+// false when the block is not this map's (version, state out of range).
+bool decode_status(const std::uint16_t* regs, BoardStatus& st);
+
+}  // namespace kerf::hal::modbus_map

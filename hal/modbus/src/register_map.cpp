@@ -1,0 +1,79 @@
+#include "kerf/hal/modbus/register_map.hpp"
+
+namespace kerf::hal::modbus_map {
+
+bool encode_slot(const SegmentCommand& s, std::uint16_t* slot) {
+  std::int32_t ex = 0, ey = 0, cx = 0, cy = 0, feed = 0;
+  if (!to_units(s.end.x, ex) || !to_units(s.end.y, ey)) return false;
+  if (!to_units(s.centre.x, cx) || !to_units(s.centre.y, cy)) return false;
+  if (!to_units(s.feed, feed) || feed <= 0) return false;
+  put32(slot + kSlotSeq, s.seq);
+  slot[kSlotKind] = s.kind == SegmentKind::arc ? 1 : 0;
+  slot[kSlotDir] = static_cast<std::uint16_t>(static_cast<std::int16_t>(s.dir));
+  put32(slot + kSlotEndX, static_cast<std::uint32_t>(ex));
+  put32(slot + kSlotEndY, static_cast<std::uint32_t>(ey));
+  put32(slot + kSlotCentreX, static_cast<std::uint32_t>(cx));
+  put32(slot + kSlotCentreY, static_cast<std::uint32_t>(cy));
+  put32(slot + kSlotFeed, static_cast<std::uint32_t>(feed));
+  slot[kSlotFlags] = s.torch ? kFlagTorch : 0;
+  slot[kSlotReserved] = 0;
+  return true;
+}
+
+bool decode_slot(const std::uint16_t* slot, SegmentCommand& s, const char*& reason) {
+  s.seq = get32(slot + kSlotSeq);
+  const std::uint16_t kind = slot[kSlotKind];
+  const auto dir = static_cast<std::int16_t>(slot[kSlotDir]);
+  const std::int32_t feed = get_i32(slot + kSlotFeed);
+  if (s.seq == 0) { reason = "sequence number 0"; return false; }
+  if (kind > 1) { reason = "unknown segment type"; return false; }
+  if (kind == 1 && dir != 1 && dir != -1) { reason = "arc direction not +1/-1"; return false; }
+  if (kind == 0 && dir != 0) { reason = "line with a direction"; return false; }
+  if (feed <= 0) { reason = "feed <= 0"; return false; }
+  if ((slot[kSlotFlags] & ~kFlagTorch) != 0 || slot[kSlotReserved] != 0) {
+    reason = "reserved bits set";
+    return false;
+  }
+  s.kind = kind == 1 ? SegmentKind::arc : SegmentKind::line;
+  s.dir = static_cast<std::int8_t>(dir);
+  s.end = {to_mm(get_i32(slot + kSlotEndX)), to_mm(get_i32(slot + kSlotEndY))};
+  s.centre = {to_mm(get_i32(slot + kSlotCentreX)), to_mm(get_i32(slot + kSlotCentreY))};
+  s.feed = to_mm(feed);
+  s.torch = (slot[kSlotFlags] & kFlagTorch) != 0;
+  return true;
+}
+
+void encode_status(const BoardStatus& st, std::uint16_t* r) {
+  std::int32_t x = 0, y = 0;
+  to_units(st.position.x, x);
+  to_units(st.position.y, y);
+  r[kRegVersion] = kMapVersion;
+  r[kRegState] = static_cast<std::uint16_t>(st.state);
+  r[kRegCredit] = st.credit;
+  r[kRegFaults] = st.faults;
+  put32(r + kRegLastAccepted, st.last_accepted);
+  put32(r + kRegExecuting, st.executing);
+  put32(r + kRegLastExecuted, st.last_executed);
+  put32(r + kRegPosX, static_cast<std::uint32_t>(x));
+  put32(r + kRegPosY, static_cast<std::uint32_t>(y));
+  r[kRegTorch] = st.torch ? 1 : 0;
+  r[kRegDuplicates] = st.duplicates;
+}
+
+bool decode_status(const std::uint16_t* r, BoardStatus& st) {
+  if (r[kRegVersion] != kMapVersion) return false;
+  if (r[kRegState] > static_cast<std::uint16_t>(BoardState::fault)) return false;
+  if (r[kRegTorch] > 1) return false;
+  st.state = static_cast<BoardState>(r[kRegState]);
+  st.credit = r[kRegCredit];
+  st.faults = r[kRegFaults];
+  st.last_accepted = get32(r + kRegLastAccepted);
+  st.executing = get32(r + kRegExecuting);
+  st.last_executed = get32(r + kRegLastExecuted);
+  st.position = {to_mm(get_i32(r + kRegPosX)), to_mm(get_i32(r + kRegPosY))};
+  st.torch = r[kRegTorch] == 1;
+  st.duplicates = r[kRegDuplicates];
+  return true;
+}
+
+}  // namespace kerf::hal::modbus_map

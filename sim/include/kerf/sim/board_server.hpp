@@ -1,0 +1,83 @@
+// The simulated motion board's Modbus side: a libmodbus server thread that
+// implements kerf's register map (hal/modbus/REGISTERS.md) on top of a
+// MotionBoard. It listens on an ephemeral 127.0.0.1 TCP port, or as RTU on
+// the master side of a fresh pseudo-terminal whose slave path the host opens.
+// Faults are injected through the methods below, never through register values.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+
+#include "kerf/sim/motion_board.hpp"
+
+typedef struct _modbus modbus_t;  // NOLINT: libmodbus's own declaration
+
+namespace kerf::sim {
+
+struct ServerConfig {
+  enum class Transport : std::uint8_t { tcp, rtu };
+  Transport transport = Transport::tcp;
+  int unit = 17;
+  // The board stops safely (torch off, fault) when no request arrives for
+  // this long while it runs; 0 disables the watchdog.
+  double watchdog_s = 0.0;
+};
+
+class BoardServer {
+ public:
+  // Starts the server thread; null with `error` set on failure. The returned
+  // server is listening (TCP) or the pty exists (RTU) before this returns.
+  static std::unique_ptr<BoardServer> start(MotionBoard& board, const ServerConfig& cfg,
+                                            std::string& error);
+  ~BoardServer();
+  BoardServer(const BoardServer&) = delete;
+  BoardServer& operator=(const BoardServer&) = delete;
+
+  int port() const { return port_; }                    // TCP
+  const std::string& device() const { return device_; } // RTU: the pty slave to open
+
+  // Fault injection (wall-clock durations, counts of requests).
+  void drop_link(double seconds);  // TCP: close the connection, accept none for a while; RTU: the line goes dead
+  void stall(double seconds);      // read requests, answer none
+  void exception_replies(int count, int code);  // answer the next requests with an exception
+  void delay_replies(int count, double seconds);
+  void corrupt_crc(int count);     // RTU: flip the CRC of the next replies
+  void wrong_unit(int count);      // the next replies carry another unit id
+  void short_replies(int count);   // the next read replies carry one register too few
+
+  std::uint64_t requests() const { return requests_.load(); }
+
+ private:
+  BoardServer(MotionBoard& board, const ServerConfig& cfg);
+  void run();
+  void serve_one(int fd);
+  void handle(const std::uint8_t* q, int len, int fd);
+  void send_reply(const std::uint8_t* q, int len, int fd, int exception_code);
+  bool wait_or_stop(double seconds);  // false when asked to stop
+  double now() const;
+
+  MotionBoard& board_;
+  ServerConfig cfg_;
+  modbus_t* ctx_ = nullptr;
+  void* mapping_ = nullptr;  // modbus_mapping_t
+  int listen_fd_ = -1, client_fd_ = -1;
+  int pty_master_ = -1, pty_slave_ = -1;
+  int stop_pipe_[2] = {-1, -1};
+  int capture_pipe_[2] = {-1, -1};  // reply bytes to mutate before sending
+  int port_ = 0;
+  std::string device_;
+  std::thread thread_;
+  std::atomic<std::uint64_t> requests_{0};
+  double last_request_ = 0.0;
+
+  std::mutex fault_mu_;
+  double drop_until_ = 0.0, stall_until_ = 0.0;
+  int exceptions_ = 0, exception_code_ = 0, delays_ = 0, crc_ = 0, wrong_unit_ = 0, short_ = 0;
+  double delay_s_ = 0.0;
+};
+
+}  // namespace kerf::sim

@@ -1,0 +1,102 @@
+// The simulated motion board's state: a bounded segment queue fed by
+// sequence number, the command state machine, and a servo loop that runs the
+// queue through a SegmentExecutor and records the executed trace. The
+// libmodbus side lives in board_server.hpp. Thread-safe: the server thread,
+// the servo thread and test code all call in.
+#pragma once
+
+#include <condition_variable>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+#include "kerf/hal/segment_link.hpp"
+#include "kerf/sim/segment_executor.hpp"
+
+namespace kerf::sim {
+
+struct TraceSample {
+  double t_s;
+  Vec2<double> pos;
+  std::uint32_t seq;  // segment being executed, 0 when idle
+  bool torch;
+};
+
+struct BoardConfig {
+  std::uint16_t capacity = 32;    // queue slots
+  double servo_period_s = 0.001;  // simulated time per tick
+  Vec2<double> start{};           // position at power-up (mm)
+  std::size_t trace_reserve = 0;  // samples to reserve up front
+};
+
+enum class Accept : std::uint8_t { queued, duplicate, gap, full, invalid };
+
+class MotionBoard {
+ public:
+  MotionBoard(const BoardConfig& cfg, std::unique_ptr<SegmentExecutor> executor);
+  ~MotionBoard();
+  MotionBoard(const MotionBoard&) = delete;
+  MotionBoard& operator=(const MotionBoard&) = delete;
+
+  // Protocol side.
+  Accept accept(const hal::SegmentCommand& seg);
+  bool command(std::uint16_t code);  // false: unknown code or not allowed now
+  hal::BoardStatus status() const;
+  void link_lost();                  // the server's watchdog: stop safely
+
+  // Servo side: one tick by hand (tests), or a thread.
+  void tick();
+  // speed 0: as fast as possible; otherwise simulated seconds per wall second.
+  void start_servo(double speed);
+  void stop_servo();
+
+  // Blocks until pred(status) holds or the wall-clock deadline passes.
+  bool wait_until(const std::function<bool(const hal::BoardStatus&)>& pred, double timeout_s);
+
+  // Blocks until simulated time reaches t_s, the board stops (done or fault)
+  // or cancel() is called; true when t_s was reached.
+  bool wait_sim_time(double t_s);
+  void cancel_waits();
+
+  std::vector<TraceSample> trace() const;
+  std::vector<std::uint32_t> executed() const;  // sequence numbers, in execution order
+  double sim_time() const;
+
+ private:
+  bool has_work_locked() const;
+  void tick_locked();
+  void fault_locked(std::uint16_t bit);
+  hal::BoardStatus status_locked() const;
+  void servo_loop(double speed);
+
+  BoardConfig cfg_;
+  std::unique_ptr<SegmentExecutor> exec_;
+  mutable std::mutex mu_;
+  std::condition_variable changed_;
+  std::vector<hal::SegmentCommand> ring_;
+  std::size_t head_ = 0, count_ = 0;
+  hal::BoardState state_ = hal::BoardState::idle;
+  std::uint16_t faults_ = 0;
+  std::uint32_t last_accepted_ = 0, executing_ = 0, last_executed_ = 0;
+  std::uint16_t duplicates_ = 0;
+  std::uint32_t dropped_through_ = 0;  // sequence numbers up to here were dropped by a fault
+  bool finish_ = false;
+  bool torch_ = false;
+  bool exec_busy_ = false;      // the executor is moving or has segments
+  bool exec_moving_ = false;    // it travelled in the last period
+  Vec2<double> pos_{};
+  Vec2<double> tail_end_{};     // where the last segment given to the executor ends
+  std::vector<std::uint8_t> torch_of_;  // torch flag by sequence number, modulo its size
+  std::uint64_t ticks_ = 0;
+  std::vector<TraceSample> trace_;
+  std::vector<std::uint32_t> executed_;
+  std::thread servo_;
+  bool servo_stop_ = false;
+  bool realtime_ = true;  // false: the servo thread runs as fast as possible
+  bool cancel_waits_ = false;
+};
+
+}  // namespace kerf::sim
