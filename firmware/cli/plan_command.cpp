@@ -83,7 +83,8 @@ CLI::App* add_plan_command(CLI::App& app, PlanOptions& opts) {
       "plan", "Fit the points, then run the constant-feed interpolator and write its trace");
   plan->add_option("--tol", opts.tol, "Largest distance of a point from its piece (> 0)")
       ->type_name("EPS");
-  plan->add_option("--criterion", opts.criterion, "Error criterion (only: vertex)")
+  plan->add_option("--criterion", opts.criterion,
+                   "vertex (points within tol of their arc) or band (the whole arc within tol)")
       ->type_name("NAME")
       ->capture_default_str();
   plan->add_option("--feed", opts.feed, "Programmed feed, mm/min")->type_name("MM_PER_MIN");
@@ -111,8 +112,8 @@ int run_plan(const PlanOptions& opts) {
   double tol = 0, feed = 0, period = 0, accel = 0, corner = 0, cpm = 0;
   if (!parse_number("--tol", opts.tol, false, tol, error)) return usage_error(error);
   if (!criterion_supported(opts.criterion))
-    return usage_error("--criterion: \"" + opts.criterion +
-                       "\" is not supported (only vertex is implemented)");
+    return usage_error("--criterion: unknown criterion \"" + opts.criterion +
+                       "\" (expected vertex or band)");
   if (!parse_number("--feed", opts.feed, false, feed, error) ||
       !parse_number("--period", opts.period, false, period, error) ||
       !parse_number("--accel", opts.accel, false, accel, error) ||
@@ -130,8 +131,13 @@ int run_plan(const PlanOptions& opts) {
     std::fprintf(stderr, "%s\n", io::describe_error(in).c_str());
     return kExitUsage;
   }
+  if (!in.tols.empty() && opts.criterion != "band") {
+    std::fprintf(stderr, "%s:%zu: a third column (per-point tol) needs --criterion band\n",
+                 in.file.c_str(), in.point_lines[0]);
+    return kExitUsage;
+  }
   std::vector<Segment<double>> path;
-  if (!fit_path(in.points, tol, opts.criterion, path, error)) {
+  if (!fit_path(in.points, in.tols, tol, opts.criterion, path, error)) {
     std::fprintf(stderr, "kerf: %s: %s\n", in.file.c_str(), error.c_str());
     return kExitFailure;
   }

@@ -5,9 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "cli/check_fit.hpp"
-#include "io/fit_storage.hpp"
-#include "kerf/fit/fit.hpp"
+#include "cli/fit_job.hpp"
 
 namespace kerf::cli {
 
@@ -22,33 +20,13 @@ void append_mm(std::string& out, double v) {
 
 }  // namespace
 
-bool criterion_supported(const std::string& criterion) {
-  return criterion == "vertex";  // "band" and "biarc" come with the fitters that implement them
-}
-
-bool fit_path(const std::vector<Vec2<double>>& pts, double tol, const std::string& criterion,
-              std::vector<Segment<double>>& out, std::string& error) {
-  if (!criterion_supported(criterion)) {
-    error = "--criterion: \"" + criterion + "\" is not supported (only vertex is implemented)";
-    return false;
-  }
-  const std::size_t n = pts.size();
-  io::FitStorage storage(n);
-  const Span<const Vec2<double>> points(pts.data(), n);
-  const Span<fit::Piece<double>> dst = storage.pieces();
-  const Result<fit::Fit<double>> r =
-      fit::fit_min_count(points, tol, fit::Method::optimal, storage.workspace(), dst);
-  if (!r.ok()) {
-    error = std::string("fit failed: ") + to_string(r.status());
-    return false;
-  }
-  const Span<const fit::Piece<double>> fitted(dst.data(), r.value().pieces);
-  if (const std::string bad = check_fit(points, fitted, r.value().tol); !bad.empty()) {
-    error = "internal error: the fit fails its own check (" + bad + ")";
-    return false;
-  }
+bool fit_path(const std::vector<Vec2<double>>& pts, const std::vector<double>& tols, double tol,
+              const std::string& criterion, std::vector<Segment<double>>& out, std::string& error) {
+  std::vector<fit::Piece<double>> pieces;
+  Status status = Status::ok;
+  if (!fit_job(pts, tols, tol, criterion, pieces, error, status)) return false;
   out.clear();
-  for (const fit::Piece<double>& p : fitted) out.push_back(p.segment);
+  for (const fit::Piece<double>& p : pieces) out.push_back(p.segment);
   return true;
 }
 

@@ -6,19 +6,17 @@
 #include <string>
 #include <vector>
 
+#include "cli/fit_job.hpp"
 #include "kerf/geom/segment.hpp"
 #include "kerf/motion/interpolator.hpp"
 
 namespace kerf::cli {
 
-// The criteria fit_path knows. Checked before the input is read.
-bool criterion_supported(const std::string& criterion);
-
-// Fits the points into segments with the named criterion (only "vertex" so
-// far: the minimal vertex fit, method optimal). On failure, returns false and
-// sets error to a message without the "kerf: " prefix.
-bool fit_path(const std::vector<Vec2<double>>& pts, double tol, const std::string& criterion,
-              std::vector<Segment<double>>& out, std::string& error);
+// Fits the points (tols: the file's per-point column, or empty) into
+// segments with the named criterion (cli/fit_job.hpp). On failure, returns
+// false and sets error to a message without the "kerf: " prefix.
+bool fit_path(const std::vector<Vec2<double>>& pts, const std::vector<double>& tols, double tol,
+              const std::string& criterion, std::vector<Segment<double>>& out, std::string& error);
 
 // What the run measured from its own setpoints.
 struct PlanSummary {

@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "cli/fit_command.hpp"
+#include "cli/fit_job.hpp"
 #include "control/sim_job.hpp"
 #include "io/fit_storage.hpp"
 #include "io/point_file.hpp"
@@ -85,8 +86,8 @@ int run_sim_with(const SimOptions& opts, const ExecutorFactory& make_executor) {
   if (opts.link != "modbus-tcp" && opts.link != "modbus-rtu")
     return usage_error("--link: unknown link \"" + opts.link + "\" (expected modbus-tcp or modbus-rtu)");
   const bool rtu = opts.link == "modbus-rtu";
-  if (opts.criterion != "vertex")
-    return usage_error("--criterion: \"" + opts.criterion + "\" is not supported (only vertex is implemented)");
+  if (!criterion_supported(opts.criterion))
+    return usage_error("--criterion: unknown criterion \"" + opts.criterion + "\" (expected vertex or band)");
   double tol = 0.0, feed = 0.0, speed = 0.0, link_timeout = 0.0;
   if (!parse_number("--tol", opts.tol, false, tol, error) ||
       !parse_number("--feed", opts.feed, false, feed, error) ||
@@ -104,20 +105,21 @@ int run_sim_with(const SimOptions& opts, const ExecutorFactory& make_executor) {
     std::fprintf(stderr, "%s\n", io::describe_error(in).c_str());
     return kExitUsage;
   }
-  const std::size_t n = in.points.size();
-  io::FitStorage storage(n);
-  const Span<const Vec2<double>> pts(in.points.data(), n);
-  const Result<fit::Fit<double>> r =
-      fit::fit_min_count(pts, tol, fit::Method::optimal, storage.workspace(), storage.pieces());
-  if (!r.ok()) {
-    std::fprintf(stderr, "kerf: %s: fit failed: %s\n", in.file.c_str(), to_string(r.status()));
-    return r.status() == Status::invalid_argument || r.status() == Status::degenerate ? kExitUsage
-                                                                                       : kExitFailure;
+  if (!in.tols.empty() && opts.criterion != "band") {
+    std::fprintf(stderr, "%s:%zu: a third column (per-point tol) needs --criterion band\n",
+                 in.file.c_str(), in.point_lines[0]);
+    return kExitUsage;
   }
-  std::vector<fit::Piece<double>> pieces;
-  for (std::uint32_t k = 0; k < r.value().pieces; ++k) {
-    const fit::Piece<double>& p = storage.piece(k);
-    pieces.push_back(p);
+  std::vector<fit::Piece<double>> fitted;
+  Status fit_status = Status::ok;
+  if (!fit_job(in.points, in.tols, tol, opts.criterion, fitted, error, fit_status)) {
+    std::fprintf(stderr, "kerf: %s: %s\n", in.file.c_str(), error.c_str());
+    return fit_status == Status::invalid_argument || fit_status == Status::degenerate ? kExitUsage
+                                                                                     : kExitFailure;
+  }
+  const std::vector<fit::Piece<double>>& pieces = fitted;
+  for (std::uint32_t k = 0; k < pieces.size(); ++k) {
+    const fit::Piece<double>& p = pieces[k];
     hal::SegmentCommand c;
     c.seq = k + 1;
     c.kind = p.segment.kind;

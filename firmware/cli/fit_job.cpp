@@ -1,0 +1,66 @@
+#include "cli/fit_job.hpp"
+
+#include "cli/check_fit.hpp"
+
+#include <algorithm>
+#include "io/band_storage.hpp"
+#include "io/fit_storage.hpp"
+#include "kerf/fit/band_fit.hpp"
+
+namespace kerf::cli {
+
+bool criterion_supported(const std::string& criterion) {
+  return criterion == "vertex" || criterion == "band";
+}
+
+bool fit_job(const std::vector<Vec2<double>>& pts, const std::vector<double>& tols, double tol,
+             const std::string& criterion, std::vector<fit::Piece<double>>& out,
+             std::string& error, Status& status) {
+  status = Status::invalid_argument;
+  if (!criterion_supported(criterion)) {
+    error = "--criterion: unknown criterion \"" + criterion + "\" (expected vertex or band)";
+    return false;
+  }
+  const bool band = criterion == "band";
+  if (!band && !tols.empty()) {
+    error = "a third column (per-point tol) needs --criterion band";
+    return false;
+  }
+  const std::size_t n = pts.size();
+  const Span<const Vec2<double>> points(pts.data(), n);
+  std::vector<fit::Piece<double>> pieces(n > 1 ? n - 1 : 1);
+  const Span<fit::Piece<double>> dst(pieces.data(), pieces.size());
+  Result<fit::Fit<double>> r = Status::invalid_argument;
+  double check_tol = tol;
+  if (band) {
+    std::vector<fit::BandWidth<double>> widths(n, {tol, tol});
+    for (std::size_t k = 0; k < tols.size() && k < n; ++k) {
+      widths[k] = {tols[k], tols[k]};
+      check_tol = k == 0 ? tols[k] : std::max(check_tol, tols[k]);
+    }
+    io::BandStorage storage(n);
+    r = fit::fit_band_min_count(points, Span<const fit::BandWidth<double>>(widths.data(), n),
+                                storage.workspace(), dst);
+  } else {
+    io::FitStorage storage(n);
+    r = fit::fit_min_count(points, tol, fit::Method::optimal, storage.workspace(), dst);
+  }
+  if (!r.ok()) {
+    status = r.status();
+    error = std::string("fit failed: ") + to_string(r.status());
+    return false;
+  }
+  // A band piece crosses each inner point's gate, so it passes within the
+  // widest width of every inner point: the vertex check applies to it too.
+  const Span<const fit::Piece<double>> fitted(dst.data(), r.value().pieces);
+  if (const std::string bad = check_fit(points, fitted, check_tol); !bad.empty()) {
+    status = Status::infeasible;
+    error = "internal error: the fit fails its own check (" + bad + ")";
+    return false;
+  }
+  out.assign(fitted.begin(), fitted.end());
+  status = Status::ok;
+  return true;
+}
+
+}  // namespace kerf::cli
