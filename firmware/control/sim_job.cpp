@@ -2,6 +2,7 @@
 
 #include <modbus/modbus.h>
 
+#include <algorithm>
 #include <chrono>
 #include <thread>
 
@@ -54,7 +55,9 @@ SimJobResult run_sim_job(const SimJob& job, std::unique_ptr<sim::SegmentExecutor
   lc.transport = job.rtu ? hal::ModbusConfig::Transport::rtu : hal::ModbusConfig::Transport::tcp;
   lc.port = server->port();
   lc.device = server->device();
-  lc.response_timeout_s = 0.05;
+  // Well above a loopback round trip even on a loaded machine, and short
+  // against the link timeout so that several resends fit in it.
+  lc.response_timeout_s = std::min(0.2, job.link_timeout_s / 4.0);
   auto link = hal::ModbusSegmentLink::open(lc, res.setup_error);
   if (!link) return res;
 

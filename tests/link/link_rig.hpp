@@ -22,10 +22,20 @@ inline const char* wire_name(const ::testing::TestParamInfo<Wire>& info) {
 
 struct RigOptions {
   std::uint16_t capacity = 16;
-  double response_timeout_s = 0.05;
+  // Long enough that a loaded machine (or ASan) never times out by itself,
+  // so tests that count resends exactly see only the injected faults.
+  double response_timeout_s = 0.5;
   int retries = 3;
   double watchdog_s = 0.0;
 };
+
+// For tests whose faults must run into the response timeout; they only
+// assert lower bounds on resends.
+inline RigOptions fast_timeouts() {
+  RigOptions o;
+  o.response_timeout_s = 0.05;
+  return o;
+}
 
 struct LinkRig {
   std::unique_ptr<sim::MotionBoard> board;

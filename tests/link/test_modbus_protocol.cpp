@@ -126,7 +126,7 @@ TEST_P(ModbusProtocol, CommandsDriveTheStateMachine) {
 }
 
 TEST_P(ModbusProtocol, WrongUnitIdReplyIsRefused) {
-  LinkRig rig(GetParam());
+  LinkRig rig(GetParam(), fast_timeouts());
   rig.server->wrong_unit(100);
   hal::BoardStatus st;
   const LinkError e = rig.link->status(st);
@@ -137,7 +137,7 @@ TEST_P(ModbusProtocol, WrongUnitIdReplyIsRefused) {
 }
 
 TEST_P(ModbusProtocol, ShortReplyIsRefused) {
-  LinkRig rig(GetParam());
+  LinkRig rig(GetParam(), fast_timeouts());
   rig.server->short_replies(100);
   hal::BoardStatus st;
   EXPECT_NE(rig.link->status(st), LinkError::none);
@@ -166,7 +166,7 @@ TEST_P(ModbusProtocol, BusyExceptionIsRetried) {
 }
 
 TEST_P(ModbusProtocol, LateReplyIsFlushedAndTheResendIsDropped) {
-  LinkRig rig(GetParam());
+  LinkRig rig(GetParam(), fast_timeouts());
   rig.server->delay_replies(1, 0.15);  // three response timeouts
   hal::BoardStatus st;
   ASSERT_EQ(rig.link->push(line_to(1), st), LinkError::none) << rig.link->last_error();
@@ -178,7 +178,9 @@ TEST_P(ModbusProtocol, LateReplyIsFlushedAndTheResendIsDropped) {
 }
 
 TEST(ModbusRtu, CorruptCrcIsRefusedThenResent) {
-  LinkRig rig(Wire::rtu);
+  RigOptions opt;
+  opt.response_timeout_s = 0.2;
+  LinkRig rig(Wire::rtu, opt);
   rig.server->corrupt_crc(1);
   hal::BoardStatus st;
   ASSERT_EQ(rig.link->push(line_to(1), st), LinkError::none) << rig.link->last_error();

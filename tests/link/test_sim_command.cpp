@@ -107,6 +107,7 @@ TEST_P(SimCommand, CleanJobIsExecutedOnceOnThePath) {
 TEST_P(SimCommand, ShortLinkDropIsRidden) {
   cli::SimOptions o = options();
   o.faults = {"link-drop@0.05:0.2", "modbus-exception@0.1"};
+  o.link_timeout = "2";
   ASSERT_EQ(run(o), 0);
   const std::string rep = slurp(o.report);
   EXPECT_NE(rep.find("\"state\": \"done\""), std::string::npos) << rep;

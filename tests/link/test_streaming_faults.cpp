@@ -70,21 +70,21 @@ TEST_P(StreamingFaults, ExceptionRepliesAreRetried) {
 }
 
 TEST_P(StreamingFaults, DelayedRepliesAreResentWithoutRunningTwice) {
-  LinkRig rig(GetParam());
+  LinkRig rig(GetParam(), fast_timeouts());
   const JobRun r = stream_with_fault(rig, 40, [&] { rig.server->delay_replies(3, 0.12); });
   expect_completed_exactly_once(r);
   EXPECT_GE(r.rep.resent, 3u);
 }
 
 TEST_P(StreamingFaults, StallShorterThanTheLinkTimeoutIsRidden) {
-  LinkRig rig(GetParam());
+  LinkRig rig(GetParam(), fast_timeouts());
   const JobRun r = stream_with_fault(rig, 50, [&] { rig.server->stall(0.3); });
   expect_completed_exactly_once(r);
   EXPECT_GE(r.rep.resent, 1u);
 }
 
 TEST_P(StreamingFaults, LinkDropShorterThanTheLinkTimeoutIsRidden) {
-  LinkRig rig(GetParam());
+  LinkRig rig(GetParam(), fast_timeouts());
   const JobRun r = stream_with_fault(rig, 60, [&] { rig.server->drop_link(0.3); });
   expect_completed_exactly_once(r);
   EXPECT_GE(r.rep.resent, 1u);
@@ -95,7 +95,7 @@ TEST_P(StreamingFaults, LinkDropShorterThanTheLinkTimeoutIsRidden) {
 }
 
 TEST_P(StreamingFaults, LinkDownTooLongStopsSafelyAndSaysWhatRan) {
-  RigOptions opt;
+  RigOptions opt = fast_timeouts();
   opt.watchdog_s = 0.2;  // the board stops on its own when the host goes silent
   LinkRig rig(GetParam(), opt);
   const JobRun r = stream_with_fault(rig, 70, [&] { rig.server->drop_link(5.0); }, 0.5);
@@ -116,7 +116,7 @@ TEST_P(StreamingFaults, LinkDownTooLongStopsSafelyAndSaysWhatRan) {
 }
 
 TEST(StreamingFaultsRtu, CorruptCrcIsResentWithoutRunningTwice) {
-  LinkRig rig(Wire::rtu);
+  LinkRig rig(Wire::rtu, fast_timeouts());
   const JobRun r = stream_with_fault(rig, 20, [&] { rig.server->corrupt_crc(3); });
   expect_completed_exactly_once(r);
   EXPECT_GE(r.rep.resent, 3u);
