@@ -10,6 +10,10 @@ std::string quoted(const std::string& s) { return "\"" + s + "\""; }
 
 bool parse_length(const std::string& name, const std::string& text, bool allow_zero, double& out,
                   std::string& error) {
+  if (text.empty()) {
+    error = name + ": required";
+    return false;
+  }
   char* end = nullptr;
   const double v = std::strtod(text.c_str(), &end);
   // strtod skips leading blanks; an option value must not have them either

@@ -9,7 +9,8 @@ namespace kerf::cli {
 
 std::string quoted(const std::string& s);
 
-// A finite number > 0 (allow_zero: >= 0) for option `name`.
+// A finite number > 0 (allow_zero: >= 0) for option `name`, with nothing
+// around it; an empty value is "required".
 bool parse_length(const std::string& name, const std::string& text, bool allow_zero, double& out,
                   std::string& error);
 

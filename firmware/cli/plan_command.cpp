@@ -1,7 +1,6 @@
 #include "cli/plan_command.hpp"
 
 #include <CLI/CLI.hpp>
-#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -10,6 +9,8 @@
 #include <sys/stat.h>
 
 #include "cli/fit_command.hpp"
+#include "cli/options.hpp"
+#include "cli/options.hpp"
 #include "cli/plan_path.hpp"
 #include "io/point_file.hpp"
 
@@ -24,31 +25,10 @@ int usage_error(const std::string& message) {
   return kExitUsage;
 }
 
-// A finite number > 0 (or >= 0 when zero_ok), with nothing around it.
+// The option checks shared by every command (cli/options.hpp).
 bool parse_number(const char* option, const std::string& text, bool zero_ok, double& value,
                   std::string& error) {
-  const std::string name = option;
-  if (text.empty()) {
-    error = name + ": required";
-    return false;
-  }
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  if (std::isspace(static_cast<unsigned char>(text[0])) != 0 ||
-      end != text.c_str() + text.size()) {
-    error = name + ": not a number: \"" + text + "\"";
-    return false;
-  }
-  if (!std::isfinite(v)) {
-    error = name + ": must be finite, got " + text;
-    return false;
-  }
-  if (zero_ok ? !(v >= 0.0) : !(v > 0.0)) {
-    error = name + (zero_ok ? ": must be >= 0, got " : ": must be > 0, got ") + text;
-    return false;
-  }
-  value = v;
-  return true;
+  return parse_length(option, text, zero_ok, value, error);
 }
 
 // Writes all of text to path ("-": stdout); false with errno if any of it failed.

@@ -9,6 +9,7 @@
 
 #include "cli/fit_command.hpp"
 #include "cli/fit_job.hpp"
+#include "cli/options.hpp"
 #include "control/sim_job.hpp"
 #include "io/fit_storage.hpp"
 #include "io/point_file.hpp"
@@ -25,22 +26,10 @@ int usage_error(const std::string& message) {
   return kExitUsage;
 }
 
-// A finite number; > 0, or >= 0 when zero_ok.
+// The option checks shared by every command (cli/options.hpp).
 bool parse_number(const std::string& opt, const std::string& text, bool zero_ok, double& out,
                   std::string& error) {
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  if (text.empty() || std::isspace(static_cast<unsigned char>(text[0])) != 0 ||
-      end != text.c_str() + text.size()) {
-    error = opt + ": not a number: \"" + text + "\"";
-    return false;
-  }
-  if (!std::isfinite(v) || (zero_ok ? v < 0.0 : !(v > 0.0))) {
-    error = opt + ": must be a finite number " + (zero_ok ? ">= 0" : "> 0") + ", got " + text;
-    return false;
-  }
-  out = v;
-  return true;
+  return parse_length(opt, text, zero_ok, out, error);
 }
 
 // KIND@SECONDS[:DURATION]
