@@ -13,6 +13,7 @@
 
 #include "cli/band_widths.hpp"
 #include "cli/check_fit.hpp"
+#include "cli/fit_job.hpp"
 #include "cli/options.hpp"
 #include "io/band_storage.hpp"
 #include "io/fit_output.hpp"
@@ -131,16 +132,8 @@ int run_fit(const FitOptions& opts) {
   double tol = 0.0;
   if (const int rc = check_options(opts, band, method, pieces, tol); rc != kExitOk) return rc;
 
-  const io::PointFile in = io::read_points(opts.file);
-  if (!in.ok) {
-    std::fprintf(stderr, "%s\n", io::describe_error(in).c_str());
-    return kExitUsage;
-  }
-  if (!band && !in.tols.empty()) {
-    std::fprintf(stderr, "%s:%zu: a third column (per-point tol) needs --criterion band\n",
-                 in.file.c_str(), in.point_lines[0]);
-    return kExitUsage;
-  }
+  io::PointFile in;
+  if (!read_job(opts.file, opts.criterion, in)) return kExitUsage;
   std::vector<fit::BandWidth<double>> widths;
   if (band) {
     std::string error;

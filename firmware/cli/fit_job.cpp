@@ -3,6 +3,7 @@
 #include "cli/check_fit.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include "io/band_storage.hpp"
 #include "io/fit_storage.hpp"
 #include "kerf/fit/band_fit.hpp"
@@ -11,6 +12,17 @@ namespace kerf::cli {
 
 bool criterion_supported(const std::string& criterion) {
   return criterion == "vertex" || criterion == "band";
+}
+
+bool read_job(const std::string& file, const std::string& criterion, io::PointFile& out) {
+  out = io::read_points(file);
+  if (out.ok && !out.tols.empty() && criterion != "band") {
+    out.line = out.point_lines.empty() ? 0 : out.point_lines[0];
+    out.reason = "a third column (per-point tol) needs --criterion band";
+    out.ok = false;
+  }
+  if (!out.ok) std::fprintf(stderr, "%s\n", io::describe_error(out).c_str());
+  return out.ok;
 }
 
 bool fit_job(const std::vector<Vec2<double>>& pts, const std::vector<double>& tols, double tol,

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "io/point_file.hpp"
 #include "kerf/core/status.hpp"
 #include "kerf/fit/fit.hpp"
 
@@ -14,6 +15,11 @@ namespace kerf::cli {
 
 // The criteria fit_job knows. Checked before the input is read.
 bool criterion_supported(const std::string& criterion);
+
+// Reads a job's point file ("-": stdin). When it cannot be used (unreadable,
+// bad points, or a per-point tol column the criterion cannot use) prints
+// "FILE:LINE: reason" on stderr and returns false.
+bool read_job(const std::string& file, const std::string& criterion, io::PointFile& out);
 
 // Fits pts (tols: one per point, or empty) at tol. On failure returns false
 // with `error` (no "kerf: " prefix) and `status` set.

@@ -9,6 +9,7 @@
 #include <sys/stat.h>
 
 #include "cli/fit_command.hpp"
+#include "cli/fit_job.hpp"
 #include "cli/options.hpp"
 #include "cli/options.hpp"
 #include "cli/plan_path.hpp"
@@ -106,16 +107,8 @@ int run_plan(const PlanOptions& opts) {
   if (corner > 180) return usage_error("--corner: must be at most 180, got " + opts.corner);
   if (opts.trace.empty()) return usage_error("--trace: required");
 
-  const io::PointFile in = io::read_points(opts.file);
-  if (!in.ok) {
-    std::fprintf(stderr, "%s\n", io::describe_error(in).c_str());
-    return kExitUsage;
-  }
-  if (!in.tols.empty() && opts.criterion != "band") {
-    std::fprintf(stderr, "%s:%zu: a third column (per-point tol) needs --criterion band\n",
-                 in.file.c_str(), in.point_lines[0]);
-    return kExitUsage;
-  }
+  io::PointFile in;
+  if (!read_job(opts.file, opts.criterion, in)) return kExitUsage;
   std::vector<Segment<double>> path;
   if (!fit_path(in.points, in.tols, tol, opts.criterion, path, error)) {
     std::fprintf(stderr, "kerf: %s: %s\n", in.file.c_str(), error.c_str());

@@ -89,16 +89,8 @@ int run_sim_with(const SimOptions& opts, const ExecutorFactory& make_executor) {
     if (!parse_fault(text, rtu, f, error)) return usage_error(error);
     job.faults.push_back(f);
   }
-  const io::PointFile in = io::read_points(opts.file);
-  if (!in.ok) {
-    std::fprintf(stderr, "%s\n", io::describe_error(in).c_str());
-    return kExitUsage;
-  }
-  if (!in.tols.empty() && opts.criterion != "band") {
-    std::fprintf(stderr, "%s:%zu: a third column (per-point tol) needs --criterion band\n",
-                 in.file.c_str(), in.point_lines[0]);
-    return kExitUsage;
-  }
+  io::PointFile in;
+  if (!read_job(opts.file, opts.criterion, in)) return kExitUsage;
   std::vector<fit::Piece<double>> fitted;
   Status fit_status = Status::ok;
   if (!fit_job(in.points, in.tols, tol, opts.criterion, fitted, error, fit_status)) {
