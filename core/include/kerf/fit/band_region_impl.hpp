@@ -37,6 +37,7 @@ void BandRegion<S>::set_vertex(std::uint32_t k, S left, S right) {
   v.barrier = false;
   v.gate_left = left;
   v.gate_right = right;
+  v.split[0] = v.split[1] = 0;  // end vertices have no corner
   if (k == 0) {
     v.b = v_[0].n;
     return;
@@ -73,7 +74,6 @@ void BandRegion<S>::set_vertex(std::uint32_t k, S left, S right) {
   // the centre of each edge's disc, against that disc's offset point.
   const int side = v.turn < 0 ? 1 : -1;
   const S width = side > 0 ? left : right;
-  v.split[0] = v.split[1] = 0;
   if (v.turn != 0 && width > S(0) && w > S(0)) {
     const Vec2<S> end = v.b * (side > 0 ? v.gate_left : -v.gate_right);  // from p_k
     const Vec2<S> e_in = (end - n0 * c) * (S(1) / w);
