@@ -18,6 +18,7 @@
 #include "io/band_storage.hpp"
 #include "io/fit_output.hpp"
 #include "io/fit_storage.hpp"
+#include "io/output_file.hpp"
 #include "io/point_file.hpp"
 #include "kerf/fit/band_fit.hpp"
 #include "kerf/fit/fit.hpp"
@@ -25,11 +26,6 @@
 namespace kerf::cli {
 
 namespace {
-
-int usage_error(const std::string& message) {
-  std::fprintf(stderr, "kerf: %s\n", message.c_str());
-  return kExitUsage;
-}
 
 // "1 piece", "5 pieces".
 std::string count(std::size_t n, const char* one, const char* many) {
@@ -47,11 +43,6 @@ bool parse_method(const std::string& text, fit::Method& method) {
   return true;
 }
 
-// Writes all of `text` to stdout; false (and errno) if any of it failed.
-bool write_stdout(const std::string& text) {
-  const std::size_t n = std::fwrite(text.data(), 1, text.size(), stdout);
-  return std::fflush(stdout) == 0 && n == text.size() && std::ferror(stdout) == 0;
-}
 
 }  // namespace
 
@@ -191,7 +182,7 @@ int run_fit(const FitOptions& opts) {
   report.pieces = fitted;
   report.zero_below = io::resolution(pts);
   const std::string text = opts.format == "json" ? io::format_json(report) : io::format_esgi(report);
-  if (!write_stdout(text)) {
+  if (!io::write_output("-", text)) {
     std::fprintf(stderr, "kerf: cannot write output: %s\n", std::strerror(errno));
     return kExitFailure;
   }

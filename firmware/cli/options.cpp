@@ -2,11 +2,19 @@
 
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
+
+#include "cli/fit_command.hpp"
 
 namespace kerf::cli {
 
 std::string quoted(const std::string& s) { return "\"" + s + "\""; }
+
+int usage_error(const std::string& message) {
+  std::fprintf(stderr, "kerf: %s\n", message.c_str());
+  return kExitUsage;
+}
 
 bool parse_length(const std::string& name, const std::string& text, bool allow_zero, double& out,
                   std::string& error) {

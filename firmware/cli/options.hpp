@@ -9,6 +9,9 @@ namespace kerf::cli {
 
 std::string quoted(const std::string& s);
 
+// Prints "kerf: message" on stderr; returns kExitUsage (2).
+int usage_error(const std::string& message);
+
 // A finite number > 0 (allow_zero: >= 0) for option `name`, with nothing
 // around it; an empty value is "required".
 bool parse_length(const std::string& name, const std::string& text, bool allow_zero, double& out,

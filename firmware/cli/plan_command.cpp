@@ -6,13 +6,13 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <sys/stat.h>
 
 #include "cli/fit_command.hpp"
 #include "cli/fit_job.hpp"
 #include "cli/options.hpp"
 #include "cli/options.hpp"
 #include "cli/plan_path.hpp"
+#include "io/output_file.hpp"
 #include "io/point_file.hpp"
 
 namespace kerf::cli {
@@ -20,42 +20,6 @@ namespace kerf::cli {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-int usage_error(const std::string& message) {
-  std::fprintf(stderr, "kerf: %s\n", message.c_str());
-  return kExitUsage;
-}
-
-// The option checks shared by every command (cli/options.hpp).
-bool parse_number(const char* option, const std::string& text, bool zero_ok, double& value,
-                  std::string& error) {
-  return parse_length(option, text, zero_ok, value, error);
-}
-
-// Writes all of text to path ("-": stdout); false with errno if any of it failed.
-bool write_all(const std::string& path, const std::string& text) {
-  if (path == "-") {
-    const std::size_t n = std::fwrite(text.data(), 1, text.size(), stdout);
-    return std::fflush(stdout) == 0 && n == text.size();
-  }
-  std::FILE* f = std::fopen(path.c_str(), "wb");
-  if (f == nullptr) return false;
-  const std::size_t n = std::fwrite(text.data(), 1, text.size(), f);
-  bool ok = n == text.size() && std::fflush(f) == 0;
-  int why = errno;
-  if (std::fclose(f) != 0 && ok) {
-    ok = false;
-    why = errno;
-  }
-  if (!ok) {
-    struct stat st {};
-    if (::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode))
-      std::remove(path.c_str());  // nothing half-written is left behind
-    errno = why;
-    return false;
-  }
-  return true;
-}
 
 }  // namespace
 
@@ -91,18 +55,18 @@ CLI::App* add_plan_command(CLI::App& app, PlanOptions& opts) {
 int run_plan(const PlanOptions& opts) {
   std::string error;
   double tol = 0, feed = 0, period = 0, accel = 0, corner = 0, cpm = 0;
-  if (!parse_number("--tol", opts.tol, false, tol, error)) return usage_error(error);
+  if (!parse_length("--tol", opts.tol, false, tol, error)) return usage_error(error);
   if (!criterion_supported(opts.criterion))
     return usage_error("--criterion: unknown criterion \"" + opts.criterion +
                        "\" (expected vertex or band)");
-  if (!parse_number("--feed", opts.feed, false, feed, error) ||
-      !parse_number("--period", opts.period, false, period, error) ||
-      !parse_number("--accel", opts.accel, false, accel, error) ||
-      !parse_number("--corner", opts.corner, true, corner, error) ||
-      !parse_number("--counts-per-mm", opts.counts_per_mm, false, cpm, error))
+  if (!parse_length("--feed", opts.feed, false, feed, error) ||
+      !parse_length("--period", opts.period, false, period, error) ||
+      !parse_length("--accel", opts.accel, false, accel, error) ||
+      !parse_length("--corner", opts.corner, true, corner, error) ||
+      !parse_length("--counts-per-mm", opts.counts_per_mm, false, cpm, error))
     return usage_error(error);
   double jerk = 0;
-  if (!opts.jerk.empty() && !parse_number("--jerk", opts.jerk, true, jerk, error))
+  if (!opts.jerk.empty() && !parse_length("--jerk", opts.jerk, true, jerk, error))
     return usage_error(error);
   if (corner > 180) return usage_error("--corner: must be at most 180, got " + opts.corner);
   if (opts.trace.empty()) return usage_error("--trace: required");
@@ -134,7 +98,7 @@ int run_plan(const PlanOptions& opts) {
     std::fprintf(stderr, "kerf: %s: %s\n", in.file.c_str(), error.c_str());
     return kExitFailure;
   }
-  if (!write_all(opts.trace, trace)) {
+  if (!io::write_output(opts.trace, trace)) {
     std::fprintf(stderr, "kerf: --trace: cannot write %s: %s\n", opts.trace.c_str(),
                  std::strerror(errno));
     return kExitFailure;

@@ -19,7 +19,7 @@ struct PlanOptions {
   std::string feed;    // mm/min
   std::string period;  // s
   std::string accel;   // mm/s^2
-  std::string jerk;    // mm/s^3 (S-curve ramps: not implemented yet)
+  std::string jerk;    // mm/s^3; empty or 0: trapezoidal ramps, else S-curves
   std::string corner = "1";  // degrees
   std::string counts_per_mm;
   std::string trace;   // OUT.csv, or - for stdout

@@ -13,6 +13,7 @@
 #include "control/sim_job.hpp"
 #include "io/fit_storage.hpp"
 #include "io/point_file.hpp"
+#include "io/output_file.hpp"
 #include "io/sim_output.hpp"
 #include "kerf/fit/fit.hpp"
 #include "kerf/sim/motion_executor.hpp"
@@ -20,17 +21,6 @@
 namespace kerf::cli {
 
 namespace {
-
-int usage_error(const std::string& message) {
-  std::fprintf(stderr, "kerf: %s\n", message.c_str());
-  return kExitUsage;
-}
-
-// The option checks shared by every command (cli/options.hpp).
-bool parse_number(const std::string& opt, const std::string& text, bool zero_ok, double& out,
-                  std::string& error) {
-  return parse_length(opt, text, zero_ok, out, error);
-}
 
 // KIND@SECONDS[:DURATION]
 bool parse_fault(const std::string& text, bool rtu, control::ScheduledFault& f, std::string& error) {
@@ -55,9 +45,9 @@ bool parse_fault(const std::string& text, bool rtu, control::ScheduledFault& f, 
   }
   const std::string rest = text.substr(at + 1);
   const std::size_t colon = rest.find(':');
-  if (!parse_number("--fault", rest.substr(0, colon), true, f.at_s, error)) return false;
+  if (!parse_length("--fault", rest.substr(0, colon), true, f.at_s, error)) return false;
   if (colon != std::string::npos &&
-      !parse_number("--fault", rest.substr(colon + 1), false, f.duration_s, error))
+      !parse_length("--fault", rest.substr(colon + 1), false, f.duration_s, error))
     return false;
   return true;
 }
@@ -78,10 +68,10 @@ int run_sim_with(const SimOptions& opts, const ExecutorFactory& make_executor) {
   if (!criterion_supported(opts.criterion))
     return usage_error("--criterion: unknown criterion \"" + opts.criterion + "\" (expected vertex or band)");
   double tol = 0.0, feed = 0.0, speed = 0.0, link_timeout = 0.0;
-  if (!parse_number("--tol", opts.tol, false, tol, error) ||
-      !parse_number("--feed", opts.feed, false, feed, error) ||
-      !parse_number("--speed", opts.speed, true, speed, error) ||
-      !parse_number("--link-timeout", opts.link_timeout, false, link_timeout, error))
+  if (!parse_length("--tol", opts.tol, false, tol, error) ||
+      !parse_length("--feed", opts.feed, false, feed, error) ||
+      !parse_length("--speed", opts.speed, true, speed, error) ||
+      !parse_length("--link-timeout", opts.link_timeout, false, link_timeout, error))
     return usage_error(error);
   control::SimJob job;
   for (const std::string& text : opts.faults) {
@@ -128,11 +118,11 @@ int run_sim_with(const SimOptions& opts, const ExecutorFactory& make_executor) {
     return kExitFailure;
   }
   const io::SimSummary sum = io::summarise(res, pieces, opts.link);
-  if (!opts.trace.empty() && !io::write_file_atomically(opts.trace, io::format_trace_csv(res.trace))) {
+  if (!opts.trace.empty() && !io::write_output(opts.trace, io::format_trace_csv(res.trace))) {
     std::fprintf(stderr, "kerf: --trace: cannot write %s: %s\n", opts.trace.c_str(), std::strerror(errno));
     return kExitFailure;
   }
-  if (!opts.report.empty() && !io::write_file_atomically(opts.report, io::format_sim_json(sum))) {
+  if (!opts.report.empty() && !io::write_output(opts.report, io::format_sim_json(sum))) {
     std::fprintf(stderr, "kerf: --report: cannot write %s: %s\n", opts.report.c_str(), std::strerror(errno));
     return kExitFailure;
   }

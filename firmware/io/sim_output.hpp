@@ -34,8 +34,4 @@ std::string format_trace_csv(const std::vector<sim::TraceSample>& trace);
 std::string format_sim_json(const SimSummary& s);
 std::string format_sim_summary(const SimSummary& s);
 
-// Writes text to path through a temporary file and a rename, so a failed
-// run never leaves a half-written file. False with errno on failure.
-bool write_file_atomically(const std::string& path, const std::string& text);
-
 }  // namespace kerf::io
