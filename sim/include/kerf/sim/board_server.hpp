@@ -12,6 +12,7 @@
 #include <string>
 #include <thread>
 
+#include "kerf/hal/modbus/modbus_link.hpp"
 #include "kerf/sim/motion_board.hpp"
 
 typedef struct _modbus modbus_t;  // NOLINT: libmodbus's own declaration
@@ -19,7 +20,7 @@ typedef struct _modbus modbus_t;  // NOLINT: libmodbus's own declaration
 namespace kerf::sim {
 
 struct ServerConfig {
-  enum class Transport : std::uint8_t { tcp, rtu };
+  using Transport = hal::ModbusConfig::Transport;  // the same two as the host's link
   Transport transport = Transport::tcp;
   int unit = 17;
   // The board stops safely (torch off, fault) when no request arrives for
