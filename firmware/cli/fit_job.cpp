@@ -2,7 +2,6 @@
 
 #include "cli/check_fit.hpp"
 
-#include <algorithm>
 #include <cstdio>
 #include "io/band_storage.hpp"
 #include "io/fit_storage.hpp"
@@ -43,13 +42,9 @@ bool fit_job(const std::vector<Vec2<double>>& pts, const std::vector<double>& to
   std::vector<fit::Piece<double>> pieces(n > 1 ? n - 1 : 1);
   const Span<fit::Piece<double>> dst(pieces.data(), pieces.size());
   Result<fit::Fit<double>> r = Status::invalid_argument;
-  double check_tol = tol;
   if (band) {
     std::vector<fit::BandWidth<double>> widths(n, {tol, tol});
-    for (std::size_t k = 0; k < tols.size() && k < n; ++k) {
-      widths[k] = {tols[k], tols[k]};
-      check_tol = k == 0 ? tols[k] : std::max(check_tol, tols[k]);
-    }
+    for (std::size_t k = 0; k < tols.size() && k < n; ++k) widths[k] = {tols[k], tols[k]};
     io::BandStorage storage(n);
     r = fit::fit_band_min_count(points, Span<const fit::BandWidth<double>>(widths.data(), n),
                                 storage.workspace(), dst);
@@ -63,9 +58,10 @@ bool fit_job(const std::vector<Vec2<double>>& pts, const std::vector<double>& to
     return false;
   }
   // A band piece crosses each inner point's gate, so it passes within the
-  // widest width of every inner point: the vertex check applies to it too.
+  // widest width (the band fit's tol) of every inner point: the vertex check
+  // applies to it too.
   const Span<const fit::Piece<double>> fitted(dst.data(), r.value().pieces);
-  if (const std::string bad = check_fit(points, fitted, check_tol); !bad.empty()) {
+  if (const std::string bad = check_fit(points, fitted, r.value().tol); !bad.empty()) {
     status = Status::infeasible;
     error = "internal error: the fit fails its own check (" + bad + ")";
     return false;

@@ -92,12 +92,11 @@ BandRegion<S> build_region(const Problem<S>& pb, S scale) {
   return region;
 }
 
-// Pieces needed with the widths times `scale`, or 0 when more than budget.
+// Pieces needed in `region`, or 0 when more than budget.
 template <class S>
-Result<std::uint32_t> count_at(const Problem<S>& pb, S scale, std::uint32_t budget,
-                               std::uint32_t*& pred) {
+Result<std::uint32_t> count_in(const Problem<S>& pb, const BandRegion<S>& region,
+                               std::uint32_t budget, std::uint32_t*& pred) {
   const auto n = static_cast<std::uint32_t>(pb.pts.size());
-  const BandRegion<S> region = build_region(pb, scale);
   std::uint32_t* next_barrier = pb.ws.words.data() + 5 * static_cast<std::size_t>(n);
   S longest = S(0);
   next_barrier[n - 1] = n;
@@ -111,6 +110,13 @@ Result<std::uint32_t> count_at(const Problem<S>& pb, S scale, std::uint32_t budg
       min_count(n, oracle, pb.ws.words.subspan(0, 5 * static_cast<std::size_t>(n)), budget, pred);
   if (!r.ok()) return r.status();
   return r.value().pieces;
+}
+
+// Pieces needed with the widths times `scale`, or 0 when more than budget.
+template <class S>
+Result<std::uint32_t> count_at(const Problem<S>& pb, S scale, std::uint32_t budget,
+                               std::uint32_t*& pred) {
+  return count_in(pb, build_region(pb, scale), budget, pred);
 }
 
 // Smallest scale in (0, hi] (to `rel` relative) at which `pieces` suffice,
@@ -189,12 +195,12 @@ template <class S>
 Result<Fit<S>> build(Span<const Vec2<S>> original, const Problem<S>& pb, S scale,
                      std::uint32_t pieces, Span<Piece<S>> out) {
   std::uint32_t* pred = nullptr;
-  const Result<std::uint32_t> c = count_at(pb, scale, pieces, pred);
+  const BandRegion<S> region = build_region(pb, scale);
+  const Result<std::uint32_t> c = count_in(pb, region, pieces, pred);
   if (!c.ok()) return c.status();
   if (c.value() == 0) return Status::infeasible;
   const std::uint32_t count = c.value();
   if (out.size() < count) return Status::capacity_exceeded;
-  const BandRegion<S> region = build_region(pb, scale);
   const S unscale = S(1) / pb.factor;
   Fit<S> fit{count, S(0), widest(Span<const BandWidth<S>>(pb.widths, pb.pts.size())) * scale};
   std::uint32_t j = static_cast<std::uint32_t>(pb.pts.size()) - 1;
