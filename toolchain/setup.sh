@@ -16,6 +16,8 @@ PACKAGES=(
   libcli11-dev
   # hal's Modbus backend and sim's motion board (RTU and TCP)
   libmodbus-dev
+  # hal's GPIO backend (libgpiod 1.6 on Debian 12) and the controller's TOML config
+  libgpiod-dev libtomlplusplus-dev
   # Linux SBC cross compilers, run under qemu-user
   g++-aarch64-linux-gnu g++-arm-linux-gnueabihf qemu-user
   # Cortex-M (bare metal): compiler, C/C++ runtime, nm/size, and qemu for a later run
