@@ -1,0 +1,84 @@
+// The machine configuration, read from a TOML file (toml++). Every value has
+// a default except where a machine cannot do without one (the link). A bad
+// value is refused with "FILE:LINE: KEY: reason"; unknown keys are refused
+// too, so a typo never silently leaves a default in place.
+// firmware/examples/kerf.toml is the commented example.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "kerf/hal/gpio.hpp"
+
+namespace kerf::config {
+
+struct Axis {
+  std::string name;            // "x", "y", "z"
+  double counts_per_mm = 1000; // > 0
+};
+
+struct Machine {
+  std::vector<Axis> axes;      // 2 or 3; default x and y at 1000 counts/mm
+  double max_feed = 10000;     // mm/min, > 0: cut and rapid feeds are capped by it
+  double rapid_feed = 10000;   // mm/min, > 0, <= max_feed
+  double accel = 1000;         // mm/s^2, > 0
+  double jerk = 0;             // mm/s^3, 0: trapezoidal ramps
+  double servo_period = 0.001; // s, the board's interpolation period, (0, 0.1]
+  double cycle = 0.002;        // s, the controller's loop period, (0, 0.1]
+};
+
+struct Link {
+  enum class Kind : std::uint8_t { modbus_tcp, modbus_rtu, can };
+  Kind kind = Kind::modbus_tcp;
+  std::string host = "127.0.0.1";  // modbus-tcp
+  int port = 502;                  // modbus-tcp, 1..65535
+  std::string device;              // modbus-rtu, e.g. /dev/ttyUSB0
+  int baud = 115200;               // modbus-rtu
+  int unit = 17;                   // modbus unit id, 1..247
+  std::string iface = "can0";      // can
+  std::vector<int> node_ids;       // can, one per axis, 1..127
+  double sync_ms = 1;              // can, SYNC period, 1..10
+  double timeout = 1.0;            // s, give up when the link is down this long, > 0
+};
+
+struct Fit {
+  std::string criterion = "band";  // vertex | band
+  double tol = 0.025;              // mm, > 0
+};
+
+struct Cut {
+  double feed = 3000;            // mm/min, > 0, <= machine.max_feed
+  double pierce_delay = 0.5;     // s, >= 0
+  double arc_ok_timeout = 3.0;   // s, > 0
+};
+
+struct Rt {
+  int priority = 0;      // SCHED_FIFO priority 1..99; 0: do not ask
+  bool lock_memory = false;
+};
+
+struct Config {
+  std::string file;  // where it was read from
+  Machine machine;
+  Link link;
+  hal::GpioConfig gpio;
+  Fit fit;
+  Cut cut;
+  Rt rt;
+};
+
+// The defaults above, as a config for the simulator (kerf sim without --config).
+Config defaults();
+
+// Reads and validates `path`. On failure returns false and sets `error` to
+// "FILE:LINE: KEY: reason" (or "FILE: reason" for an unreadable file).
+bool load(const std::string& path, Config& out, std::string& error);
+
+// Parses TOML text; `display_name` labels errors.
+bool parse(const std::string& text, const std::string& display_name, Config& out,
+           std::string& error);
+
+const char* to_string(Link::Kind k);
+
+}  // namespace kerf::config

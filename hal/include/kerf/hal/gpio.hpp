@@ -1,0 +1,64 @@
+// hal::Gpio: the machine's discrete I/O. One output (the torch) and the
+// inputs the controller watches every cycle: arc-OK from the plasma source,
+// E-stop, limit switches, and the operator's feed-hold and cycle-start
+// buttons. Values here are logical (true = asserted): active-low wiring and
+// debouncing are the backend's business, configured per line.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace kerf::hal {
+
+// Where one line is and how to read it. A line is given by chip and offset,
+// or by its name (the kernel's line label, searched on every chip, or on
+// `chip` when that is set too).
+struct GpioLineConfig {
+  bool used = false;        // false: the machine has no such line
+  std::string chip;         // "gpiochip0", "/dev/gpiochip0", or a chip label
+  int offset = -1;          // -1: find the line by name
+  std::string name;         // the line's name, when offset is -1
+  bool active_low = false;  // asserted when the pin reads 0
+  double debounce_s = 0.0;  // inputs: a change counts once it has held this long
+};
+
+inline constexpr std::size_t kMaxLimitLines = 8;
+
+struct GpioConfig {
+  std::string consumer = "kerf";  // the label the kernel shows for requested lines
+  GpioLineConfig torch;           // output
+  GpioLineConfig arc_ok;          // inputs from here on
+  GpioLineConfig estop;
+  std::vector<GpioLineConfig> limits;  // at most kMaxLimitLines
+  GpioLineConfig hold;            // feed-hold button
+  GpioLineConfig cycle_start;     // resume after a hold
+};
+
+struct GpioInputs {
+  bool arc_ok = false;
+  bool estop = false;
+  bool hold = false;
+  bool cycle_start = false;
+  std::uint8_t limit_count = 0;  // how many limit lines exist
+  std::array<bool, kMaxLimitLines> limit{};
+  bool any_limit() const {
+    for (std::uint8_t i = 0; i < limit_count; ++i)
+      if (limit[i]) return true;
+    return false;
+  }
+};
+
+class Gpio {
+ public:
+  virtual ~Gpio() = default;
+  // Samples every input at `now_s` (a monotonic clock, seconds; the
+  // debounce runs on it). False on an I/O error (last_error says which line).
+  virtual bool read(double now_s, GpioInputs& in) = 0;
+  // Drives the torch output. False on an I/O error.
+  virtual bool set_torch(bool on) = 0;
+  virtual const char* last_error() const = 0;
+};
+
+}  // namespace kerf::hal
