@@ -33,6 +33,7 @@ enum FaultBit : std::uint16_t {
   kFaultLinkWatchdog = 1u << 1,  // no request from the host for too long while running
   kFaultBadSegment = 1u << 2,    // a segment the executor refused (zero length, bad arc)
   kFaultStarved = 1u << 3,       // queue ran empty while running, before "finish"
+  kFaultDrive = 1u << 4,         // a drive reported a fault (following error, overcurrent ...)
 };
 
 struct BoardStatus {
