@@ -5,9 +5,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <thread>
 
 #include "kerf/hal/modbus/modbus_link.hpp"
+#include "kerf/hal/rt_loop.hpp"
 #include "kerf/sim/board_server.hpp"
 
 namespace kerf::control {
@@ -37,6 +37,16 @@ void inject(sim::BoardServer& server, sim::MotionBoard& board, const BoardFault&
 }
 
 }  // namespace
+
+SimMachineConfig sim_machine_config(const config::Config& cfg) {
+  SimMachineConfig m;
+  m.rtu = cfg.link.kind == config::Link::Kind::modbus_rtu;
+  m.motion.servo_period_s = cfg.machine.servo_period;
+  m.motion.accel_mm_s2 = cfg.machine.accel;
+  m.motion.counts_per_mm = cfg.machine.axes.empty() ? 1000.0 : cfg.machine.axes.front().counts_per_mm;
+  m.cycle_s = cfg.machine.cycle;
+  return m;
+}
 
 SimMachineResult run_sim_machine(const Job& job, const ControllerConfig& ccfg, const SimMachineConfig& mcfg,
                                  hal::Gpio& gpio, Journal* journal, const ResumePoint& from) {
@@ -94,7 +104,10 @@ SimMachineResult run_sim_machine(const Job& job, const ControllerConfig& ccfg, c
   sample();
   // A few cycles after the controller is finished, so the trace shows the stop.
   int tail = 0;
+  // Paced in real time (scaled by speed) on absolute deadlines, as `kerf run` is.
+  hal::RtLoop pace(mcfg.speed > 0.0 ? mcfg.cycle_s / mcfg.speed : 1.0);
   while (tail < 3) {
+    if (mcfg.speed > 0.0) pace.wait_next();
     const double now = static_cast<double>(ticks) * servo;
     while (next_fault < faults.size() && faults[next_fault].at_s <= now)
       inject(*server, board, faults[next_fault++]);
@@ -109,11 +122,8 @@ SimMachineResult run_sim_machine(const Job& job, const ControllerConfig& ccfg, c
       res.setup_error = "the job did not finish within the simulation's time limit";
       break;
     }
-    if (mcfg.speed > 0.0)
-      std::this_thread::sleep_until(
-          wall0 + std::chrono::duration_cast<clock::duration>(
-                      std::chrono::duration<double>(static_cast<double>(ticks) * servo / mcfg.speed)));
   }
+  if (mcfg.speed > 0.0) res.rt = pace.stats().describe();
   res.run = ctl.report();
   res.board = board.status();
   res.link_resends = link->resends();

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "config/config.hpp"
 #include "control/controller.hpp"
 #include "kerf/sim/motion_board.hpp"
 #include "kerf/sim/motion_executor.hpp"
@@ -50,7 +51,11 @@ struct SimMachineResult {
   std::uint64_t link_resends = 0;
   double sim_s = 0.0;
   double wall_s = 0.0;
+  std::string rt;  // the paced loop's statistics (--speed > 0), hal::RtStats::describe()
 };
+
+// The board's motion settings and the controller period from a machine configuration.
+SimMachineConfig sim_machine_config(const config::Config& cfg);
 
 SimMachineResult run_sim_machine(const Job& job, const ControllerConfig& ccfg, const SimMachineConfig& mcfg,
                                  hal::Gpio& gpio, Journal* journal, const ResumePoint& from);
