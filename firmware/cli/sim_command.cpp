@@ -230,7 +230,7 @@ int run_sim(const SimOptions& given) {
     for (const fit::Piece<double>& piece : fitted.pieces) plot.pieces.push_back(piece.segment);
     plot.piece_path = fitted.piece_path;
     plot.tol = tol;
-    plot.trace = res.trace;
+    for (const sim::TraceSample& t : res.trace) plot.trace.push_back({t.t_s, t.pos, t.seq, t.torch});
     plot.title = "kerf sim: " + in.file + " (" + sum.state + ")";
   }
   if (!write_or_say("--trace", opts.trace, io::format_trace_csv(res.trace)) ||

@@ -118,6 +118,8 @@ void Controller::cycle(double now_s) {
     if (in.estop) {
       trip = "E-stop";
       trip_state = State::estop;
+    } else if (!stop_request_.empty()) {
+      trip = stop_request_;
     } else if (in.any_limit()) {
       for (std::uint8_t i = 0; i < in.limit_count; ++i)
         if (in.limit[i]) {

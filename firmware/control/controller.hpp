@@ -74,11 +74,15 @@ class Controller {
   void start(const ResumePoint& from);
   // One cycle at controller time now_s (monotonic; simulated in the simulator).
   void cycle(double now_s);
+  // Stops the run in the next cycle as a fault with this reason (a signal,
+  // the operator): torch off, motion stopped on the path, progress kept.
+  void request_stop(const std::string& why) { stop_request_ = why; }
 
   State state() const { return state_; }
   // Done, or stopped by a fault with the board at rest: nothing more will happen.
   bool finished() const { return finished_; }
   bool torch() const { return torch_; }
+  bool link_down() const { return link_down_; }
   const RunReport& report() const { return report_; }
   // The job segment a board sequence number carries; -1 for a rapid or unknown.
   std::int64_t job_segment_of(std::uint32_t seq) const;
@@ -118,6 +122,7 @@ class Controller {
   bool have_status_ = false, at_rest_ = false;
   int rest_polls_ = 0;
   bool journal_failed_ = false;
+  std::string stop_request_;
   WallClock::time_point link_down_since_{};
   bool link_down_ = false;
 

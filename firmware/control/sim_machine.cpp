@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <thread>
 
 #include "kerf/hal/modbus/modbus_link.hpp"
 #include "kerf/hal/rt_loop.hpp"
@@ -106,18 +107,36 @@ SimMachineResult run_sim_machine(const Job& job, const ControllerConfig& ccfg, c
   int tail = 0;
   // Paced in real time (scaled by speed) on absolute deadlines, as `kerf run` is.
   hal::RtLoop pace(mcfg.speed > 0.0 ? mcfg.cycle_s / mcfg.speed : 1.0);
+  auto last_wall = clock::now();
   while (tail < 3) {
     if (mcfg.speed > 0.0) pace.wait_next();
     const double now = static_cast<double>(ticks) * servo;
     while (next_fault < faults.size() && faults[next_fault].at_s <= now)
       inject(*server, board, faults[next_fault++]);
     ctl.cycle(now);
-    for (long i = 0; i < ticks_per_cycle; ++i) {
+    // Link faults are wall-time events (timeouts, the board's watchdog): while
+    // the link is down the simulation runs at least in real time, so that the
+    // board moves on, blind, for as long as it would on a real machine.
+    long ticks_now = ticks_per_cycle;
+    const auto wall_now = clock::now();
+    if (ctl.link_down()) {
+      const double took = std::chrono::duration<double>(wall_now - last_wall).count();
+      if (took < mcfg.cycle_s) std::this_thread::sleep_for(std::chrono::duration<double>(mcfg.cycle_s - took));
+      ticks_now = std::max(ticks_per_cycle, std::lround(took / servo));
+    }
+    last_wall = clock::now();
+    for (long i = 0; i < ticks_now; ++i) {
       board.tick();
       ++ticks;
       sample();
     }
-    if (ctl.finished()) ++tail;
+    // Finished, and the axes at rest (the controller may have lost the link,
+    // but the board brakes by itself and the simulation shows it).
+    if (ctl.finished()) {
+      const hal::BoardStatus s = board.status();
+      const bool still = s.position == res.trace[res.trace.size() - 1 - static_cast<std::size_t>(ticks_per_cycle)].pos;
+      tail = still && s.state != hal::BoardState::running ? tail + 1 : 0;
+    }
     if (now > mcfg.max_sim_s) {
       res.setup_error = "the job did not finish within the simulation's time limit";
       break;
@@ -126,6 +145,7 @@ SimMachineResult run_sim_machine(const Job& job, const ControllerConfig& ccfg, c
   if (mcfg.speed > 0.0) res.rt = pace.stats().describe();
   res.run = ctl.report();
   res.board = board.status();
+  res.run.stopped_at = res.board.position;  // where the axes really came to rest
   res.link_resends = link->resends();
   res.sim_s = static_cast<double>(ticks) * servo;
   res.wall_s = std::chrono::duration<double>(clock::now() - wall0).count();

@@ -28,7 +28,10 @@ std::vector<std::string> scenario_files() {
 
 std::string torch_pattern(const std::vector<sim::TorchChange>& changes) {
   std::string s;
-  for (const sim::TorchChange& c : changes) s += (s.empty() ? "" : " ") + std::string(c.on ? "on" : "off");
+  for (const sim::TorchChange& c : changes) {
+    if (!s.empty()) s += ' ';
+    s += c.on ? "on" : "off";
+  }
   return s;
 }
 
@@ -107,13 +110,27 @@ TEST_P(ScenarioTest, OutcomeAsExpected) {
   ASSERT_EQ(r.setup_error, "");
 
   EXPECT_EQ(control::to_string(r.run.state), sc.expect.state) << r.run.reason;
-  if (!sc.expect.reason.empty()) EXPECT_NE(r.run.reason.find(sc.expect.reason), std::string::npos) << r.run.reason;
-  if (!sc.expect.torch.empty()) EXPECT_EQ(torch_pattern(gpio.torch_timeline()), sc.expect.torch);
-  if (sc.expect.pierces) EXPECT_EQ(r.run.pierces, static_cast<std::uint32_t>(*sc.expect.pierces));
+  if (!sc.expect.reason.empty()) {
+    EXPECT_NE(r.run.reason.find(sc.expect.reason), std::string::npos) << r.run.reason;
+  }
+  if (!sc.expect.torch.empty()) {
+    EXPECT_EQ(torch_pattern(gpio.torch_timeline()), sc.expect.torch);
+  }
+  if (sc.expect.pierces) {
+    EXPECT_EQ(r.run.pierces, static_cast<std::uint32_t>(*sc.expect.pierces));
+  }
   // Each segment at most once, in order; whole paths counted.
   for (std::size_t i = 1; i < r.executed.size(); ++i) EXPECT_EQ(r.executed[i], r.executed[i - 1] + 1);
   EXPECT_EQ(journal->state().duplicates, 0u);
-  EXPECT_EQ(journal->state().executed_total, r.executed.size());
+  // The journal has what the controller saw complete: everything, unless the
+  // link went down and the board ran on blind until its watchdog stopped it.
+  const bool link_fault = std::any_of(sc.faults.begin(), sc.faults.end(),
+                                      [](const std::string& f) { return f.rfind("link-", 0) == 0; });
+  if (link_fault) {
+    EXPECT_LE(journal->state().executed_total, r.executed.size());
+  } else {
+    EXPECT_EQ(journal->state().executed_total, r.executed.size());
+  }
   if (sc.expect.paths_completed) {
     long complete = 0;
     std::size_t k = 0;
@@ -136,7 +153,7 @@ TEST_P(ScenarioTest, OutcomeAsExpected) {
     // Braking distance at the cut feed, plus the cycle in which the fault is seen.
     const double v = rig.cfg.cut.feed / 60.0, a = rig.cfg.machine.accel;
     const Vec2<double> at_fault = r.trace[sample_at(r, t)].pos;
-    EXPECT_LE(distance(at_fault, r.run.stopped_at), v * v / (2 * a) + v * m.cycle_s + 1e-3);
+    EXPECT_LE(distance(at_fault, r.run.stopped_at), v * v / (2 * a) + v * std::max(m.cycle_s, within) + 1e-3);
     EXPECT_EQ(r.trace.back().pos, r.trace[r.trace.size() - 2].pos) << "still moving at the end";
   }
 
