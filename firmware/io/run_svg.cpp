@@ -377,15 +377,6 @@ double xy_panel(std::string& out, const RunPlot& plot, const std::vector<Run>& r
     out += ds[i];
     out += "\"/>\n";
   }
-  for (const auto& path : plot.paths)
-    for (const Vec2<double>& p : path) {
-      out += "<circle class=\"pt\" cx=\"";
-      num(out, m.px(p.x));
-      out += "\" cy=\"";
-      num(out, m.py(p.y));
-      out += "\" r=\"1.2\"/>\n";
-    }
-
   // Each run starts at the previous run's last sample, so the drawing is unbroken.
   const auto& tr = plot.trace;
   for (const Run& r : runs) {
@@ -395,6 +386,15 @@ double xy_panel(std::string& out, const RunPlot& plot, const std::vector<Run>& r
     });
     polyline(out, r.torch ? "cut" : "rapid", idx, tr, m);
   }
+  // The points over the trace, so that both stay visible.
+  for (const auto& path : plot.paths)
+    for (const Vec2<double>& p : path) {
+      out += "<circle class=\"pt\" cx=\"";
+      num(out, m.px(p.x));
+      out += "\" cy=\"";
+      num(out, m.py(p.y));
+      out += "\" r=\"1.2\"/>\n";
+    }
   for (const Run& r : runs) {
     if (!r.torch) continue;
     out += "<circle class=\"pierce\" cx=\"";
@@ -498,7 +498,7 @@ std::string format_run_svg(const RunPlot& plot) {
          ".pt{fill:#555}"
          ".piece{fill:none;stroke-width:2}"
          ".band,.band path{fill:none;stroke:#f2d98c;stroke-opacity:0.6;stroke-linecap:round}"
-         ".cut{fill:none;stroke:#222;stroke-width:1}"
+         ".cut{fill:none;stroke:#222;stroke-width:0.75}"
          ".rapid{fill:none;stroke:#999;stroke-width:1;stroke-dasharray:5 4}"
          ".pierce{fill:none;stroke:#d00;stroke-width:1.5}"
          ".on{fill:#ffe0b0;stroke:none}"
