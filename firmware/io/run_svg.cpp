@@ -48,17 +48,35 @@ void label(std::string& out, double v) {
   out += buf;
 }
 
+// Length of the well-formed UTF-8 sequence at s[i], or 0 (overlongs and
+// surrogates are not checked: they are not what a file name holds by mistake).
+std::size_t utf8_length(const std::string& s, std::size_t i) {
+  const auto c = static_cast<unsigned char>(s[i]);
+  const std::size_t n = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xe ? 3 : (c >> 3) == 0x1e ? 4 : 0;
+  if (n == 0 || i + n > s.size()) return 0;
+  for (std::size_t k = 1; k < n; ++k)
+    if ((static_cast<unsigned char>(s[i + k]) >> 6) != 0x2) return 0;
+  return n;
+}
+
+// Text for XML: markup escaped; control characters (forbidden in XML 1.0 even
+// escaped) and bytes that are not UTF-8 become '?'.
 void escaped(std::string& out, const std::string& s) {
-  for (const char c : s) {
+  for (std::size_t i = 0; i < s.size();) {
+    const std::size_t n = utf8_length(s, i);
+    const char c = s[i];
+    if (n > 1) {
+      out.append(s, i, n);
+      i += n;
+      continue;
+    }
+    ++i;
     switch (c) {
       case '&': out += "&amp;"; break;
       case '<': out += "&lt;"; break;
       case '>': out += "&gt;"; break;
       case '"': out += "&quot;"; break;
-      default:
-        // XML 1.0 forbids most control characters, even escaped.
-        if (static_cast<unsigned char>(c) < 0x20 && c != '\t') out += ' ';
-        else out += c;
+      default: out += n == 1 && (static_cast<unsigned char>(c) >= 0x20 || c == '\t') ? c : '?';
     }
   }
 }
@@ -116,7 +134,10 @@ void point(std::string& out, const XyMap& m, Vec2<double> p) {
 std::string piece_d(const XyMap& m, const Segment<double>& s) {
   std::string d = "M";
   point(d, m, s.start);
-  if (!s.is_arc()) {
+  // An arc that bends less than a pixel over the whole canvas is drawn as its
+  // chord: renderers lose precision with radii of millions of px.
+  const bool flat = s.radius() * m.scale > 1e6 && s.start != s.end && sweep_angle(s) < kPi;
+  if (!s.is_arc() || flat) {
     d += " L";
     point(d, m, s.end);
     return d;

@@ -29,7 +29,7 @@ int main(int argc, char** argv) {
   using V = kerf::Vec2<double>;
   using Seg = kerf::Segment<double>;
   kerf::io::RunPlot plot;
-  plot.title = "sample <run> & \"plot\" \u00b1";
+  plot.title = "sample <run> & \"plot\" \u00b1 bad byte \xff, control \x01";
   plot.tol = 0.2;
   std::vector<V> circle;
   for (int i = 0; i <= 36; ++i)

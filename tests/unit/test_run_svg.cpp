@@ -173,6 +173,22 @@ TEST(RunSvg, EmptyTraceStillGivesAPlot) {
   EXPECT_EQ(count(svg, "a &lt;job&gt; &amp; &quot;more&quot;"), 1u);
 }
 
+TEST(RunSvg, TitleKeepsUtf8AndDropsWhatXmlForbids) {
+  RunPlot plot;
+  plot.title = "job \u00b1 \xff\x01 \xe2\x82";  // good UTF-8, a stray byte, a control, a cut sequence
+  const std::string svg = format_run_svg(plot);
+  EXPECT_EQ(count(svg, "job \u00b1 ?\? ?\?</text>"), 1u);
+}
+
+TEST(RunSvg, NearlyStraightArcIsDrawnAsItsChord) {
+  RunPlot plot;
+  plot.pieces = {Seg::arc(V{0, 0}, V{10, 0}, V{5, -1e9}, -1)};
+  const auto ds = attrs(xy_part(format_run_svg(plot)), "<path class=\"piece\"", "d");
+  ASSERT_EQ(ds.size(), 1u);
+  EXPECT_EQ(count(ds[0], "L"), 1u);
+  EXPECT_EQ(count(ds[0], "A"), 0u);
+}
+
 TEST(RunSvg, LongTraceIsDecimatedKeepingExtremes) {
   RunPlot plot;
   const std::size_t n = 200000;
