@@ -1,8 +1,11 @@
-// toml++ as every config source file includes it. toml++ is header-only and
-// its ABI depends on TOML_EXCEPTIONS, so the setting lives in this one place:
-// a TU that saw a different value would break the one-definition rule.
-// Without exceptions, parse() returns a toml::parse_result to test.
+// toml++ as every config source file includes it. Its ABI depends on these
+// settings, so they live in this one place: a TU that saw different values
+// would break the one-definition rule.
+// - TOML_EXCEPTIONS 0: parse() returns a toml::parse_result to test.
+// - TOML_HEADER_ONLY 0: the parser is compiled once, in tomlpp.cpp, not in
+//   every file that includes this.
 #pragma once
 
 #define TOML_EXCEPTIONS 0
+#define TOML_HEADER_ONLY 0
 #include <toml++/toml.h>
