@@ -70,9 +70,9 @@ bool parse_slot(std::string_view text, bool& has, CutPoint& p) {
 // Fixed-width header or slot line into out (kMaxLine bytes).
 std::size_t header_line(const JobId& job, char* out) {
   char text[rec::kMaxLine];
-  const int n = std::snprintf(text, sizeof text, "kerf-journal %d job=%016llx segments=%u",
-                              rec::kVersion, static_cast<unsigned long long>(job.hash),
-                              static_cast<unsigned>(job.segments));
+  const int n =
+      std::snprintf(text, sizeof text, "kerf-journal %d job=%016llx segments=%u", rec::kVersion,
+                    static_cast<unsigned long long>(job.hash), static_cast<unsigned>(job.segments));
   return rec::encode(text, static_cast<std::size_t>(n), rec::kFixedWidth, out);
 }
 
@@ -187,7 +187,9 @@ bool write_all(int fd, const char* p, std::size_t n, std::uint64_t at) {
 // Makes a rename durable: the directory entry is only on disk once the directory is synced.
 bool sync_dir(const std::string& path) {
   const std::size_t slash = path.rfind('/');
-  const std::string dir = slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash);
+  const std::string dir = slash == std::string::npos ? "."
+                          : slash == 0               ? "/"
+                                                     : path.substr(0, slash);
   const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
   if (fd < 0) return false;
   const bool ok = ::fsync(fd) == 0;
@@ -222,11 +224,16 @@ std::unique_ptr<Journal> Journal::create(const std::string& path, const JobId& j
   n += slot_line(nullptr, lines + n);
   n += rec::encode("run 1", 5, 0, lines + n);
   const char* what = nullptr;
-  if (j->fd_ < 0) what = "cannot create the temporary file";
-  else if (::flock(j->fd_, LOCK_EX | LOCK_NB) != 0) what = "cannot lock the temporary file";
-  else if (!write_all(j->fd_, lines, n, 0) || ::fsync(j->fd_) != 0) what = "cannot write";
-  else if (::rename(tmp.c_str(), path.c_str()) != 0) what = "cannot rename the temporary file";
-  else if (!sync_dir(path)) what = "cannot sync its directory";
+  if (j->fd_ < 0)
+    what = "cannot create the temporary file";
+  else if (::flock(j->fd_, LOCK_EX | LOCK_NB) != 0)
+    what = "cannot lock the temporary file";
+  else if (!write_all(j->fd_, lines, n, 0) || ::fsync(j->fd_) != 0)
+    what = "cannot write";
+  else if (::rename(tmp.c_str(), path.c_str()) != 0)
+    what = "cannot rename the temporary file";
+  else if (!sync_dir(path))
+    what = "cannot sync its directory";
   const int err = errno;
   if (old >= 0) ::close(old);
   if (what != nullptr) {
@@ -319,8 +326,8 @@ Journal::~Journal() {
 
 void Journal::fail(const char* what, int err) {
   char buf[256];  // error_ has this capacity reserved: no allocation here
-  std::snprintf(buf, sizeof buf, "journal %s: %s%s%s%s", path_.c_str(), what,
-                err != 0 ? " (" : "", err != 0 ? std::strerror(err) : "", err != 0 ? ")" : "");
+  std::snprintf(buf, sizeof buf, "journal %s: %s%s%s%s", path_.c_str(), what, err != 0 ? " (" : "",
+                err != 0 ? std::strerror(err) : "", err != 0 ? ")" : "");
   error_.assign(buf);
 }
 
@@ -334,7 +341,8 @@ bool Journal::append(const char* text, std::size_t n) {
   if (!write_all(fd_, line, len, append_at_) || ::fdatasync(fd_) != 0) {
     const int err = errno;
     // Drop whatever part was written, so a later record does not follow a torn one.
-    if (::ftruncate(fd_, static_cast<off_t>(append_at_)) != 0) {}
+    if (::ftruncate(fd_, static_cast<off_t>(append_at_)) != 0) {
+    }
     fail("cannot append a record", err);
     return false;
   }

@@ -93,8 +93,9 @@ RtSetup rt_setup(int priority, bool lock_memory) {
                     "rt: mlockall failed (%s): memory may be paged out and stall the loop; run "
                     "as root or raise the memlock limit (LimitMEMLOCK=infinity in the systemd "
                     "unit)",
-                    err == EPERM ? "EPERM" : err == ENOMEM ? "ENOMEM, over the memlock limit"
-                                                            : std::strerror(err));
+                    err == EPERM    ? "EPERM"
+                    : err == ENOMEM ? "ENOMEM, over the memlock limit"
+                                    : std::strerror(err));
       add_warning(r.warning, b);
     }
 #endif

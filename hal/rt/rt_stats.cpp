@@ -47,12 +47,13 @@ void RtStats::record(double late_s) {
 std::string RtStats::describe() const {
   char b[160];
   if (cycles == 0) {
-    std::snprintf(b, sizeof b, "cycles 0, overruns %llu", static_cast<unsigned long long>(overruns));
+    std::snprintf(b, sizeof b, "cycles 0, overruns %llu",
+                  static_cast<unsigned long long>(overruns));
   } else {
-    std::snprintf(b, sizeof b, "cycles %llu, overruns %llu, late p50 %.0f us, p99 %.0f us, max %.0f us",
-                  static_cast<unsigned long long>(cycles),
-                  static_cast<unsigned long long>(overruns), jitter_percentile_us(*this, 0.50),
-                  jitter_percentile_us(*this, 0.99), max_late_s * 1e6);
+    std::snprintf(
+        b, sizeof b, "cycles %llu, overruns %llu, late p50 %.0f us, p99 %.0f us, max %.0f us",
+        static_cast<unsigned long long>(cycles), static_cast<unsigned long long>(overruns),
+        jitter_percentile_us(*this, 0.50), jitter_percentile_us(*this, 0.99), max_late_s * 1e6);
   }
   return b;
 }

@@ -14,9 +14,12 @@ int main(int argc, char** argv) {
   double period_ms = 1.0, seconds = 2.0;
   int priority = 80;
   for (int i = 1; i + 1 < argc; i += 2) {
-    if (std::strcmp(argv[i], "--period-ms") == 0) period_ms = std::atof(argv[i + 1]);
-    else if (std::strcmp(argv[i], "--seconds") == 0) seconds = std::atof(argv[i + 1]);
-    else if (std::strcmp(argv[i], "--priority") == 0) priority = std::atoi(argv[i + 1]);
+    if (std::strcmp(argv[i], "--period-ms") == 0)
+      period_ms = std::atof(argv[i + 1]);
+    else if (std::strcmp(argv[i], "--seconds") == 0)
+      seconds = std::atof(argv[i + 1]);
+    else if (std::strcmp(argv[i], "--priority") == 0)
+      priority = std::atoi(argv[i + 1]);
     else {
       std::fprintf(stderr, "usage: %s [--period-ms P] [--seconds S] [--priority N]\n", argv[0]);
       return 2;

@@ -140,7 +140,7 @@ TEST_F(JournalTest, ResumeRefusesAFinishedJob) {
   EXPECT_NE(err.find("finished"), std::string::npos) << err;
 }
 
-TEST_F(JournalTest, ResumeRefusesWhileAnotherProcessHoldsIt) {
+TEST_F(JournalTest, ResumeRefusesWhileAnotherJournalHoldsTheFile) {
   const std::string p = path("j");
   auto first = make(p);
   std::string err;
@@ -189,7 +189,7 @@ TEST_F(JournalTest, DuplicatesAreCountedAndGapsRefused) {
     ASSERT_TRUE(j->completed(1));  // the same segment twice: cut twice, so counted
     ASSERT_TRUE(j->completed(0));
     EXPECT_EQ(j->state().duplicates, 2u);
-    EXPECT_FALSE(j->completed(3));   // 2 is missing
+    EXPECT_FALSE(j->completed(3));  // 2 is missing
     EXPECT_NE(std::string(j->last_error()).find("segment 3 completed out of order"),
               std::string::npos)
         << j->last_error();

@@ -21,7 +21,7 @@ TEST(RtStats, BinsFollowPowersOfTwoMicroseconds) {
   EXPECT_EQ(jitter_bin(0.0), 0u);
   EXPECT_EQ(jitter_bin(-5e-6), 0u);
   EXPECT_EQ(jitter_bin(0.999e-6), 0u);
-  EXPECT_EQ(jitter_bin(1e-6), 1u);   // [1, 2)
+  EXPECT_EQ(jitter_bin(1e-6), 1u);  // [1, 2)
   EXPECT_EQ(jitter_bin(1.9e-6), 1u);
   EXPECT_EQ(jitter_bin(2e-6), 2u);   // [2, 4)
   EXPECT_EQ(jitter_bin(12e-6), 4u);  // [8, 16)
@@ -36,9 +36,9 @@ TEST(RtStats, BinsFollowPowersOfTwoMicroseconds) {
 
 TEST(RtStats, PercentilesAreBinUpperBoundsCappedAtTheMax) {
   RtStats s;
-  for (int i = 0; i < 90; ++i) s.record(10e-6);   // [8, 16)
-  for (int i = 0; i < 9; ++i) s.record(50e-6);    // [32, 64)
-  s.record(140e-6);                               // [128, 256), the max
+  for (int i = 0; i < 90; ++i) s.record(10e-6);  // [8, 16)
+  for (int i = 0; i < 9; ++i) s.record(50e-6);   // [32, 64)
+  s.record(140e-6);                              // [128, 256), the max
   EXPECT_EQ(s.cycles, 100u);
   EXPECT_EQ(s.jitter[4], 90u);
   EXPECT_EQ(s.jitter[6], 9u);
@@ -100,7 +100,7 @@ TEST(RtLoop, DeadlinesAreAbsoluteSoLatenessDoesNotAccumulate) {
 TEST(RtLoop, OverrunsSkipMissedDeadlinesAndCountEach) {
   FakeClock c;
   RtLoop loop(1e-3, c);
-  loop.wait_next();          // due at 1001 ms
+  loop.wait_next();            // due at 1001 ms
   c.now += 3 * kMs + kMs / 2;  // work until 1004.5 ms: 1002, 1003 and 1004 missed
   loop.wait_next();
   EXPECT_EQ(c.last_deadline, 1005 * kMs);
@@ -187,7 +187,8 @@ TEST(RtSetup, UnprivilegedWarnsAndCarriesOn) {
   EXPECT_NE(w.find("rt: mlockall"), std::string::npos) << w;
 }
 
-TEST(RtSetup, AsRunOutcomeIsCoherent) {  // granted (root) or refused: the report matches the process
+TEST(RtSetup,
+     AsRunOutcomeIsCoherent) {  // granted (root) or refused: the report matches the process
   const SetupOutcome o = setup_in_child(false);
   ASSERT_NE(o.policy, -2) << "the child did not report";
   EXPECT_EQ(o.fifo, o.policy == SCHED_FIFO);
