@@ -137,7 +137,7 @@ bool parse_gpio_script(std::string_view text, const std::string& source, std::si
     last_word = words[0];
     events.push_back(e);
   }
-  out = std::move(events);
+  out.insert(out.end(), events.begin(), events.end());
   return true;
 }
 

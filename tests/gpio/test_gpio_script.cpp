@@ -81,6 +81,16 @@ INSTANTIATE_TEST_SUITE_P(
         BadLine{"1 hold 0\n", "job.gpio:1: bad press duration \"0\" (seconds > 0)"},
         BadLine{"1.0\n", "job.gpio:1: missing event after the time"}));
 
+TEST(GpioScript, AppendsToEventsAlreadyThere) {
+  std::vector<GpioEvent> ev;
+  std::string error;
+  ASSERT_TRUE(parse_gpio_fault("estop@5", 0, ev, error)) << error;
+  ASSERT_TRUE(parse_gpio_script("1 hold\n", "s", 0, ev, error)) << error;
+  ASSERT_EQ(ev.size(), 2u);
+  EXPECT_EQ(ev[0].kind, Kind::estop);
+  EXPECT_EQ(ev[1].kind, Kind::hold);
+}
+
 TEST(GpioScript, LoadsAFileAndNamesItInErrors) {
   const std::string path = ::testing::TempDir() + "kerf_gpio_script_test.gpio";
   {
@@ -96,7 +106,7 @@ TEST(GpioScript, LoadsAFileAndNamesItInErrors) {
     f << "0.5 estop on\n";
   }
   ASSERT_TRUE(load_gpio_script(path, 0, ev, error)) << error;
-  ASSERT_EQ(ev.size(), 1u);
+  ASSERT_EQ(ev.size(), 1u);  // the failed load above added nothing
   EXPECT_EQ(ev[0].t_s, 0.5);
   std::remove(path.c_str());
   EXPECT_FALSE(load_gpio_script(path, 0, ev, error));

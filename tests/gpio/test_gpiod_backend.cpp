@@ -133,15 +133,18 @@ TEST_F(GpiodBackend, OffsetOutOfRangeThroughOpen) {
 }
 
 TEST_F(GpiodBackend, BusyLineNamesItsConsumerAndReleasesTheOthers) {
-  line("/dev/gpiochip0", 17).consumer = "linuxcnc";
+  line("/dev/gpiochip1", 7).consumer = "linuxcnc";
   GpioConfig cfg;
-  cfg.estop = at("gpiochip0", 4);  // requested, then released on the failure
-  cfg.torch = at("gpiochip0", 17);
+  cfg.torch = at("gpiochip0", 17, /*active_low=*/true);  // requested first...
+  cfg.estop = at("gpiochip0", 4);
+  cfg.cycle_start = at("gpiochip1", 7);  // ...this one, last, is busy
   std::string error;
   EXPECT_EQ(open_gpiod(cfg, error), nullptr);
-  EXPECT_EQ(error, "gpio: torch: line 17 on gpiochip0 is busy (used by \"linuxcnc\")");
+  EXPECT_EQ(error, "gpio: cycle_start: line 7 on gpiochip1 is busy (used by \"linuxcnc\")");
   EXPECT_EQ(line("/dev/gpiochip0", 4).consumer, "");
-  line("/dev/gpiochip0", 17).consumer.clear();  // for TearDown's count
+  EXPECT_EQ(line("/dev/gpiochip0", 17).consumer, "");
+  EXPECT_TRUE(line("/dev/gpiochip0", 17).level);  // left logically off (active-low)
+  EXPECT_EQ(world().chips.at("/dev/gpiochip1").lines[7].consumer, "linuxcnc");
 }
 
 TEST_F(GpiodBackend, NameErrors) {

@@ -28,8 +28,9 @@ struct GpioEvent {
 };
 
 // The script format (sim/README.md): one event per line, `AT_SECONDS EVENT
-// [ARGS]`, `#` starts a comment; times never go backwards. All or nothing:
-// on error `out` is untouched and `error` is "SOURCE:LINE: reason".
+// [ARGS]`, `#` starts a comment; times never go backwards. The events are
+// appended to `out` (after --fault events, say; ScriptedGpio::add sorts them).
+// All or nothing: on error `out` is untouched and `error` is "SOURCE:LINE: reason".
 bool parse_gpio_script(std::string_view text, const std::string& source, std::size_t limit_count,
                        std::vector<GpioEvent>& out, std::string& error);
 bool load_gpio_script(const std::string& path, std::size_t limit_count,
