@@ -137,7 +137,7 @@ bool parse_gpio_script(std::string_view text, const std::string& source, std::si
     last_word = words[0];
     events.push_back(e);
   }
-  out = std::move(events);
+  out.insert(out.end(), events.begin(), events.end());
   return true;
 }
 
@@ -153,28 +153,67 @@ bool load_gpio_script(const std::string& path, std::size_t limit_count,
   return parse_gpio_script(text.str(), path, limit_count, out, error);
 }
 
-bool parse_gpio_fault(std::string_view spec, std::size_t limit_count, GpioEvent& out,
-                      std::string& error) {
-  const std::size_t at = spec.rfind('@');
-  if (at == std::string_view::npos) {
-    error = "--fault " + std::string(spec) + ": expected EVENT@SECONDS (estop:on@1.25)";
+bool parse_gpio_fault(std::string_view spec, std::size_t limit_count,
+                      std::vector<GpioEvent>& out, std::string& error) {
+  const std::string text(spec);
+  const std::string head = "--fault " + text + ": ";
+  const std::size_t at = text.find('@');
+  if (at == std::string::npos) {
+    error = head + "expected KIND@SECONDS[:DURATION]";
     return false;
   }
-  std::string line = std::string(spec.substr(at + 1)) + " " + std::string(spec.substr(0, at));
-  for (char& c : line)
-    if (c == ':') c = ' ';
+  const std::string kind = text.substr(0, at);
+  const std::size_t colon = text.find(':', at);
+  const std::string when = text.substr(at + 1, colon == std::string::npos ? std::string::npos
+                                                                          : colon - at - 1);
+  GpioEvent e;
+  double duration = 0.0;
+  if (!parse_seconds(when, e.t_s)) {
+    error = head + "bad time \"" + when + "\" (seconds >= 0)";
+    return false;
+  }
+  if (colon != std::string::npos &&
+      (!parse_seconds(text.substr(colon + 1), duration) || !(duration > 0.0))) {
+    error = head + "bad duration \"" + text.substr(colon + 1) + "\" (seconds > 0)";
+    return false;
+  }
   std::vector<GpioEvent> events;
-  std::string reason;
-  if (!parse_gpio_script(line, "--fault " + std::string(spec), limit_count, events, reason) ||
-      events.size() != 1) {
-    // "SOURCE:1: reason" reads oddly for a one-word option: drop the line number.
-    const std::string head = "--fault " + std::string(spec) + ":1: ";
-    error = reason.rfind(head, 0) == 0 ? "--fault " + std::string(spec) + ": " +
-                                             reason.substr(head.size())
-                                       : "--fault " + std::string(spec) + ": no event";
+  if (kind == "estop" || kind.rfind("limit-", 0) == 0) {
+    e.kind = kind == "estop" ? GpioEvent::Kind::estop : GpioEvent::Kind::limit;
+    if (e.kind == GpioEvent::Kind::limit) {
+      const std::string n = kind.substr(6);
+      char* end = nullptr;
+      const long index = std::strtol(n.c_str(), &end, 10);
+      if (n.empty() || end != n.c_str() + n.size() || index < 0 ||
+          static_cast<std::size_t>(index) >= limit_count) {
+        error = head + "no limit line " + n + " (" + std::to_string(limit_count) + " limit lines)";
+        return false;
+      }
+      e.limit = static_cast<int>(index);
+    }
+    events.push_back(e);
+    if (duration > 0.0) {  // released again after DURATION
+      GpioEvent off = e;
+      off.on = false;
+      off.t_s = e.t_s + duration;
+      events.push_back(off);
+    }
+  } else if (kind == "hold" || kind == "cycle-start") {
+    e.kind = kind == "hold" ? GpioEvent::Kind::hold : GpioEvent::Kind::cycle_start;
+    e.duration_s = duration;
+    events.push_back(e);
+  } else if (kind == "arc-lost" || kind == "no-arc") {
+    if (colon != std::string::npos) {
+      error = head + kind + " takes no duration";
+      return false;
+    }
+    e.kind = kind == "arc-lost" ? GpioEvent::Kind::arc_lost : GpioEvent::Kind::no_arc;
+    events.push_back(e);
+  } else {
+    error = head + "unknown GPIO fault \"" + kind + "\"";
     return false;
   }
-  out = events[0];
+  out.insert(out.end(), events.begin(), events.end());
   return true;
 }
 

@@ -81,6 +81,16 @@ INSTANTIATE_TEST_SUITE_P(
         BadLine{"1 hold 0\n", "job.gpio:1: bad press duration \"0\" (seconds > 0)"},
         BadLine{"1.0\n", "job.gpio:1: missing event after the time"}));
 
+TEST(GpioScript, AppendsToEventsAlreadyThere) {
+  std::vector<GpioEvent> ev;
+  std::string error;
+  ASSERT_TRUE(parse_gpio_fault("estop@5", 0, ev, error)) << error;
+  ASSERT_TRUE(parse_gpio_script("1 hold\n", "s", 0, ev, error)) << error;
+  ASSERT_EQ(ev.size(), 2u);
+  EXPECT_EQ(ev[0].kind, Kind::estop);
+  EXPECT_EQ(ev[1].kind, Kind::hold);
+}
+
 TEST(GpioScript, LoadsAFileAndNamesItInErrors) {
   const std::string path = ::testing::TempDir() + "kerf_gpio_script_test.gpio";
   {
@@ -96,32 +106,55 @@ TEST(GpioScript, LoadsAFileAndNamesItInErrors) {
     f << "0.5 estop on\n";
   }
   ASSERT_TRUE(load_gpio_script(path, 0, ev, error)) << error;
-  ASSERT_EQ(ev.size(), 1u);
+  ASSERT_EQ(ev.size(), 1u);  // the failed load above added nothing
   EXPECT_EQ(ev[0].t_s, 0.5);
   std::remove(path.c_str());
   EXPECT_FALSE(load_gpio_script(path, 0, ev, error));
   EXPECT_EQ(error, path + ": cannot open the GPIO script");
 }
 
-TEST(GpioFault, CommandLineSpec) {
-  GpioEvent e;
+TEST(GpioFault, CommandLineSpecs) {
+  std::vector<GpioEvent> ev;
   std::string error;
-  ASSERT_TRUE(parse_gpio_fault("estop:on@1.25", 0, e, error)) << error;
-  EXPECT_EQ(e.kind, Kind::estop);
-  EXPECT_TRUE(e.on);
-  EXPECT_EQ(e.t_s, 1.25);
-  ASSERT_TRUE(parse_gpio_fault("limit:1:off@2", 2, e, error)) << error;
-  EXPECT_EQ(e.kind, Kind::limit);
-  EXPECT_EQ(e.limit, 1);
-  EXPECT_FALSE(e.on);
-  ASSERT_TRUE(parse_gpio_fault("arc-lost@0.8", 0, e, error)) << error;
-  EXPECT_EQ(e.kind, Kind::arc_lost);
-  EXPECT_FALSE(parse_gpio_fault("estop:on", 0, e, error));
-  EXPECT_EQ(error, "--fault estop:on: expected EVENT@SECONDS (estop:on@1.25)");
-  EXPECT_FALSE(parse_gpio_fault("melt@1", 0, e, error));
-  EXPECT_EQ(error, "--fault melt@1: unknown event \"melt\"");
-  EXPECT_FALSE(parse_gpio_fault("estop:on@soon", 0, e, error));
-  EXPECT_EQ(error, "--fault estop:on@soon: bad time \"soon\" (seconds >= 0)");
+  ASSERT_TRUE(parse_gpio_fault("estop@1.25", 0, ev, error)) << error;
+  ASSERT_EQ(ev.size(), 1u);
+  EXPECT_EQ(ev[0].kind, Kind::estop);
+  EXPECT_TRUE(ev[0].on);
+  EXPECT_EQ(ev[0].t_s, 1.25);
+  ev.clear();
+  ASSERT_TRUE(parse_gpio_fault("limit-1@2:0.5", 2, ev, error)) << error;
+  ASSERT_EQ(ev.size(), 2u);  // on at 2, off at 2.5
+  EXPECT_EQ(ev[0].kind, Kind::limit);
+  EXPECT_EQ(ev[0].limit, 1);
+  EXPECT_TRUE(ev[0].on);
+  EXPECT_EQ(ev[1].limit, 1);
+  EXPECT_FALSE(ev[1].on);
+  EXPECT_EQ(ev[1].t_s, 2.5);
+  ev.clear();
+  ASSERT_TRUE(parse_gpio_fault("hold@3:0.25", 0, ev, error)) << error;
+  ASSERT_TRUE(parse_gpio_fault("arc-lost@0.8", 0, ev, error)) << error;
+  ASSERT_EQ(ev.size(), 2u);
+  EXPECT_EQ(ev[0].kind, Kind::hold);
+  EXPECT_EQ(ev[0].duration_s, 0.25);
+  EXPECT_EQ(ev[1].kind, Kind::arc_lost);
+}
+
+TEST(GpioFault, BadSpecsAppendNothing) {
+  std::vector<GpioEvent> ev;
+  std::string error;
+  EXPECT_FALSE(parse_gpio_fault("estop", 0, ev, error));
+  EXPECT_EQ(error, "--fault estop: expected KIND@SECONDS[:DURATION]");
+  EXPECT_FALSE(parse_gpio_fault("melt@1", 0, ev, error));
+  EXPECT_EQ(error, "--fault melt@1: unknown GPIO fault \"melt\"");
+  EXPECT_FALSE(parse_gpio_fault("estop@soon", 0, ev, error));
+  EXPECT_EQ(error, "--fault estop@soon: bad time \"soon\" (seconds >= 0)");
+  EXPECT_FALSE(parse_gpio_fault("hold@1:0", 0, ev, error));
+  EXPECT_EQ(error, "--fault hold@1:0: bad duration \"0\" (seconds > 0)");
+  EXPECT_FALSE(parse_gpio_fault("limit-2@1", 2, ev, error));
+  EXPECT_EQ(error, "--fault limit-2@1: no limit line 2 (2 limit lines)");
+  EXPECT_FALSE(parse_gpio_fault("no-arc@1:2", 0, ev, error));
+  EXPECT_EQ(error, "--fault no-arc@1:2: no-arc takes no duration");
+  EXPECT_TRUE(ev.empty());
 }
 
 }  // namespace

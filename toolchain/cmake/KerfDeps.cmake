@@ -43,7 +43,7 @@ function(kerf_find_libmodbus)
     set(KERF_HAVE_MODBUS ON PARENT_SCOPE)
   else()
     message(STATUS "kerf: libmodbus not found for ${CMAKE_SYSTEM_PROCESSOR}: the Modbus "
-                   "backend, sim/ and `kerf sim` are not built (install libmodbus-dev for the target)")
+                   "backend, the simulated motion board and `kerf sim` are not built (install libmodbus-dev for the target)")
     set(KERF_HAVE_MODBUS OFF PARENT_SCOPE)
   endif()
 endfunction()

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "kerf/hal/gpio/gpio_lines.hpp"
 
@@ -15,6 +16,8 @@ struct Line;  // one requested line
 
 const char* name();
 
+// The chips there are, as device paths (gpio_lines::list_chip_paths for /dev).
+std::vector<std::string> chip_paths();
 Chip* chip_open(const char* path);
 void chip_close(Chip* chip);
 // Name, label and line count (path is the caller's).

@@ -142,7 +142,7 @@ OpenChip* GpiodGpio::chip_for(const std::string& role, const std::string& spec,
       error = gpio_lines::no_such_chip(role, spec);
     return c;
   }
-  for (const std::string& p : gpio_lines::list_chip_paths()) {
+  for (const std::string& p : api::chip_paths()) {
     OpenChip* c = open_path(role, p, error);
     if (c == nullptr) return nullptr;
     if (c->info.label == spec) return c;
@@ -169,7 +169,7 @@ bool GpiodGpio::resolve(const LineRole& r, OpenChip*& chip, int& offset, std::st
     if (c == nullptr) return false;
     searched.push_back(static_cast<std::size_t>(c - chips_.data()));
   } else {
-    for (const std::string& p : gpio_lines::list_chip_paths()) {
+    for (const std::string& p : api::chip_paths()) {
       OpenChip* c = open_path(r.role, p, error);
       if (c == nullptr) return false;
       searched.push_back(static_cast<std::size_t>(c - chips_.data()));

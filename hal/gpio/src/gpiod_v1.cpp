@@ -17,6 +17,8 @@ struct Line {
 
 const char* name() { return "libgpiod 1.6"; }
 
+std::vector<std::string> chip_paths() { return gpio_lines::list_chip_paths("/dev"); }
+
 Chip* chip_open(const char* path) {
   gpiod_chip* c = ::gpiod_chip_open(path);
   return c == nullptr ? nullptr : new Chip{c};

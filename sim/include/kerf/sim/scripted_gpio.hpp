@@ -28,16 +28,20 @@ struct GpioEvent {
 };
 
 // The script format (sim/README.md): one event per line, `AT_SECONDS EVENT
-// [ARGS]`, `#` starts a comment; times never go backwards. All or nothing:
-// on error `out` is untouched and `error` is "SOURCE:LINE: reason".
+// [ARGS]`, `#` starts a comment; times never go backwards. The events are
+// appended to `out` (after --fault events, say; ScriptedGpio::add sorts them).
+// All or nothing: on error `out` is untouched and `error` is "SOURCE:LINE: reason".
 bool parse_gpio_script(std::string_view text, const std::string& source, std::size_t limit_count,
                        std::vector<GpioEvent>& out, std::string& error);
 bool load_gpio_script(const std::string& path, std::size_t limit_count,
                       std::vector<GpioEvent>& out, std::string& error);
-// One event from the command line, `EVENT[:ARG...]@SECONDS`, e.g.
-// `estop:on@1.25`, `limit:0:on@2`, `arc-lost@0.8`, `hold@3`.
-bool parse_gpio_fault(std::string_view spec, std::size_t limit_count, GpioEvent& out,
-                      std::string& error);
+// A fault from the command line, in `kerf sim --fault`'s KIND@SECONDS[:DURATION]
+// form: `estop@1.25` (on from then; with :D off again D seconds later),
+// `limit-N@T[:D]` likewise, `arc-lost@T`, `no-arc@T`, `hold@T[:D]`,
+// `cycle-start@T[:D]` (a press of D seconds, default press_s). Appends one or
+// two events to `out`; on error appends nothing.
+bool parse_gpio_fault(std::string_view spec, std::size_t limit_count,
+                      std::vector<GpioEvent>& out, std::string& error);
 
 struct TorchChange {
   double t_s;
