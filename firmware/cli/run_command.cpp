@@ -152,6 +152,7 @@ int run_run(const RunOptions& opts) {
   sum.link_errors = r.link_errors;
   sum.duration_s = loop.stats().cycles * cfg.machine.cycle;
   sum.rt = loop.stats().describe();
+  sum.rt_histogram = loop.stats().histogram();
   sum.executed_total = journal ? journal->state().executed_total : r.completed_this_run;
   sum.duplicates = journal ? journal->state().duplicates : 0;
   sum.runs = journal ? journal->state().runs : 1;
@@ -162,7 +163,7 @@ int run_run(const RunOptions& opts) {
   std::string line = io::format_sim_summary(sum);
   line.replace(0, std::strlen("kerf sim"), "kerf run");
   std::fputs(line.c_str(), stdout);
-  std::fprintf(stdout, "kerf run: %s\n", sum.rt.c_str());
+  std::fprintf(stdout, "kerf run: %s; wake-up lateness:\n%s", sum.rt.c_str(), sum.rt_histogram.c_str());
   if (r.state != control::State::done) {
     std::fprintf(stderr, "kerf: run: stopped after segment %lld: %s\n", static_cast<long long>(sum.last_executed),
                  r.reason.c_str());

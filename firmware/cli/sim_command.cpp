@@ -209,6 +209,7 @@ int run_sim(const SimOptions& given) {
   sum.duration_s = res.sim_s;
   sum.wall_s = res.wall_s;
   sum.rt = res.rt;
+  sum.rt_histogram = res.rt_histogram;
   if (journal) {
     sum.executed_total = journal->state().executed_total;
     sum.duplicates = journal->state().duplicates;

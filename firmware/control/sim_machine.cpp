@@ -142,7 +142,10 @@ SimMachineResult run_sim_machine(const Job& job, const ControllerConfig& ccfg, c
       break;
     }
   }
-  if (mcfg.speed > 0.0) res.rt = pace.stats().describe();
+  if (mcfg.speed > 0.0) {
+    res.rt = pace.stats().describe();
+    res.rt_histogram = pace.stats().histogram();
+  }
   res.run = ctl.report();
   res.board = board.status();
   res.run.stopped_at = res.board.position;  // where the axes really came to rest

@@ -51,7 +51,8 @@ struct SimMachineResult {
   std::uint64_t link_resends = 0;
   double sim_s = 0.0;
   double wall_s = 0.0;
-  std::string rt;  // the paced loop's statistics (--speed > 0), hal::RtStats::describe()
+  std::string rt;            // the paced loop's statistics (--speed > 0), hal::RtStats::describe()
+  std::string rt_histogram;  // and its histogram
 };
 
 // The board's motion settings and the controller period from a machine configuration.

@@ -57,7 +57,19 @@ std::string format_sim_json(const SimSummary& s) {
   std::string cut_to = "null";
   if (s.has_cut_to)
     cut_to = "{\"segment\": " + std::to_string(s.cut_to.segment + 1) + ", \"at\": " + point(s.cut_to.at) + "}";
-  char buf[2048];
+  std::string histogram = "null";
+  if (!s.rt_histogram.empty()) {  // "[8, 16) us  4123" lines as a JSON array of strings
+    histogram = "[";
+    std::size_t from = 0;
+    while (from < s.rt_histogram.size()) {
+      std::size_t nl = s.rt_histogram.find('\n', from);
+      if (nl == std::string::npos) nl = s.rt_histogram.size();
+      if (nl > from) histogram += (histogram.size() > 1 ? ", " : "") + json_string(s.rt_histogram.substr(from, nl - from));
+      from = nl + 1;
+    }
+    histogram += "]";
+  }
+  char buf[4096];
   std::snprintf(
       buf, sizeof buf,
       "{\n  \"state\": \"%s\",\n  \"fault\": %s,\n  \"link\": \"%s\",\n  \"paths\": %zu,\n  \"pierces\": %zu,\n"
@@ -65,14 +77,14 @@ std::string format_sim_json(const SimSummary& s) {
       "  \"duplicates\": %llu,\n  \"last_executed_segment\": %lld,\n  \"resumed_from_segment\": %zu,\n"
       "  \"runs\": %u,\n  \"cut_to\": %s,\n  \"torch_on\": %s,\n  \"torch_off_at\": %s,\n  \"stopped_at\": %s,\n"
       "  \"link_errors\": %llu,\n  \"board_duplicates_dropped\": %u,\n  \"max_path_deviation_mm\": %.6f,\n"
-      "  \"duration_s\": %.6f,\n  \"wall_s\": %.3f,\n  \"rt\": %s\n}\n",
+      "  \"duration_s\": %.6f,\n  \"wall_s\": %.3f,\n  \"rt\": %s,\n  \"rt_histogram\": %s\n}\n",
       s.state.c_str(), s.reason.empty() ? "null" : json_string(s.reason).c_str(), s.link.c_str(), s.paths,
       s.pierces, s.planned, s.executed, static_cast<unsigned long long>(s.executed_total),
       static_cast<unsigned long long>(s.duplicates), static_cast<long long>(s.last_executed), s.resumed_from,
       s.runs, cut_to.c_str(), s.torch_on ? "true" : "false",
       s.torch_off_valid ? point(s.torch_off_at).c_str() : "null", point(s.stopped_at).c_str(),
       static_cast<unsigned long long>(s.link_errors), s.board_duplicates, s.max_path_deviation_mm,
-      s.duration_s, s.wall_s, s.rt.empty() ? "null" : json_string(s.rt).c_str());
+      s.duration_s, s.wall_s, s.rt.empty() ? "null" : json_string(s.rt).c_str(), histogram.c_str());
   return buf;
 }
 

@@ -34,6 +34,7 @@ struct SimSummary {
   double duration_s = 0.0;  // simulated
   double wall_s = 0.0;
   std::string rt;           // the cycle loop's statistics, when paced in real time
+  std::string rt_histogram; // its wake-up lateness histogram, one bin per line
 };
 
 // Largest distance of an executed sample (running job segment k + 1) from fitted piece k.

@@ -44,5 +44,6 @@ check(r2["state"] == "done", "the resumed run finished")
 check(r2["segments_executed_total"] == r2["segments_planned"], "every segment once in all")
 check(r2["duplicates"] == 0, "no duplicates")
 check(r1["rt"] is not None and "overruns" in r1["rt"], "the loop's statistics are reported")
+check(isinstance(r1["rt_histogram"], list) and len(r1["rt_histogram"]) >= 1, "the lateness histogram is reported")
 print("ok:", r2["segments_executed_total"], "of", r2["segments_planned"], "segments over two runs;", r2["rt"])
 PY
