@@ -37,7 +37,7 @@ struct SimMachineConfig {
   double speed = 0.0;           // simulated s per wall s; 0 = as fast as possible
   Vec2<double> start{};         // where the axes are at power-up
   std::vector<BoardFault> faults;
-  double max_sim_s = 4 * 3600.0;
+  double max_sim_s = 600.0;     // give up (a stuck run, a hold never released) after this
 };
 
 struct SimMachineResult {
