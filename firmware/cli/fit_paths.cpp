@@ -2,6 +2,8 @@
 
 #include "cli/fit_job.hpp"
 
+#include <cstdio>
+
 namespace kerf::cli {
 
 bool fit_paths(const io::PointFile& in, const std::string& criterion, double tol, double feed_mm_s,
@@ -41,6 +43,31 @@ bool fit_paths(const io::PointFile& in, const std::string& criterion, double tol
     out.job.paths.push_back(std::move(path));
   }
   status = Status::ok;
+  return true;
+}
+
+int fit_paths_or_say(const io::PointFile& in, const std::string& criterion, double tol, double feed_mm_s,
+                     FittedJob& out) {
+  std::string error;
+  Status status = Status::ok;
+  if (fit_paths(in, criterion, tol, feed_mm_s, out, error, status)) return 0;
+  std::fprintf(stderr, "kerf: %s: %s\n", in.file.c_str(), error.c_str());
+  return status == Status::invalid_argument || status == Status::degenerate ? 2 : 1;
+}
+
+bool open_journal(const std::string& path, bool resume, const control::Job& job,
+                  std::unique_ptr<control::Journal>& out, control::ResumePoint& from) {
+  from = control::ResumePoint{};
+  from.from = job.paths.front().start;
+  out.reset();
+  if (path.empty()) return true;
+  std::string error;
+  out = resume ? control::Journal::resume(path, job.id(), error) : control::Journal::create(path, job.id(), error);
+  if (!out) {
+    std::fprintf(stderr, "kerf: --journal: %s\n", error.c_str());
+    return false;
+  }
+  if (resume) from = control::resume_point(job, out->state());
   return true;
 }
 

@@ -3,10 +3,12 @@
 // first point. Shared by `kerf sim` and `kerf run`.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "control/job.hpp"
+#include "control/journal.hpp"
 #include "io/point_file.hpp"
 #include "kerf/core/status.hpp"
 #include "kerf/fit/fit.hpp"
@@ -22,5 +24,17 @@ struct FittedJob {
 // On failure returns false with `error` ("path N (line L): reason") and `status`.
 bool fit_paths(const io::PointFile& in, const std::string& criterion, double tol, double feed_mm_s,
                FittedJob& out, std::string& error, Status& status);
+
+// fit_paths for a command: on failure prints "kerf: FILE: reason" and
+// returns the exit code (2 for bad input, 1 otherwise); 0 on success.
+int fit_paths_or_say(const io::PointFile& in, const std::string& criterion, double tol, double feed_mm_s,
+                     FittedJob& out);
+
+// The job's journal for a run: none (empty path; the run starts at the
+// job's beginning), a new one, or with `resume` the one a previous run left,
+// and the point this run starts from. On failure prints
+// "kerf: --journal: reason" and returns false.
+bool open_journal(const std::string& path, bool resume, const control::Job& job,
+                  std::unique_ptr<control::Journal>& out, control::ResumePoint& from);
 
 }  // namespace kerf::cli

@@ -81,23 +81,10 @@ int run_run(const RunOptions& opts) {
   io::PointFile in;
   if (!read_job(opts.job, cfg.fit.criterion, in)) return kExitUsage;
   FittedJob fitted;
-  Status fit_status = Status::ok;
-  if (!fit_paths(in, cfg.fit.criterion, cfg.fit.tol, cfg.cut.feed / 60.0, fitted, error, fit_status)) {
-    std::fprintf(stderr, "kerf: %s: %s\n", in.file.c_str(), error.c_str());
-    return fit_status == Status::invalid_argument || fit_status == Status::degenerate ? kExitUsage : kExitFailure;
-  }
+  if (const int rc = fit_paths_or_say(in, cfg.fit.criterion, cfg.fit.tol, cfg.cut.feed / 60.0, fitted); rc != 0) return rc;
   std::unique_ptr<control::Journal> journal;
   control::ResumePoint from;
-  from.from = fitted.job.paths.front().start;
-  if (!opts.journal.empty()) {
-    journal = opts.resume ? control::Journal::resume(opts.journal, fitted.job.id(), error)
-                          : control::Journal::create(opts.journal, fitted.job.id(), error);
-    if (!journal) {
-      std::fprintf(stderr, "kerf: --journal: %s\n", error.c_str());
-      return kExitUsage;
-    }
-    if (opts.resume) from = control::resume_point(fitted.job, journal->state());
-  }
+  if (!open_journal(opts.journal, opts.resume, fitted.job, journal, from)) return kExitUsage;
   std::unique_ptr<hal::Gpio> gpio = open_gpio(cfg, opts.sim_gpio, error);
   if (!gpio) {
     std::fprintf(stderr, "kerf: run: %s\n", error.c_str());
@@ -133,30 +120,13 @@ int run_run(const RunOptions& opts) {
     }
   }
   const control::RunReport& r = ctl.report();
-  io::SimSummary sum;
+  io::SimSummary sum =
+      io::summarise_run(r, fitted.job.paths.size(), config::to_string(cfg.link.kind), opts.resume, journal.get());
   sum.simulated = false;
-  sum.state = control::to_string(r.state);
-  sum.reason = r.reason;
-  sum.link = config::to_string(cfg.link.kind);
-  sum.paths = fitted.job.paths.size();
-  sum.pierces = r.pierces;
-  sum.planned = r.planned;
-  sum.executed = r.completed_this_run;
-  sum.last_executed = r.last_completed + 1;
-  sum.resumed_from = opts.resume ? from.first + 1 : 0;
-  sum.has_cut_to = r.has_cut_to;
-  sum.cut_to = r.cut_to;
   sum.torch_on = ctl.torch();
-  sum.torch_off_valid = r.torch_off_valid;
-  sum.torch_off_at = r.torch_off_at;
-  sum.stopped_at = r.stopped_at;
-  sum.link_errors = r.link_errors;
-  sum.duration_s = loop.stats().cycles * cfg.machine.cycle;
+  sum.duration_s = static_cast<double>(loop.stats().cycles) * cfg.machine.cycle;
   sum.rt = loop.stats().describe();
   sum.rt_histogram = loop.stats().histogram();
-  sum.executed_total = journal ? journal->state().executed_total : r.completed_this_run;
-  sum.duplicates = journal ? journal->state().duplicates : 0;
-  sum.runs = journal ? journal->state().runs : 1;
   if (!opts.report.empty() && !io::write_output(opts.report, io::format_sim_json(sum))) {
     std::fprintf(stderr, "kerf: --report: cannot write %s: %s\n", opts.report.c_str(), std::strerror(errno));
     return kExitFailure;

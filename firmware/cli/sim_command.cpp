@@ -149,25 +149,11 @@ int run_sim(const SimOptions& given) {
     return kExitUsage;
   }
   FittedJob fitted;
-  Status fit_status = Status::ok;
-  if (!fit_paths(in, criterion, tol, feed / 60.0, fitted, error, fit_status)) {
-    std::fprintf(stderr, "kerf: %s: %s\n", in.file.c_str(), error.c_str());
-    return fit_status == Status::invalid_argument || fit_status == Status::degenerate ? kExitUsage
-                                                                                     : kExitFailure;
-  }
+  if (const int rc = fit_paths_or_say(in, criterion, tol, feed / 60.0, fitted); rc != 0) return rc;
 
   std::unique_ptr<control::Journal> journal;
   control::ResumePoint from;
-  from.from = fitted.job.paths.front().start;
-  if (!opts.journal.empty()) {
-    journal = opts.resume ? control::Journal::resume(opts.journal, fitted.job.id(), error)
-                          : control::Journal::create(opts.journal, fitted.job.id(), error);
-    if (!journal) {
-      std::fprintf(stderr, "kerf: --journal: %s\n", error.c_str());
-      return kExitUsage;
-    }
-    if (opts.resume) from = control::resume_point(fitted.job, journal->state());
-  }
+  if (!open_journal(opts.journal, opts.resume, fitted.job, journal, from)) return kExitUsage;
 
   sim::ScriptedGpio gpio(gopts);
   if (!gpio.add(events, error)) return usage_error("--fault: " + error);
@@ -200,35 +186,19 @@ int run_sim(const SimOptions& given) {
     return kExitFailure;
   }
 
-  io::SimSummary sum;
-  sum.state = control::to_string(res.run.state);
-  sum.reason = res.run.reason;
-  sum.link = link;
-  sum.paths = fitted.job.paths.size();
-  sum.pierces = res.run.pierces;
-  sum.planned = res.run.planned;
+  io::SimSummary sum = io::summarise_run(res.run, fitted.job.paths.size(), link, opts.resume, journal.get());
+  // The board's truth: what it executed (with the link down it may run on
+  // past what the controller saw and journaled).
   sum.executed = res.executed.size();
-  sum.last_executed = res.run.last_completed + 1;
-  sum.resumed_from = opts.resume ? from.first + 1 : 0;
-  sum.has_cut_to = res.run.has_cut_to;
-  sum.cut_to = res.run.cut_to;
   sum.torch_on = gpio.torch();
-  sum.torch_off_valid = res.run.torch_off_valid;
-  sum.torch_off_at = res.run.torch_off_at;
-  sum.stopped_at = res.run.stopped_at;
-  sum.link_errors = res.run.link_errors;
   sum.board_duplicates = res.board.duplicates;
   sum.max_path_deviation_mm = io::max_path_deviation(res.trace, fitted.pieces);
   sum.duration_s = res.sim_s;
   sum.wall_s = res.wall_s;
   sum.rt = res.rt;
   sum.rt_histogram = res.rt_histogram;
-  if (journal) {
-    sum.executed_total = journal->state().executed_total;
-    sum.duplicates = journal->state().duplicates;
-    sum.runs = journal->state().runs;
-  } else {
-    std::set<std::int64_t> seen(res.executed.begin(), res.executed.end());
+  if (!journal) {  // no journal: count repeats in this run's own record
+    const std::set<std::int64_t> seen(res.executed.begin(), res.executed.end());
     sum.executed_total = res.executed.size();
     sum.duplicates = res.executed.size() - seen.size();
   }

@@ -4,6 +4,8 @@
 // their line; the config reports the first one in the file.
 #pragma once
 
+#include "io/quote.hpp"
+
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -37,9 +39,7 @@ std::uint32_t line_of(const toml::node& n, std::uint32_t fallback);
 // A number as written in messages: the shortest form that reads back exactly.
 std::string format_number(double v);
 
-// A string as shown in messages: quoted, non-printable bytes escaped, long
-// strings cut short.
-std::string quote(std::string_view s);
+using io::quote;
 
 class TableReader {
  public:

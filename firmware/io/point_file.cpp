@@ -1,5 +1,7 @@
 #include "io/point_file.hpp"
 
+#include "io/quote.hpp"
+
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
@@ -17,28 +19,6 @@ constexpr std::size_t kMaxPoints = std::numeric_limits<std::uint32_t>::max() / 2
 
 bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
-// A token as it may be shown in a message: printable ASCII, the rest escaped,
-// long tokens cut short.
-std::string quote(std::string_view s) {
-  constexpr std::size_t kMax = 40;
-  std::string q = "\"";
-  for (std::size_t i = 0; i < s.size() && i < kMax; ++i) {
-    const auto c = static_cast<unsigned char>(s[i]);
-    if (c == '"' || c == '\\') {
-      q += '\\';
-      q += static_cast<char>(c);
-    } else if (c >= 0x20 && c < 0x7f) {
-      q += static_cast<char>(c);
-    } else {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\x%02x", static_cast<unsigned>(c));
-      q += buf;
-    }
-  }
-  if (s.size() > kMax) q += "...";
-  q += '"';
-  return q;
-}
 
 // Splits one line (comment already removed) into its fields. Fields are
 // separated by blanks or by one comma with optional blanks around it. Returns

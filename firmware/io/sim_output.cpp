@@ -15,6 +15,30 @@ double max_path_deviation(const std::vector<sim::TraceSample>& trace,
   return worst;
 }
 
+SimSummary summarise_run(const control::RunReport& r, std::size_t paths, const std::string& link, bool resumed,
+                         const control::Journal* journal) {
+  SimSummary s;
+  s.state = control::to_string(r.state);
+  s.reason = r.reason;
+  s.link = link;
+  s.paths = paths;
+  s.pierces = r.pierces;
+  s.planned = r.planned;
+  s.executed = r.completed_this_run;
+  s.last_executed = r.last_completed + 1;
+  s.resumed_from = resumed ? r.first + 1 : 0;
+  s.has_cut_to = r.has_cut_to;
+  s.cut_to = r.cut_to;
+  s.torch_off_valid = r.torch_off_valid;
+  s.torch_off_at = r.torch_off_at;
+  s.stopped_at = r.stopped_at;
+  s.link_errors = r.link_errors;
+  s.executed_total = journal ? journal->state().executed_total : r.completed_this_run;
+  s.duplicates = journal ? journal->state().duplicates : 0;
+  s.runs = journal ? journal->state().runs : 1;
+  return s;
+}
+
 std::string format_trace_csv(const std::vector<sim::TraceSample>& trace) {
   std::string out = "t_s,x_mm,y_mm,segment,torch\n";
   char line[160];

@@ -38,6 +38,12 @@ struct SimSummary {
   std::string rt_histogram; // its wake-up lateness histogram, one bin per line
 };
 
+// The summary's fields that come from the controller's report and the
+// journal (when there is one; otherwise from this run alone). `resumed`:
+// this run started from a journal.
+SimSummary summarise_run(const control::RunReport& r, std::size_t paths, const std::string& link, bool resumed,
+                         const control::Journal* journal);
+
 // Largest distance of an executed sample (running job segment k + 1) from fitted piece k.
 double max_path_deviation(const std::vector<sim::TraceSample>& trace,
                           const std::vector<fit::Piece<double>>& pieces);
