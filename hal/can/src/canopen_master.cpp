@@ -275,6 +275,11 @@ AxisError CanOpenMaster::setup_node(std::size_t axis) {
   if (const AxisError e = sdo_read(axis, kModeDisplay, 0, mode); e != AxisError::none) return e;
   if (static_cast<std::int8_t>(mode) != kModeCsp)
     return fail(AxisError::sdo_abort, axis, "the drive does not display CSP mode (0x6061) after setup");
+  // The first RPDO already carries the actual position: no target is ever
+  // away from where the axis stands, enabled or not.
+  std::uint32_t actual = 0;
+  if (const AxisError e = sdo_read(axis, kActualPosition, 0, actual); e != AxisError::none) return e;
+  nodes_[axis].st.actual = nodes_[axis].st.target = static_cast<std::int32_t>(actual);
   return AxisError::none;
 }
 

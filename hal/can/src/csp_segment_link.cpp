@@ -182,7 +182,7 @@ void CspSegmentLink::reset_locked() {
 
 bool CspSegmentLink::has_work_locked() const {
   if (reset_axes_) return true;
-  if (state_ == BoardState::fault || state_ == BoardState::hold) return moving_;
+  if (state_ == BoardState::fault || state_ == BoardState::hold) return moving_ || !settled_;
   if (state_ != BoardState::running) return false;
   return interp_.free_slots() == 0 || finish_;
 }
@@ -198,6 +198,9 @@ void CspSegmentLink::cycle() {
       std::snprintf(error_, sizeof error_, "fault reset failed: %s", axes_.last_error());
       faults_ |= fault_bit(e);
     } else {
+      // Enabling put the targets at the actual positions: start from there.
+      target_[0] = axes_.axis(0).target;
+      target_[1] = axes_.axis(1).target;
       reset_locked();
     }
     changed_.notify_all();
@@ -232,10 +235,12 @@ void CspSegmentLink::cycle() {
   const AxisState& ay = axes_.axis(1);
   position_ = {static_cast<double>(ax.actual) / cfg_.counts_per_mm,
                static_cast<double>(ay.actual) / cfg_.counts_per_mm};
+  // At rest means the drives have caught up with the last setpoint.
+  settled_ = ax.actual == tx && ay.actual == ty;
   if (e != AxisError::none) fault_locked(fault_bit(e), axes_.last_error());
   executing_ = state_ == BoardState::fault ? 0 : running;
   if (state_ != BoardState::fault) torch_ = running != 0 && torch_of_[running % torch_of_.size()] != 0;
-  if (state_ == BoardState::running && finish_ && interp_.queued() == 0 && !moving_) {
+  if (state_ == BoardState::running && finish_ && interp_.queued() == 0 && !moving_ && settled_) {
     state_ = BoardState::done;
     torch_ = false;
   }

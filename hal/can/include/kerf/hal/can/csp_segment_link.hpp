@@ -91,6 +91,7 @@ class CspSegmentLink final : public SegmentLink {
   bool finish_ = false;
   bool torch_ = false;
   bool moving_ = false;  // the head travelled last period
+  bool settled_ = true;  // the drives' actual positions equal the last setpoint
   bool reset_axes_ = false;  // fault reset: the drives are reset by the next cycle
   Vec2<double> tail_end_{};
   std::int64_t target_[2]{};
