@@ -369,6 +369,12 @@ AxisError CanOpenMaster::cycle() {
   if (const AxisError e = send(sync); e != AxisError::none && err == AxisError::none) err = e;
   ++counters_.cycles;
   next_sync_us_ += cfg_.sync_us;
+  // More than a period late (the host stalled): start again from now rather
+  // than send a burst of SYNCs to catch up.
+  if (const std::uint64_t now = bus_.now_us(); now > next_sync_us_ + cfg_.sync_us) {
+    ++counters_.late_syncs;
+    next_sync_us_ = now;
+  }
   if (err == AxisError::none) return err;
   if (faulted_) return AxisError::none;  // already reported; wait for fault_reset
   faulted_ = true;

@@ -39,6 +39,7 @@ struct AxisState {
 // Frames refused as untrustworthy, by kind.
 struct AxisCounters {
   std::uint64_t cycles = 0;
+  std::uint64_t late_syncs = 0;   // SYNC deadlines missed by more than a period (wall clock only)
   std::uint64_t bad_dlc = 0;      // a known COB-ID with the wrong length
   std::uint64_t unknown_cob = 0;  // a COB-ID no configured node uses
   std::uint64_t sdo_aborts = 0;
