@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "control/can_sim_link.hpp"
 #include "kerf/hal/can/canopen_master.hpp"
 #include "kerf/hal/can/csp_segment_link.hpp"
 #include "kerf/hal/can/socket_can_bus.hpp"
@@ -234,6 +235,49 @@ TEST(HilVcan, MalformedFramesOnTheWireAreCounted) {
   for (int i = 0; i < 20; ++i) rig.link->cycle();
   EXPECT_EQ(rig.master->counters().bad_dlc, 1u);
   EXPECT_EQ(rig.master->counters().unknown_cob, 1u);
+}
+
+}  // namespace
+}  // namespace kerf::test
+
+namespace kerf::test {
+namespace {
+
+// `kerf sim --link can --iface vcan0`: the entry point with the drives on a
+// thread of this process, on their own socket.
+TEST(HilVcan, KerfSimLinkOverVcan0) {
+  control::CanSimOptions o;
+  o.iface = "vcan0";
+  o.sync_ms = 2;
+  o.candump_path = out_dir() + "/hil_sim_link.candump";
+  std::string err;
+  auto link = control::make_can_sim_link(o, err);
+  ASSERT_TRUE(link) << err;
+  hal::BoardStatus st;
+  for (std::uint32_t k = 1; k <= 3; ++k) {
+    hal::SegmentCommand s;
+    s.seq = k;
+    s.end = {5.0 * k, 1.0 * k};
+    s.feed = 100.0;
+    ASSERT_EQ(link->push(s, st), LinkError::none) << link->last_error();
+  }
+  ASSERT_EQ(link->command(hal::Command::start), LinkError::none);
+  ASSERT_EQ(link->command(hal::Command::finish), LinkError::none);
+  link->status(st);
+  for (int i = 0; i < 20000 && st.state == BoardState::running; ++i) {
+    link->tick();
+    link->status(st);
+  }
+  ASSERT_EQ(st.state, BoardState::done) << link->last_error();
+  EXPECT_DOUBLE_EQ(st.position.x, 15.0);
+  EXPECT_DOUBLE_EQ(st.position.y, 3.0);
+  link->inject(control::CanFaultKind::bus_off);
+  for (int i = 0; i < 1000 && st.state != BoardState::fault; ++i) {
+    link->tick();
+    link->status(st);
+  }
+  EXPECT_EQ(st.state, BoardState::fault);
+  EXPECT_TRUE(st.faults & hal::kFaultBusOff);
 }
 
 }  // namespace
