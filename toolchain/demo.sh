@@ -1,24 +1,21 @@
 #!/usr/bin/env bash
-# The main job: installs what is needed, builds the host preset, fits the
-# ESGI report's parabola with the report's tolerance (vertex criterion, then
-# the whole cut inside the band), and runs the band fit on the simulated
-# motion board over Modbus TCP at constant feed, writing a trace and a report.
+# The main job: installs what is needed, builds the host preset, then runs
+# `kerf sim` with no arguments: the built-in demo job (a plate with a hole, a
+# slot, a window and its outer contour, firmware/examples/demo_job.txt) on
+# the simulated machine. The controller fits each path, travels with the
+# torch off, pierces (torch on the simulated GPIO, arc-OK, pierce delay) and
+# streams the arcs over Modbus TCP to the simulated motion board at constant
+# feed. It writes the trace, an SVG plot and the report to build/demo/.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
 bash toolchain/setup.sh
 cmake --preset host
 cmake --build --preset host
-kerf=build/host/firmware/kerf
-job=firmware/examples/parabola.txt
+kerf=$PWD/build/host/firmware/kerf
 out=build/demo
 mkdir -p "$out"
-
-echo "== kerf fit --tol 0.0183 (vertex criterion, the report's rule)"
-"$kerf" fit --tol 0.0183 "$job"
-echo "== kerf fit --criterion band --tol 0.0183 (the whole cut within 0.0183 mm)"
-"$kerf" fit --criterion band --tol 0.0183 "$job"
-echo "== kerf sim: the band fit streamed over Modbus TCP to the simulated board"
-"$kerf" sim --link modbus-tcp --criterion band --tol 0.0183 --feed 3000 \
-  --trace "$out/trace.csv" --report "$out/report.json" "$job"
-echo "trace: $out/trace.csv, report: $out/report.json"
+cd "$out"
+echo "== kerf sim (the demo job on the simulated machine)"
+"$kerf" sim
+echo "plot: $out/kerf-sim.svg, trace: $out/kerf-sim.csv, report: $out/kerf-sim.json"

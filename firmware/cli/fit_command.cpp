@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <cctype>
 #include <cerrno>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -134,51 +135,70 @@ int run_fit(const FitOptions& opts) {
 
   const std::size_t n = in.points.size();
   const Span<const Vec2<double>> pts(in.points.data(), n);
+  // A job of several paths (blank-line separated) is fitted path by path.
+  std::vector<std::size_t> begins = in.path_begin;
+  if (begins.empty()) begins.push_back(0);
+  if (by_pieces && begins.size() > 1)
+    return usage_error("--pieces: " + in.file + " holds " + std::to_string(begins.size()) +
+                       " paths; a piece budget is for one path (use --tol)");
   std::vector<fit::Piece<double>> piece_store(n - 1);
-  const Span<fit::Piece<double>> dst(piece_store.data(), piece_store.size());
-
-  const auto t0 = std::chrono::steady_clock::now();
-  Result<fit::Fit<double>> r = Status::invalid_argument;
-  if (band) {
-    io::BandStorage storage(n);
-    const Span<const fit::BandWidth<double>> ws_widths(widths.data(), n);
-    r = by_pieces ? fit::fit_band_min_error(pts, ws_widths, pieces, storage.workspace(), dst)
-                  : fit::fit_band_min_count(pts, ws_widths, storage.workspace(), dst);
-  } else {
-    io::FitStorage storage(n);
-    r = by_pieces ? fit::fit_min_error(pts, pieces, method, storage.workspace(), dst)
-                  : fit::fit_min_count(pts, tol, method, storage.workspace(), dst);
-  }
-  const auto t1 = std::chrono::steady_clock::now();
-  if (!r.ok()) {
-    std::size_t where = 0;
-    if (fit::validate_points(pts, where) != Status::ok) {  // the reader should have caught it
-      const std::size_t line = where < n ? in.point_lines[where] : 0;
-      std::fprintf(stderr, "%s:%zu: %s\n", in.file.c_str(), line, to_string(r.status()));
-      return kExitUsage;
+  fit::Fit<double> total{};
+  std::size_t used = 0;
+  double ms = 0.0;
+  for (std::size_t p = 0; p < begins.size(); ++p) {
+    const std::size_t b = begins[p];
+    const std::size_t m = (p + 1 < begins.size() ? begins[p + 1] : n) - b;
+    const Span<const Vec2<double>> path(in.points.data() + b, m);
+    const Span<fit::Piece<double>> dst(piece_store.data() + used, m - 1);
+    const auto t0 = std::chrono::steady_clock::now();
+    Result<fit::Fit<double>> r = Status::invalid_argument;
+    if (band) {
+      io::BandStorage storage(m);
+      const Span<const fit::BandWidth<double>> ws_widths(widths.data() + b, m);
+      r = by_pieces ? fit::fit_band_min_error(path, ws_widths, pieces, storage.workspace(), dst)
+                    : fit::fit_band_min_count(path, ws_widths, storage.workspace(), dst);
+    } else {
+      io::FitStorage storage(m);
+      r = by_pieces ? fit::fit_min_error(path, pieces, method, storage.workspace(), dst)
+                    : fit::fit_min_count(path, tol, method, storage.workspace(), dst);
     }
-    if (by_pieces && r.status() == Status::infeasible) {
-      std::fprintf(stderr, "kerf: %s: no fit with %s\n", in.file.c_str(),
-                   count(pieces, "piece", "pieces").c_str());
+    ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    const std::string where = begins.size() > 1 ? " (path " + std::to_string(p + 1) + ")" : "";
+    if (!r.ok()) {
+      std::size_t at = 0;
+      if (fit::validate_points(path, at) != Status::ok) {  // the reader should have caught it
+        const std::size_t line = at < m ? in.point_lines[b + at] : 0;
+        std::fprintf(stderr, "%s:%zu: %s\n", in.file.c_str(), line, to_string(r.status()));
+        return kExitUsage;
+      }
+      if (by_pieces && r.status() == Status::infeasible) {
+        std::fprintf(stderr, "kerf: %s: no fit with %s\n", in.file.c_str(),
+                     count(pieces, "piece", "pieces").c_str());
+        return kExitFailure;
+      }
+      std::fprintf(stderr, "kerf: %s%s: fit failed: %s\n", in.file.c_str(), where.c_str(), to_string(r.status()));
       return kExitFailure;
     }
-    std::fprintf(stderr, "kerf: %s: fit failed: %s\n", in.file.c_str(), to_string(r.status()));
-    return kExitFailure;
+    const Span<const fit::Piece<double>> fitted(dst.data(), r.value().pieces);
+    // A band piece crosses each inner point's gate, so it passes within the
+    // widest width of every inner point: the vertex check applies to it too.
+    if (const std::string bad = check_fit(path, fitted, r.value().tol); !bad.empty()) {
+      std::fprintf(stderr,
+                   "kerf: %s%s: internal error: the fit fails its own check (%s); nothing written\n",
+                   in.file.c_str(), where.c_str(), bad.c_str());
+      return kExitFailure;
+    }
+    used += r.value().pieces;
+    total.pieces += r.value().pieces;
+    total.max_error = std::max(total.max_error, r.value().max_error);
+    total.tol = std::max(total.tol, r.value().tol);
   }
-  const Span<const fit::Piece<double>> fitted(dst.data(), r.value().pieces);
-  // A band piece crosses each inner point's gate, so it passes within the
-  // widest width of every inner point: the vertex check applies to it too.
-  if (const std::string bad = check_fit(pts, fitted, r.value().tol); !bad.empty()) {
-    std::fprintf(stderr,
-                 "kerf: %s: internal error: the fit fails its own check (%s); nothing written\n",
-                 in.file.c_str(), bad.c_str());
-    return kExitFailure;
-  }
+  const Span<const fit::Piece<double>> fitted(piece_store.data(), used);
 
   io::FitReport report;
   report.criterion = band ? "band" : "vertex";
   report.method = opts.method.c_str();
-  report.fit = r.value();
+  report.fit = total;
   report.pieces = fitted;
   report.zero_below = io::resolution(pts);
   const std::string text = opts.format == "json" ? io::format_json(report) : io::format_esgi(report);
@@ -187,11 +207,11 @@ int run_fit(const FitOptions& opts) {
     return kExitFailure;
   }
 
-  const double ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
   std::string summary = "kerf: " + in.file + ": " + count(n, "point", "points") + ", " +
-                        count(r.value().pieces, "piece", "pieces") + ", max error " +
-                        io::format_number(r.value().max_error, report.zero_below);
-  if (by_pieces) summary += ", tol found " + io::format_number(r.value().tol);
+                        (begins.size() > 1 ? count(begins.size(), "path", "paths") + ", " : "") +
+                        count(total.pieces, "piece", "pieces") + ", max error " +
+                        io::format_number(total.max_error, report.zero_below);
+  if (by_pieces) summary += ", tol found " + io::format_number(total.tol);
   char time[64];
   std::snprintf(time, sizeof time, ", %.3f ms", ms);
   summary += time;

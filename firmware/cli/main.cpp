@@ -7,8 +7,10 @@
 
 #include "cli/fit_command.hpp"
 #include "cli/plan_command.hpp"
+#include "cli/run_options.hpp"
 #include "cli/sim_options.hpp"
 #if KERF_HAVE_MODBUS
+#include "cli/run_command.hpp"
 #include "cli/sim_command.hpp"
 #endif
 
@@ -28,6 +30,8 @@ int main(int argc, char** argv) {
     CLI::App* plan = add_plan_command(app, plan_opts);
     SimOptions sim_opts;
     CLI::App* sim = add_sim_command(app, sim_opts);
+    RunOptions run_opts;
+    CLI::App* run = add_run_command(app, run_opts);
     try {
       app.parse(argc, argv);
     } catch (const CLI::Success& e) {  // --help, --version
@@ -40,9 +44,11 @@ int main(int argc, char** argv) {
     if (plan->parsed()) return run_plan(plan_opts);
 #if KERF_HAVE_MODBUS
     if (sim->parsed()) return run_sim(sim_opts);
+    if (run->parsed()) return run_run(run_opts);
 #else
-    if (sim->parsed()) {
-      std::fprintf(stderr, "kerf: sim: this build has no libmodbus (the target's libmodbus-dev was not found)\n");
+    if (sim->parsed() || run->parsed()) {
+      std::fprintf(stderr, "kerf: %s: this build has no libmodbus (the target's libmodbus-dev was not found)\n",
+                   sim->parsed() ? "sim" : "run");
       return kExitFailure;
     }
 #endif

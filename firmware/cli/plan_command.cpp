@@ -73,6 +73,13 @@ int run_plan(const PlanOptions& opts) {
 
   io::PointFile in;
   if (!read_job(opts.file, opts.criterion, in)) return kExitUsage;
+  if (in.path_begin.size() > 1) {  // the interpolator runs one continuous path
+    std::fprintf(stderr,
+                 "kerf: %s: holds %zu paths; kerf plan runs one continuous path (kerf sim runs a job of "
+                 "several, with rapids and pierces)\n",
+                 in.file.c_str(), in.path_begin.size());
+    return kExitUsage;
+  }
   std::vector<Segment<double>> path;
   if (!fit_path(in.points, in.tols, tol, opts.criterion, path, error)) {
     std::fprintf(stderr, "kerf: %s: %s\n", in.file.c_str(), error.c_str());

@@ -1,134 +1,249 @@
 #include "cli/sim_command.hpp"
 
-#include <CLI/CLI.hpp>
 #include <cerrno>
-#include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
+#include <memory>
+#include <set>
 
 #include "cli/fit_command.hpp"
 #include "cli/fit_job.hpp"
+#include "cli/fit_paths.hpp"
 #include "cli/options.hpp"
-#include "control/sim_job.hpp"
-#include "io/fit_storage.hpp"
-#include "io/point_file.hpp"
+#include "config/config.hpp"
+#include "control/machine_config.hpp"
+#include "control/sim_machine.hpp"
 #include "io/output_file.hpp"
+#include "io/point_file.hpp"
+#include "io/run_svg.hpp"
 #include "io/sim_output.hpp"
-#include "kerf/fit/fit.hpp"
-#include "kerf/sim/motion_executor.hpp"
+#include "kerf/sim/scripted_gpio.hpp"
 
 namespace kerf::cli {
 
 namespace {
 
-// KIND@SECONDS[:DURATION]
-bool parse_fault(const std::string& text, bool rtu, control::ScheduledFault& f, std::string& error) {
+const char* const kDemoJob =
+#include "demo_job.inc"
+    ;
+
+constexpr const char* kFaultKinds =
+    "estop, arc-lost, no-arc, limit, hold, cycle-start, drive-fault, link-drop, link-stall, modbus-exception "
+    "or crc-error";
+
+// KIND@SECONDS[:DURATION]: a GPIO event for the scripted inputs, or a fault
+// on the board's side.
+bool parse_fault(const std::string& text, bool rtu, std::vector<sim::GpioEvent>& gpio,
+                 std::vector<control::BoardFault>& board, std::string& error) {
   const std::size_t at = text.find('@');
   const std::string kind = text.substr(0, at);
-  if (kind == "link-drop") f.kind = control::FaultKind::link_drop;
-  else if (kind == "link-stall") f.kind = control::FaultKind::link_stall;
-  else if (kind == "modbus-exception") f.kind = control::FaultKind::modbus_exception;
-  else if (kind == "crc-error") f.kind = control::FaultKind::crc_error;
+  sim::GpioEvent g;
+  control::BoardFault b;
+  bool is_gpio = true;
+  if (kind == "estop") g.kind = sim::GpioEvent::Kind::estop;
+  else if (kind == "arc-lost") g.kind = sim::GpioEvent::Kind::arc_lost;
+  else if (kind == "no-arc") g.kind = sim::GpioEvent::Kind::no_arc;
+  else if (kind == "limit") g.kind = sim::GpioEvent::Kind::limit, g.limit = 0;
+  else if (kind == "hold") g.kind = sim::GpioEvent::Kind::hold;
+  else if (kind == "cycle-start") g.kind = sim::GpioEvent::Kind::cycle_start;
   else {
-    error = "--fault: unknown kind \"" + kind +
-            "\" (expected link-drop, link-stall, modbus-exception or crc-error)";
-    return false;
+    is_gpio = false;
+    if (kind == "drive-fault") b.kind = control::BoardFaultKind::drive_fault;
+    else if (kind == "link-drop") b.kind = control::BoardFaultKind::link_drop;
+    else if (kind == "link-stall") b.kind = control::BoardFaultKind::link_stall;
+    else if (kind == "modbus-exception") b.kind = control::BoardFaultKind::modbus_exception;
+    else if (kind == "crc-error") b.kind = control::BoardFaultKind::crc_error;
+    else {
+      error = "--fault: unknown kind " + quoted(kind) + " (expected " + kFaultKinds + ")";
+      return false;
+    }
   }
-  if (f.kind == control::FaultKind::crc_error && !rtu) {
+  if (!is_gpio && b.kind == control::BoardFaultKind::crc_error && !rtu) {
     error = "--fault: crc-error needs --link modbus-rtu (TCP frames carry no CRC)";
     return false;
   }
   if (at == std::string::npos) {
-    error = "--fault: expected KIND@SECONDS[:DURATION], got \"" + text + "\"";
+    error = "--fault: expected KIND@SECONDS[:DURATION], got " + quoted(text);
     return false;
   }
   const std::string rest = text.substr(at + 1);
   const std::size_t colon = rest.find(':');
-  if (!parse_length("--fault", rest.substr(0, colon), true, f.at_s, error)) return false;
-  if (colon != std::string::npos &&
-      !parse_length("--fault", rest.substr(colon + 1), false, f.duration_s, error))
+  double t = 0.0, duration = 0.0;
+  if (!parse_length("--fault", rest.substr(0, colon), true, t, error)) return false;
+  if (colon != std::string::npos && !parse_length("--fault", rest.substr(colon + 1), false, duration, error))
     return false;
+  if (is_gpio) {
+    g.t_s = t;
+    g.duration_s = duration;
+    gpio.push_back(g);
+  } else {
+    b.at_s = t;
+    if (colon != std::string::npos) b.duration_s = duration;
+    board.push_back(b);
+  }
   return true;
+}
+
+bool write_or_say(const std::string& option, const std::string& path, const std::string& text) {
+  if (path.empty() || io::write_output(path, text)) return true;
+  std::fprintf(stderr, "kerf: %s: cannot write %s: %s\n", option.c_str(), path.c_str(), std::strerror(errno));
+  return false;
 }
 
 }  // namespace
 
-int run_sim(const SimOptions& opts) {
-  return run_sim_with(opts, [](std::string& why_not) {
-    return sim::make_motion_executor({}, why_not);
-  });
-}
-
-int run_sim_with(const SimOptions& opts, const ExecutorFactory& make_executor) {
+int run_sim(const SimOptions& given) {
+  SimOptions opts = given;
   std::string error;
-  if (opts.link != "modbus-tcp" && opts.link != "modbus-rtu")
-    return usage_error("--link: unknown link \"" + opts.link + "\" (expected modbus-tcp or modbus-rtu)");
-  const bool rtu = opts.link == "modbus-rtu";
-  if (!criterion_supported(opts.criterion))
-    return usage_error("--criterion: unknown criterion \"" + opts.criterion + "\" (expected vertex or band)");
-  double tol = 0.0, feed = 0.0, speed = 0.0, link_timeout = 0.0;
-  if (!parse_length("--tol", opts.tol, false, tol, error) ||
-      !parse_length("--feed", opts.feed, false, feed, error) ||
-      !parse_length("--speed", opts.speed, true, speed, error) ||
-      !parse_length("--link-timeout", opts.link_timeout, false, link_timeout, error))
-    return usage_error(error);
-  control::SimJob job;
-  for (const std::string& text : opts.faults) {
-    control::ScheduledFault f;
-    if (!parse_fault(text, rtu, f, error)) return usage_error(error);
-    job.faults.push_back(f);
+  config::Config cfg = config::defaults();
+  if (!opts.config.empty() && !config::load(opts.config, cfg, error)) {
+    std::fprintf(stderr, "%s\n", error.c_str());
+    return kExitUsage;
   }
+  const bool demo = opts.file.empty();
+  if (demo) {  // the embedded default: everything written next to the user
+    if (opts.trace.empty()) opts.trace = "kerf-sim.csv";
+    if (opts.plot.empty()) opts.plot = "kerf-sim.svg";
+    if (opts.report.empty()) opts.report = "kerf-sim.json";
+  }
+  std::string link = opts.link.empty() ? config::to_string(cfg.link.kind) : opts.link;
+  if (link != "modbus-tcp" && link != "modbus-rtu")
+    return usage_error("--link: unknown link " + quoted(link) + " (expected modbus-tcp or modbus-rtu)");
+  const bool rtu = link == "modbus-rtu";
+  const std::string criterion = opts.criterion.empty() ? cfg.fit.criterion : opts.criterion;
+  if (!criterion_supported(criterion))
+    return usage_error("--criterion: unknown criterion " + quoted(criterion) + " (expected vertex or band)");
+  double tol = cfg.fit.tol, feed = cfg.cut.feed, speed = 0.0, link_timeout = cfg.link.timeout;
+  if ((!opts.tol.empty() && !parse_length("--tol", opts.tol, false, tol, error)) ||
+      (!opts.feed.empty() && !parse_length("--feed", opts.feed, false, feed, error)) ||
+      !parse_length("--speed", opts.speed, true, speed, error) ||
+      (!opts.link_timeout.empty() && !parse_length("--link-timeout", opts.link_timeout, false, link_timeout, error)))
+    return usage_error(error);
+  if (feed > cfg.machine.max_feed)
+    return usage_error("--feed: " + opts.feed + " mm/min is above the machine's max_feed");
+  if (opts.resume && opts.journal.empty()) return usage_error("--resume: needs --journal FILE");
+
+  sim::ScriptedGpioOptions gopts;
+  // The simulated machine has the config's limit switches, or X and Y ones.
+  gopts.limit_count = cfg.gpio.limits.empty() ? 2 : cfg.gpio.limits.size();
+  std::vector<sim::GpioEvent> events;
+  std::vector<control::BoardFault> board_faults;
+  for (const std::string& text : opts.faults)
+    if (!parse_fault(text, rtu, events, board_faults, error)) return usage_error(error);
+  if (!opts.gpio_script.empty() &&
+      !sim::load_gpio_script(opts.gpio_script, gopts.limit_count, events, error)) {
+    std::fprintf(stderr, "%s\n", error.c_str());
+    return kExitUsage;
+  }
+
   io::PointFile in;
-  if (!read_job(opts.file, opts.criterion, in)) return kExitUsage;
-  std::vector<fit::Piece<double>> fitted;
+  if (demo) {
+    in = io::parse_points(kDemoJob, "<demo job>");
+    if (!in.ok) {
+      std::fprintf(stderr, "%s\n", io::describe_error(in).c_str());
+      return kExitFailure;
+    }
+  } else if (!read_job(opts.file, criterion, in)) {
+    return kExitUsage;
+  }
+  FittedJob fitted;
   Status fit_status = Status::ok;
-  if (!fit_job(in.points, in.tols, tol, opts.criterion, fitted, error, fit_status)) {
+  if (!fit_paths(in, criterion, tol, feed / 60.0, fitted, error, fit_status)) {
     std::fprintf(stderr, "kerf: %s: %s\n", in.file.c_str(), error.c_str());
     return fit_status == Status::invalid_argument || fit_status == Status::degenerate ? kExitUsage
                                                                                      : kExitFailure;
   }
-  const std::vector<fit::Piece<double>>& pieces = fitted;
-  for (std::uint32_t k = 0; k < pieces.size(); ++k) {
-    const fit::Piece<double>& p = pieces[k];
-    hal::SegmentCommand c;
-    c.seq = k + 1;
-    c.kind = p.segment.kind;
-    c.end = p.segment.end;
-    c.centre = p.segment.centre;
-    c.dir = p.segment.dir;
-    c.feed = feed / 60.0;  // mm/min -> mm/s, the wire's unit
-    c.torch = true;
-    job.segments.push_back(c);
+
+  std::unique_ptr<control::Journal> journal;
+  control::ResumePoint from;
+  from.from = fitted.job.paths.front().start;
+  if (!opts.journal.empty()) {
+    journal = opts.resume ? control::Journal::resume(opts.journal, fitted.job.id(), error)
+                          : control::Journal::create(opts.journal, fitted.job.id(), error);
+    if (!journal) {
+      std::fprintf(stderr, "kerf: --journal: %s\n", error.c_str());
+      return kExitUsage;
+    }
+    if (opts.resume) from = control::resume_point(fitted.job, journal->state());
   }
-  job.rtu = rtu;
-  job.start = in.points.front();
-  job.speed = speed;
-  job.link_timeout_s = link_timeout;
-  std::string why_not;
-  std::unique_ptr<sim::SegmentExecutor> exec = make_executor(why_not);
-  if (!exec) {
-    std::fprintf(stderr, "kerf: sim: %s\n", why_not.c_str());
+
+  sim::ScriptedGpio gpio(gopts);
+  if (!gpio.add(events, error)) return usage_error("--fault: " + error);
+
+  control::ControllerConfig ccfg = control::controller_config(cfg);
+  ccfg.link_timeout_s = link_timeout;
+  ccfg.link_watchdog_s = link_timeout / 2.0;
+  control::SimMachineConfig mcfg = control::sim_machine_config(cfg);
+  mcfg.rtu = rtu;
+  mcfg.speed = speed;
+  mcfg.faults = board_faults;
+  // The axes power up at the job's first pierce point, as if homed there; a
+  // resumed run starts there too and travels to its resume point.
+  mcfg.start = fitted.job.paths.front().start;
+
+  const control::SimMachineResult res = control::run_sim_machine(fitted.job, ccfg, mcfg, gpio, journal.get(), from);
+  if (!res.setup_error.empty()) {
+    std::fprintf(stderr, "kerf: sim: %s\n", res.setup_error.c_str());
     return kExitFailure;
   }
 
-  const control::SimJobResult res = control::run_sim_job(job, std::move(exec));
-  if (!res.setup_error.empty()) {
-    std::fprintf(stderr, "kerf: sim: cannot start the simulated board: %s\n", res.setup_error.c_str());
-    return kExitFailure;
+  io::SimSummary sum;
+  sum.state = control::to_string(res.run.state);
+  sum.reason = res.run.reason;
+  sum.link = link;
+  sum.paths = fitted.job.paths.size();
+  sum.pierces = res.run.pierces;
+  sum.planned = res.run.planned;
+  sum.executed = res.executed.size();
+  sum.last_executed = res.run.last_completed + 1;
+  sum.resumed_from = opts.resume ? from.first + 1 : 0;
+  sum.has_cut_to = res.run.has_cut_to;
+  sum.cut_to = res.run.cut_to;
+  sum.torch_on = gpio.torch();
+  sum.torch_off_valid = res.run.torch_off_valid;
+  sum.torch_off_at = res.run.torch_off_at;
+  sum.stopped_at = res.run.stopped_at;
+  sum.link_errors = res.run.link_errors;
+  sum.board_duplicates = res.board.duplicates;
+  sum.max_path_deviation_mm = io::max_path_deviation(res.trace, fitted.pieces);
+  sum.duration_s = res.sim_s;
+  sum.wall_s = res.wall_s;
+  sum.rt = res.rt;
+  sum.rt_histogram = res.rt_histogram;
+  if (journal) {
+    sum.executed_total = journal->state().executed_total;
+    sum.duplicates = journal->state().duplicates;
+    sum.runs = journal->state().runs;
+  } else {
+    std::set<std::int64_t> seen(res.executed.begin(), res.executed.end());
+    sum.executed_total = res.executed.size();
+    sum.duplicates = res.executed.size() - seen.size();
   }
-  const io::SimSummary sum = io::summarise(res, pieces, opts.link);
-  if (!opts.trace.empty() && !io::write_output(opts.trace, io::format_trace_csv(res.trace))) {
-    std::fprintf(stderr, "kerf: --trace: cannot write %s: %s\n", opts.trace.c_str(), std::strerror(errno));
-    return kExitFailure;
+
+  io::RunPlot plot;
+  if (!opts.plot.empty()) {
+    for (std::size_t p = 0; p < fitted.job.paths.size(); ++p) {
+      const std::size_t b = in.path_begin.empty() ? 0 : in.path_begin[p];
+      const std::size_t e = p + 1 < in.path_begin.size() ? in.path_begin[p + 1] : in.points.size();
+      plot.paths.emplace_back(in.points.begin() + static_cast<std::ptrdiff_t>(b),
+                              in.points.begin() + static_cast<std::ptrdiff_t>(e));
+    }
+    for (const fit::Piece<double>& piece : fitted.pieces) plot.pieces.push_back(piece.segment);
+    plot.piece_path = fitted.piece_path;
+    plot.tol = tol;
+    for (const sim::TraceSample& t : res.trace) plot.trace.push_back({t.t_s, t.pos, t.seq, t.torch});
+    plot.title = "kerf sim: " + in.file + " (" + sum.state + ")";
   }
-  if (!opts.report.empty() && !io::write_output(opts.report, io::format_sim_json(sum))) {
-    std::fprintf(stderr, "kerf: --report: cannot write %s: %s\n", opts.report.c_str(), std::strerror(errno));
+  if (!write_or_say("--trace", opts.trace, io::format_trace_csv(res.trace)) ||
+      !write_or_say("--report", opts.report, io::format_sim_json(sum)) ||
+      (!opts.plot.empty() && !write_or_say("--plot", opts.plot, io::format_run_svg(plot))))
     return kExitFailure;
-  }
   std::fputs(io::format_sim_summary(sum).c_str(), stdout);
-  if (!res.stream.ok) {
-    std::fprintf(stderr, "kerf: sim: stopped after segment %u: %s\n", sum.last_executed, sum.fault.c_str());
+  if (demo)
+    std::printf("kerf sim: wrote %s, %s and %s\n", opts.trace.c_str(), opts.plot.c_str(), opts.report.c_str());
+  if (res.run.state != control::State::done) {
+    std::fprintf(stderr, "kerf: sim: stopped after segment %lld: %s\n", static_cast<long long>(sum.last_executed),
+                 sum.reason.c_str());
     return kExitFailure;
   }
   return kExitOk;

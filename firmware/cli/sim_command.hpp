@@ -1,23 +1,15 @@
-// `kerf sim`: fit a job, start the simulated motion board, stream the
-// segments to it over Modbus (TCP on 127.0.0.1 or RTU on a pty) and report
-// what it executed.
+// `kerf sim`: run a job on the simulated machine. The points are fitted path
+// by path, then the controller runs them: rapids, pierces (torch on the
+// simulated GPIO, arc-OK, pierce delay), cuts streamed over Modbus (TCP on
+// 127.0.0.1 or RTU on a pty) to the simulated motion board, faults, the
+// journal and resume, exactly as `kerf run` does on the real machine.
 #pragma once
 
-#include <functional>
-#include <memory>
-#include <string>
-
 #include "cli/sim_options.hpp"
-#include "kerf/sim/segment_executor.hpp"
 
 namespace kerf::cli {
 
-// Makes the board's executor, or returns null with the reason in why_not.
-using ExecutorFactory = std::function<std::unique_ptr<sim::SegmentExecutor>(std::string& why_not)>;
-
-// Runs it with the board's motion executor; returns the exit code.
+// Returns the exit code: 0 done, 1 stopped by a fault or E-stop, 2 bad input.
 int run_sim(const SimOptions& opts);
-// The same with another executor (tests of the streaming path).
-int run_sim_with(const SimOptions& opts, const ExecutorFactory& make_executor);
 
 }  // namespace kerf::cli

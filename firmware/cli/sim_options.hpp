@@ -1,5 +1,6 @@
 // `kerf sim`'s options, as given (still text: run_sim checks them so every
-// message has the "kerf: --option: ..." form).
+// message has the "kerf: --option: ..." form). An empty value means "not
+// given": the config's value (or its default) applies.
 #pragma once
 
 #include <string>
@@ -12,16 +13,21 @@ class App;
 namespace kerf::cli {
 
 struct SimOptions {
+  std::string config;               // TOML; empty: the built-in defaults
   std::string link;                 // modbus-tcp | modbus-rtu
   std::string tol;
-  std::string criterion = "vertex";
-  std::string feed = "3000";        // mm/min
+  std::string criterion;
+  std::string feed;                 // mm/min
   std::vector<std::string> faults;  // KIND@SECONDS[:DURATION]
+  std::string gpio_script;          // timed GPIO events (sim/README.md)
+  std::string journal;
+  bool resume = false;
   std::string report;
   std::string trace;
+  std::string plot;
   std::string speed = "0";          // 0: as fast as possible
-  std::string link_timeout = "1";   // s
-  std::string file;
+  std::string link_timeout;         // s
+  std::string file;                 // empty: the built-in demo job
 };
 
 CLI::App* add_sim_command(CLI::App& app, SimOptions& opts);

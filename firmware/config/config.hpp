@@ -15,13 +15,13 @@ namespace kerf::config {
 
 struct Axis {
   std::string name;            // "x", "y", "z"
-  double counts_per_mm = 1000; // > 0
+  double counts_per_mm = 1000; // > 0; required in each [[machine.axis]] of a file
 };
 
 struct Machine {
   std::vector<Axis> axes;      // 2 or 3; default x and y at 1000 counts/mm
   double max_feed = 10000;     // mm/min, > 0: cut and rapid feeds are capped by it
-  double rapid_feed = 10000;   // mm/min, > 0, <= max_feed
+  double rapid_feed = 10000;   // mm/min, > 0, <= max_feed; absent from a file: max_feed
   double accel = 1000;         // mm/s^2, > 0
   double jerk = 0;             // mm/s^3, 0: trapezoidal ramps
   double servo_period = 0.001; // s, the board's interpolation period, (0, 0.1]
@@ -33,11 +33,11 @@ struct Link {
   Kind kind = Kind::modbus_tcp;
   std::string host = "127.0.0.1";  // modbus-tcp
   int port = 502;                  // modbus-tcp, 1..65535
-  std::string device;              // modbus-rtu, e.g. /dev/ttyUSB0
+  std::string device;              // modbus-rtu (required), e.g. /dev/ttyUSB0
   int baud = 115200;               // modbus-rtu
   int unit = 17;                   // modbus unit id, 1..247
   std::string iface = "can0";      // can
-  std::vector<int> node_ids;       // can, one per axis, 1..127
+  std::vector<int> node_ids;       // can (required), one per axis, 1..127, distinct
   double sync_ms = 1;              // can, SYNC period, 1..10
   double timeout = 1.0;            // s, give up when the link is down this long, > 0
 };
@@ -59,7 +59,7 @@ struct Rt {
 };
 
 struct Config {
-  std::string file;  // where it was read from
+  std::string file;  // where it was read from; "(defaults)" for defaults()
   Machine machine;
   Link link;
   hal::GpioConfig gpio;

@@ -39,11 +39,15 @@ bool parse_can_fault(const std::string& text, CanFaultKind& out) {
 
 namespace {
 
+std::uint8_t node_of(const CanSimOptions& o, std::size_t axis) {
+  return o.node_ids.empty() ? static_cast<std::uint8_t>(axis + 1) : o.node_ids[axis];
+}
+
 std::vector<sim::DriveConfig> drive_configs(const CanSimOptions& o) {
   std::vector<sim::DriveConfig> v;
   for (std::size_t i = 0; i < o.axes; ++i) {
     sim::DriveConfig d;
-    d.node = static_cast<std::uint8_t>(i + 1);
+    d.node = node_of(o, i);
     const double mm = i == 0 ? o.start.x : i == 1 ? o.start.y : 0.0;
     d.start = static_cast<std::int32_t>(std::lround(mm * o.counts_per_mm));
     v.push_back(d);
@@ -54,7 +58,7 @@ std::vector<sim::DriveConfig> drive_configs(const CanSimOptions& o) {
 hal::CanOpenConfig master_config(const CanSimOptions& o, bool wall_clock) {
   hal::CanOpenConfig c;
   c.nodes.clear();
-  for (std::size_t i = 0; i < o.axes; ++i) c.nodes.push_back(static_cast<std::uint8_t>(i + 1));
+  for (std::size_t i = 0; i < o.axes; ++i) c.nodes.push_back(node_of(o, i));
   c.sync_us = o.sync_ms * 1000u;
   if (wall_clock) {  // a loaded host must not look like a dead drive
     c.heartbeat_ms = 50;
@@ -146,25 +150,25 @@ class SocketCanSimLink final : public CanSimLinkBase {
     drives_ = sim::SocketDrives::open(o.iface, drive_configs(o), o.candump_path, error);
     if (!drives_) return false;
     if (o.refuse_enable_axis >= 0)
-      drives_->inject(static_cast<std::uint8_t>(o.refuse_enable_axis + 1), sim::DriveFault::enable_refused);
+      drives_->inject(node_of(o, static_cast<std::size_t>(o.refuse_enable_axis)), sim::DriveFault::enable_refused);
     const std::vector<hal::CanFilter> filters = {{hal::canopen::kEmcy, 0x780},
                                                  {hal::canopen::kTpdo1, 0x780},
                                                  {hal::canopen::kSdoTx, 0x780},
                                                  {hal::canopen::kHeartbeat, 0x780}};
     bus_ = hal::SocketCanBus::open(o.iface, filters, error);
     if (!bus_) return false;
-    axes_ = o.axes;
+    first_ = node_of(o, 0);
+    last_ = node_of(o, o.axes - 1);
     drives_->start_thread();
     return start(*bus_, o, true, error);
   }
   void inject(CanFaultKind k) override {
-    const auto last = static_cast<std::uint8_t>(axes_);
     switch (k) {
-      case CanFaultKind::heartbeat_loss: drives_->inject(last, sim::DriveFault::heartbeat_loss); break;
-      case CanFaultKind::emcy: drives_->inject(1, sim::DriveFault::emcy); break;
+      case CanFaultKind::heartbeat_loss: drives_->inject(last_, sim::DriveFault::heartbeat_loss); break;
+      case CanFaultKind::emcy: drives_->inject(first_, sim::DriveFault::emcy); break;
       case CanFaultKind::enable_refused:
-        drives_->inject(last, sim::DriveFault::emcy);
-        drives_->inject(last, sim::DriveFault::enable_refused);
+        drives_->inject(last_, sim::DriveFault::emcy);
+        drives_->inject(last_, sim::DriveFault::enable_refused);
         break;
       case CanFaultKind::bus_off: send_bus_off_error_frame(); break;
     }
@@ -188,7 +192,7 @@ class SocketCanSimLink final : public CanSimLinkBase {
     ::close(s);
   }
   std::string iface_;
-  std::size_t axes_ = 2;
+  std::uint8_t first_ = 1, last_ = 2;  // node ids of the first and last axis
   std::unique_ptr<sim::SocketDrives> drives_;
   std::unique_ptr<hal::SocketCanBus> bus_;
 };
@@ -202,6 +206,11 @@ std::unique_ptr<CanSimLink> make_can_sim_link(const CanSimOptions& opts, std::st
   }
   if (opts.sync_ms < 1 || opts.sync_ms > 10) {
     error = "--sync-ms: the SYNC period must be 1..10 ms";
+    return nullptr;
+  }
+  if (!opts.node_ids.empty() && opts.node_ids.size() != opts.axes) {
+    error = "link.node_ids: one node id per axis (" + std::to_string(opts.axes) + " axes, " +
+            std::to_string(opts.node_ids.size()) + " ids)";
     return nullptr;
   }
   if (opts.refuse_enable_axis >= static_cast<int>(opts.axes)) {

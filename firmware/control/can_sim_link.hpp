@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "kerf/hal/axis_link.hpp"
 #include "kerf/hal/can/csp_segment_link.hpp"
@@ -27,6 +28,7 @@ bool parse_can_fault(const std::string& text, CanFaultKind& out);
 
 struct CanSimOptions {
   std::size_t axes = 2;          // 2 or 3: x, y (and a third axis that holds its position)
+  std::vector<std::uint8_t> node_ids;  // one per axis (the config's link.node_ids); empty: 1..axes
   std::uint32_t sync_ms = 1;     // SYNC period, 1..10 ms
   std::string iface;             // empty: the in-process bus
   Vec2<double> start{};          // where the axes are at power-up, mm

@@ -11,7 +11,13 @@
 //   `point`. Overwritten in place every cycle without a sync: it survives a
 //   crash or kill -9 (the page cache outlives the process), not a power loss.
 // Every record carries a checksum; a torn or corrupt tail is ignored on
-// reading (and reported), never trusted.
+// reading (and reported), never trusted. A torn `done k` therefore means k is
+// not known done: it is cut again on resume (from the cut_to slot's point).
+// The format is text lines (control/journal_record.hpp), readable with `cat`.
+//
+// completed(k) takes segments in order: k <= last_completed + 1 (a repeat is
+// journalled and counted as a duplicate; a gap is refused). cut_to() does not
+// allocate. One process at a time: the file is flock()ed while open.
 #pragma once
 
 #include <cstdint>
@@ -43,6 +49,7 @@ struct JournalState {
   std::uint32_t runs = 0;            // create() and each resume() count one
   bool finished = false;             // the job reached its end
   bool torn_tail = false;            // reading stopped at a corrupt record
+  bool cut_slot_corrupt = false;     // the cut_to slot failed its checksum (has_cut_to false)
 };
 
 class Journal {
@@ -70,7 +77,10 @@ class Journal {
 
  private:
   Journal() = default;
+  bool append(const char* text, std::size_t n);
+  void fail(const char* what, int err);
   int fd_ = -1;
+  std::uint64_t append_at_ = 0;  // file offset of the next appended record
   std::string path_;
   JournalState state_;
   std::string error_;

@@ -97,7 +97,16 @@ PointFile fail(PointFile f, std::size_t line, std::string reason) {
   f.points.clear();
   f.point_lines.clear();
   f.tols.clear();
+  f.path_begin.clear();
   return f;
+}
+
+// The last path has fewer than two distinct points: named by its number and
+// the line of its one point.
+PointFile fail_short_path(PointFile f) {
+  const std::size_t line = f.point_lines.back();
+  std::string reason = "path " + std::to_string(f.path_begin.size()) + " has only one point";
+  return fail(std::move(f), line, std::move(reason));
 }
 
 }  // namespace
@@ -108,6 +117,7 @@ PointFile parse_points(std::string_view text, std::string display_name) {
   std::vector<std::string_view> fields;
   std::size_t columns = 0;       // 2 or 3, fixed by the first point's line
   std::size_t columns_line = 0;
+  bool path_break = false;       // a blank line since the last point
   std::size_t line_no = 0;
   std::size_t pos = 0;
   while (pos < text.size()) {
@@ -116,10 +126,14 @@ PointFile parse_points(std::string_view text, std::string display_name) {
     if (eol == std::string_view::npos) eol = text.size();
     std::string_view line = text.substr(pos, eol - pos);
     pos = eol + 1;
-    if (const std::size_t hash = line.find('#'); hash != std::string_view::npos)
-      line = line.substr(0, hash);
+    const std::size_t hash = line.find('#');
+    if (hash != std::string_view::npos) line = line.substr(0, hash);
     if (!split_fields(line, fields)) return fail(std::move(f), line_no, "empty field");
-    if (fields.empty()) continue;
+    if (fields.empty()) {
+      // Only a truly blank line separates paths; a comment-only line does not.
+      if (hash == std::string_view::npos && !f.points.empty()) path_break = true;
+      continue;
+    }
     if (fields.size() != 2 && fields.size() != 3)
       return fail(std::move(f), line_no,
                   "expected 2 or 3 columns, got " + std::to_string(fields.size()));
@@ -140,12 +154,17 @@ PointFile parse_points(std::string_view text, std::string display_name) {
       if (!parse_number(fields[2], tol, reason)) return fail(std::move(f), line_no, "tol: " + reason);
       if (!(tol > 0.0)) return fail(std::move(f), line_no, "tol must be > 0, got " + quote(fields[2]));
     }
-    if (!f.points.empty() && f.points.back() == p) {
+    if (path_break) {
+      path_break = false;
+      if (f.points.size() - f.path_begin.back() < 2) return fail_short_path(std::move(f));
+      f.path_begin.push_back(f.points.size());
+    } else if (!f.points.empty() && f.points.back() == p) {
       ++f.duplicates_dropped;
       if (columns == 3) f.tols.back() = std::fmin(f.tols.back(), tol);  // the stricter one
       continue;
     }
     if (f.points.size() >= kMaxPoints) return fail(std::move(f), line_no, "too many points");
+    if (f.points.empty()) f.path_begin.push_back(0);
     f.points.push_back(p);
     f.point_lines.push_back(line_no);
     if (columns == 3) f.tols.push_back(tol);
@@ -155,6 +174,7 @@ PointFile parse_points(std::string_view text, std::string display_name) {
     std::string reason = "fewer than two distinct points (got " + std::to_string(f.points.size()) + ")";
     return fail(std::move(f), 0, std::move(reason));
   }
+  if (f.points.size() - f.path_begin.back() < 2) return fail_short_path(std::move(f));
   f.ok = true;
   return f;
 }

@@ -3,8 +3,15 @@
 // One "x y" pair per line, the two numbers separated by spaces, tabs or one
 // comma (with optional blanks around it). A third column, on every line or
 // none, is that point's own tolerance (> 0), for the band criterion. '#' starts a comment that runs to
-// the end of the line; blank lines are skipped; CRLF line ends are accepted.
-// Consecutive duplicate points are dropped and counted.
+// the end of the line; CRLF line ends are accepted.
+//
+// A job may hold several cut paths: one or more blank lines (empty or only
+// blanks) separate them. A line holding only a comment is not blank and does
+// not separate. Blank lines before the first or after the last point make no
+// empty path. Each path needs at least two distinct points.
+//
+// Consecutive duplicate points within a path are dropped and counted; a path's
+// first point equal to the previous path's last is kept (it is a new pierce).
 //
 // Errors are values: nothing here throws across the API (an allocation
 // failure is the one exception, std::bad_alloc, which the caller handles).
@@ -31,6 +38,7 @@ struct PointFile {
   std::vector<Vec2<double>> points;       // after dropping consecutive duplicates
   std::vector<std::size_t> point_lines;   // the source line of each kept point
   std::vector<double> tols;               // each kept point's tol: empty unless 3 columns
+  std::vector<std::size_t> path_begin;    // index in points of each path's first point
   std::size_t duplicates_dropped = 0;
 };
 

@@ -15,25 +15,6 @@ double max_path_deviation(const std::vector<sim::TraceSample>& trace,
   return worst;
 }
 
-SimSummary summarise(const control::SimJobResult& r, const std::vector<fit::Piece<double>>& pieces,
-                     const std::string& link) {
-  SimSummary s;
-  s.state = r.stream.ok ? "done" : "fault";
-  s.fault = r.stream.ok ? "" : r.stream.fault;
-  s.link = link;
-  s.planned = r.stream.planned;
-  s.sent = r.stream.sent;
-  s.executed = static_cast<std::uint32_t>(r.executed.size());
-  s.last_executed = r.board.last_executed;
-  s.resent = r.stream.resent;
-  s.duplicates = r.board.duplicates;
-  s.torch_on = r.board.torch;
-  s.max_path_deviation_mm = max_path_deviation(r.trace, pieces);
-  s.duration_s = r.sim_s;
-  s.wall_s = r.wall_s;
-  return s;
-}
-
 std::string format_trace_csv(const std::vector<sim::TraceSample>& trace) {
   std::string out = "t_s,x_mm,y_mm,segment,torch\n";
   char line[160];
@@ -46,6 +27,7 @@ std::string format_trace_csv(const std::vector<sim::TraceSample>& trace) {
 }
 
 namespace {
+
 std::string json_string(const std::string& s) {
   std::string out = "\"";
   for (const char c : s) {
@@ -62,33 +44,60 @@ std::string json_string(const std::string& s) {
   }
   return out + "\"";
 }
+
+std::string point(Vec2<double> p) {
+  char buf[80];
+  std::snprintf(buf, sizeof buf, "[%.6f, %.6f]", p.x, p.y);
+  return buf;
+}
+
 }  // namespace
 
 std::string format_sim_json(const SimSummary& s) {
-  char buf[1024];
-  std::snprintf(buf, sizeof buf,
-                "{\n  \"state\": \"%s\",\n  \"fault\": %s,\n  \"link\": \"%s\",\n"
-                "  \"segments_planned\": %u,\n  \"segments_sent\": %u,\n"
-                "  \"segments_executed\": %u,\n  \"last_executed_segment\": %u,\n"
-                "  \"segments_resent\": %llu,\n  \"duplicates\": %u,\n  \"torch_on\": %s,\n"
-                "  \"max_path_deviation_mm\": %.6f,\n  \"duration_s\": %.6f,\n  \"wall_s\": %.3f\n}\n",
-                s.state.c_str(), s.fault.empty() ? "null" : json_string(s.fault).c_str(),
-                s.link.c_str(), s.planned, s.sent, s.executed, s.last_executed,
-                static_cast<unsigned long long>(s.resent), s.duplicates,
-                s.torch_on ? "true" : "false", s.max_path_deviation_mm, s.duration_s, s.wall_s);
+  std::string cut_to = "null";
+  if (s.has_cut_to)
+    cut_to = "{\"segment\": " + std::to_string(s.cut_to.segment + 1) + ", \"at\": " + point(s.cut_to.at) + "}";
+  std::string histogram = "null";
+  if (!s.rt_histogram.empty()) {  // "[8, 16) us  4123" lines as a JSON array of strings
+    histogram = "[";
+    std::size_t from = 0;
+    while (from < s.rt_histogram.size()) {
+      std::size_t nl = s.rt_histogram.find('\n', from);
+      if (nl == std::string::npos) nl = s.rt_histogram.size();
+      if (nl > from) histogram += (histogram.size() > 1 ? ", " : "") + json_string(s.rt_histogram.substr(from, nl - from));
+      from = nl + 1;
+    }
+    histogram += "]";
+  }
+  char buf[4096];
+  std::snprintf(
+      buf, sizeof buf,
+      "{\n  \"state\": \"%s\",\n  \"fault\": %s,\n  \"link\": \"%s\",\n  \"paths\": %zu,\n  \"pierces\": %zu,\n"
+      "  \"segments_planned\": %zu,\n  \"segments_executed\": %zu,\n  \"segments_executed_total\": %llu,\n"
+      "  \"duplicates\": %llu,\n  \"last_executed_segment\": %lld,\n  \"resumed_from_segment\": %zu,\n"
+      "  \"runs\": %u,\n  \"cut_to\": %s,\n  \"torch_on\": %s,\n  \"torch_off_at\": %s,\n  \"stopped_at\": %s,\n"
+      "  \"link_errors\": %llu,\n  \"board_duplicates_dropped\": %u,\n  \"max_path_deviation_mm\": %.6f,\n"
+      "  \"duration_s\": %.6f,\n  \"wall_s\": %.3f,\n  \"rt\": %s,\n  \"rt_histogram\": %s\n}\n",
+      s.state.c_str(), s.reason.empty() ? "null" : json_string(s.reason).c_str(), s.link.c_str(), s.paths,
+      s.pierces, s.planned, s.executed, static_cast<unsigned long long>(s.executed_total),
+      static_cast<unsigned long long>(s.duplicates), static_cast<long long>(s.last_executed), s.resumed_from,
+      s.runs, cut_to.c_str(), s.torch_on ? "true" : "false",
+      s.torch_off_valid ? point(s.torch_off_at).c_str() : "null", point(s.stopped_at).c_str(),
+      static_cast<unsigned long long>(s.link_errors), s.board_duplicates, s.max_path_deviation_mm,
+      s.duration_s, s.wall_s, s.rt.empty() ? "null" : json_string(s.rt).c_str(), histogram.c_str());
   return buf;
 }
 
 std::string format_sim_summary(const SimSummary& s) {
   char buf[1024];
   std::snprintf(buf, sizeof buf,
-                "kerf sim: %s over %s: %u of %u segments executed (last %u), %u sent, %llu resent, "
-                "%u duplicates dropped; max path deviation %.6f mm; %.3f s simulated, %.3f s wall; "
-                "torch %s%s%s\n",
-                s.state.c_str(), s.link.c_str(), s.executed, s.planned, s.last_executed, s.sent,
-                static_cast<unsigned long long>(s.resent), s.duplicates, s.max_path_deviation_mm,
-                s.duration_s, s.wall_s, s.torch_on ? "ON" : "off",
-                s.fault.empty() ? "" : "; fault: ", s.fault.c_str());
+                "kerf sim: %s over %s: %zu paths, %zu of %zu segments executed this run (last %lld; "
+                "%llu in all, %llu duplicates), %zu pierces; max path deviation %.6f mm; "
+                "%.3f s simulated, %.3f s wall; torch %s%s%s\n",
+                s.state.c_str(), s.link.c_str(), s.paths, s.executed, s.planned,
+                static_cast<long long>(s.last_executed), static_cast<unsigned long long>(s.executed_total),
+                static_cast<unsigned long long>(s.duplicates), s.pierces, s.max_path_deviation_mm, s.duration_s,
+                s.wall_s, s.torch_on ? "ON" : "off", s.reason.empty() ? "" : "; stopped: ", s.reason.c_str());
   return buf;
 }
 

@@ -1,34 +1,45 @@
 // What `kerf sim` writes: the executed trace (CSV), the JSON report and the
-// human summary, from a finished simulated job and the fitted path.
+// one-line summary, from a finished run of the simulated machine.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
-#include "control/sim_job.hpp"
+#include "control/sim_machine.hpp"
 #include "kerf/fit/fit.hpp"
 
 namespace kerf::io {
 
 struct SimSummary {
-  std::string state;  // done | fault | estop
-  std::string fault;  // empty: none
-  std::string link;   // modbus-tcp | modbus-rtu
-  std::uint32_t planned = 0, sent = 0, executed = 0, last_executed = 0;
-  std::uint64_t resent = 0;
-  std::uint32_t duplicates = 0;
+  std::string state;   // done | fault | estop
+  std::string reason;  // empty when done
+  std::string link;    // modbus-tcp | modbus-rtu
+  std::size_t paths = 0, pierces = 0;
+  std::size_t planned = 0;          // segments in the job
+  std::size_t executed = 0;         // completed in this run
+  std::uint64_t executed_total = 0; // completed over every run of the job (the journal's count)
+  std::uint64_t duplicates = 0;     // segments completed more than once
+  std::int64_t last_executed = 0;   // 1-based number of the last completed segment, 0 for none
+  std::size_t resumed_from = 0;     // 1-based first segment of this run; 0: a new job
+  std::uint32_t runs = 1;
+  bool has_cut_to = false;          // where the torch went off inside the next segment
+  control::CutPoint cut_to;
   bool torch_on = false;
+  bool torch_off_valid = false;
+  Vec2<double> torch_off_at{}, stopped_at{};
+  std::uint64_t link_errors = 0;
+  std::uint32_t board_duplicates = 0;  // resent segments the board dropped
   double max_path_deviation_mm = 0.0;
   double duration_s = 0.0;  // simulated
   double wall_s = 0.0;
+  std::string rt;           // the cycle loop's statistics, when paced in real time
+  std::string rt_histogram; // its wake-up lateness histogram, one bin per line
 };
 
-// Largest distance of an executed sample (one running segment k) from fitted piece k.
+// Largest distance of an executed sample (running job segment k + 1) from fitted piece k.
 double max_path_deviation(const std::vector<sim::TraceSample>& trace,
                           const std::vector<fit::Piece<double>>& pieces);
-
-SimSummary summarise(const control::SimJobResult& r, const std::vector<fit::Piece<double>>& pieces,
-                     const std::string& link);
 
 std::string format_trace_csv(const std::vector<sim::TraceSample>& trace);
 std::string format_sim_json(const SimSummary& s);

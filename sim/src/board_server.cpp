@@ -45,7 +45,7 @@ std::unique_ptr<BoardServer> BoardServer::start(MotionBoard& board, const Server
   if (::pipe(s->stop_pipe_) != 0) return fail("pipe");
   if (::socketpair(AF_UNIX, SOCK_STREAM, 0, s->capture_pipe_) != 0) return fail("socketpair");
   if (cfg.transport == ServerConfig::Transport::tcp) {
-    s->ctx_ = modbus_new_tcp("127.0.0.1", 0);  // port 0: the kernel picks a free one
+    s->ctx_ = modbus_new_tcp("127.0.0.1", cfg.port);  // port 0: the kernel picks a free one
     if (s->ctx_ == nullptr) return fail("modbus_new_tcp");
     s->listen_fd_ = modbus_tcp_listen(s->ctx_, 1);
     if (s->listen_fd_ < 0) return fail("modbus_tcp_listen");
@@ -140,12 +140,12 @@ void BoardServer::serve_one(int fd) {
   }
   if (len == 0) return;  // RTU: a request for another unit
   ++requests_;
-  last_request_ = now();
   {
     std::lock_guard<std::mutex> lock(fault_mu_);
     const double t = now();
-    if (t < drop_until_ || t < stall_until_) return;  // the request is lost
+    if (t < drop_until_ || t < stall_until_) return;  // the request is lost: it feeds no watchdog
   }
+  last_request_ = now();
   handle(q, len, fd);
 }
 

@@ -44,7 +44,13 @@ bool MotionBoard::command(std::uint16_t code) {
   std::lock_guard<std::mutex> lock(mu_);
   bool ok = true;
   switch (static_cast<hal::Command>(code)) {
-    case hal::Command::start: ok = state_ == BoardState::idle; if (ok) state_ = BoardState::running; break;
+    case hal::Command::start:  // from idle, or after a finished run: a new run
+      ok = state_ == BoardState::idle || state_ == BoardState::done;
+      if (ok) {
+        state_ = BoardState::running;
+        finish_ = false;
+      }
+      break;
     case hal::Command::hold:
       ok = state_ == BoardState::running;
       if (ok) {
@@ -86,6 +92,11 @@ void MotionBoard::fault_locked(std::uint16_t bit) {
   count_ = 0;
   exec_->abort();
   changed_.notify_all();
+}
+
+void MotionBoard::inject_fault(std::uint16_t bit) {
+  std::lock_guard<std::mutex> lock(mu_);
+  if (state_ == BoardState::running || state_ == BoardState::hold) fault_locked(bit);
 }
 
 void MotionBoard::link_lost() {

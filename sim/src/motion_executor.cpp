@@ -36,6 +36,12 @@ class InterpolatorExecutor final : public SegmentExecutor {
   std::size_t free_slots() const override { return interp_.free_slots(); }
 
   bool push(Vec2<double> from, const hal::SegmentCommand& seg) override {
+    // The board knows its position in counts; the interpolator stopped at an
+    // exact point of the path (after a hold or an abort). A new run starts
+    // there when the two agree to within a count, so that the joint is exact.
+    if (interp_.queued() == 0 && have_exact_ &&
+        distance(from, exact_) <= 1.5 / cfg_.counts_per_mm)
+      from = exact_;
     motion::PathSegment<double> p;
     p.geometry = seg.kind == SegmentKind::arc ? Segment<double>::arc(from, seg.end, seg.centre, seg.dir)
                                               : Segment<double>::line(from, seg.end);
@@ -46,6 +52,8 @@ class InterpolatorExecutor final : public SegmentExecutor {
 
   ExecStep step() override {
     const motion::Setpoint<double> sp = interp_.step();
+    exact_ = sp.position;
+    have_exact_ = true;
     ExecStep e;
     e.position = {static_cast<double>(sp.counts.x) / cfg_.counts_per_mm,
                   static_cast<double>(sp.counts.y) / cfg_.counts_per_mm};
@@ -66,6 +74,8 @@ class InterpolatorExecutor final : public SegmentExecutor {
   std::vector<double> window_;
   motion::Interpolator<double> interp_;
   MotionConfig cfg_;
+  Vec2<double> exact_{};  // where the interpolator is, exactly (not rounded to counts)
+  bool have_exact_ = false;
 };
 
 }  // namespace

@@ -98,6 +98,25 @@ TEST(CanSimLink, EveryFaultKindStopsWithTheLastSegmentNamed) {
   }
 }
 
+TEST(CanSimLink, NodeIdsFromTheConfiguration) {
+  control::CanSimOptions o;
+  o.node_ids = {5, 9};
+  std::string err;
+  auto link = control::make_can_sim_link(o, err);
+  ASSERT_TRUE(link) << err;
+  EXPECT_EQ(link->axes().axis(0).node, 5);
+  EXPECT_EQ(link->axes().axis(1).node, 9);
+  ASSERT_NO_FATAL_FAILURE(push_lines(*link, 1));
+  for (int i = 0; i < 50; ++i) link->tick();
+  link->inject(CanFaultKind::heartbeat_loss);  // the last axis: node 9
+  ASSERT_EQ(run(*link, 1000), BoardState::fault);
+  EXPECT_NE(std::string(link->last_error()).find("axis 1 (node 9): heartbeat lost"), std::string::npos)
+      << link->last_error();
+  o.node_ids = {5};
+  EXPECT_FALSE(control::make_can_sim_link(o, err));
+  EXPECT_NE(err.find("one node id per axis"), std::string::npos) << err;
+}
+
 TEST(CanSimLink, ADriveRefusingEnableAtPowerUpIsNamed) {
   control::CanSimOptions o;
   o.refuse_enable_axis = 1;

@@ -75,9 +75,10 @@ TEST_P(SimCommand, CleanJobIsExecutedOnceOnThePath) {
   EXPECT_NE(rep.find("\"torch_on\": false"), std::string::npos);
   const double planned = json_number(rep, "segments_planned");
   EXPECT_GT(planned, 100.0);
-  EXPECT_EQ(json_number(rep, "segments_sent"), planned);
   EXPECT_EQ(json_number(rep, "segments_executed"), planned);
+  EXPECT_EQ(json_number(rep, "segments_executed_total"), planned);
   EXPECT_EQ(json_number(rep, "duplicates"), 0.0);
+  EXPECT_EQ(json_number(rep, "pierces"), 1.0);
   const double deviation = json_number(rep, "max_path_deviation_mm");
   EXPECT_GE(deviation, 0.0);
   EXPECT_LE(deviation, 0.0015);
@@ -106,18 +107,18 @@ TEST_P(SimCommand, CleanJobIsExecutedOnceOnThePath) {
 
 TEST_P(SimCommand, ShortLinkDropIsRidden) {
   cli::SimOptions o = options();
-  o.faults = {"link-drop@0.05:0.2", "modbus-exception@0.1"};
+  o.faults = {"link-drop@1.0:0.2", "modbus-exception@1.1"};  // while cutting (the pierce takes 0.55 s)
   o.link_timeout = "2";
   ASSERT_EQ(run(o), 0);
   const std::string rep = slurp(o.report);
   EXPECT_NE(rep.find("\"state\": \"done\""), std::string::npos) << rep;
   EXPECT_EQ(json_number(rep, "segments_executed"), json_number(rep, "segments_planned"));
-  EXPECT_GE(json_number(rep, "segments_resent"), 1.0);
+  EXPECT_GE(json_number(rep, "link_errors"), 1.0);
 }
 
 TEST_P(SimCommand, LinkDownTooLongStopsAndReportsTheLastSegment) {
   cli::SimOptions o = options();
-  o.faults = {"link-stall@0.05:3"};
+  o.faults = {"link-stall@1.0:3"};
   ASSERT_EQ(run(o), 1);
   const std::string rep = slurp(o.report);
   EXPECT_NE(rep.find("\"state\": \"fault\""), std::string::npos) << rep;
@@ -126,12 +127,14 @@ TEST_P(SimCommand, LinkDownTooLongStopsAndReportsTheLastSegment) {
   const double last = json_number(rep, "last_executed_segment");
   EXPECT_GE(last, 1.0);
   EXPECT_LT(last, json_number(rep, "segments_planned"));
-  EXPECT_EQ(json_number(rep, "segments_executed"), last);
+  // The board runs on, blind, until its watchdog stops it: it may have
+  // completed more than the controller saw (and journaled).
+  EXPECT_GE(json_number(rep, "segments_executed"), last);
 }
 
 TEST_P(SimCommand, CrcErrorsAreRiddenOverRtuAndRefusedOverTcp) {
   cli::SimOptions o = options();
-  o.faults = {"crc-error@0.2", "crc-error@1.5"};
+  o.faults = {"crc-error@1.0", "crc-error@1.5"};
   if (GetParam() == Wire::tcp) {
     ASSERT_EQ(run(o), 2);  // TCP frames carry no CRC
     std::FILE* f = std::fopen(o.report.c_str(), "r");  // nothing written
@@ -143,7 +146,7 @@ TEST_P(SimCommand, CrcErrorsAreRiddenOverRtuAndRefusedOverTcp) {
   const std::string rep = slurp(o.report);
   EXPECT_NE(rep.find("\"state\": \"done\""), std::string::npos) << rep;
   EXPECT_EQ(json_number(rep, "segments_executed"), json_number(rep, "segments_planned"));
-  EXPECT_GE(json_number(rep, "segments_resent"), 2.0);
+  EXPECT_GE(json_number(rep, "link_errors"), 2.0);
 }
 
 INSTANTIATE_TEST_SUITE_P(Wires, SimCommand, ::testing::Values(Wire::tcp, Wire::rtu), wire_name);

@@ -33,8 +33,9 @@ enum FaultBit : std::uint16_t {
   kFaultLinkWatchdog = 1u << 1,  // no request from the host for too long while running
   kFaultBadSegment = 1u << 2,    // a segment the executor refused (zero length, bad arc)
   kFaultStarved = 1u << 3,       // queue ran empty while running, before "finish"
-  // Cyclic drives (CspSegmentLink over CANopen CiA 402):
-  kFaultDrive = 1u << 4,      // a drive left "operation enabled", refused enable, or did not answer
+  kFaultDrive = 1u << 4,         // a drive reported a fault (following error, overcurrent ...)
+  // Cyclic drives (CspSegmentLink over CANopen CiA 402; kFaultDrive above also
+  // covers a drive that left "operation enabled", refused enable or did not answer):
   kFaultHeartbeat = 1u << 5,  // a drive's heartbeat stopped
   kFaultEmcy = 1u << 6,       // a drive sent an emergency message
   kFaultBusOff = 1u << 7,     // the CAN controller went bus-off

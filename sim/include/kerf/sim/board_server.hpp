@@ -23,6 +23,7 @@ struct ServerConfig {
   using Transport = hal::ModbusConfig::Transport;  // the same two as the host's link
   Transport transport = Transport::tcp;
   int unit = 17;
+  int port = 0;  // TCP on 127.0.0.1; 0: a free port the kernel picks
   // The board stops safely (torch off, fault) when no request arrives for
   // this long while it runs; 0 disables the watchdog.
   double watchdog_s = 0.0;

@@ -46,6 +46,7 @@ class MotionBoard {
   bool command(std::uint16_t code);  // false: unknown code or not allowed now
   hal::BoardStatus status() const;
   void link_lost();                  // the server's watchdog: stop safely
+  void inject_fault(std::uint16_t bit);  // a drive fault (hal::kFaultDrive ...) while running
 
   // Servo side: one tick by hand (tests), or a thread.
   void tick();

@@ -1,0 +1,47 @@
+#include "cli/fit_paths.hpp"
+
+#include "cli/fit_job.hpp"
+
+namespace kerf::cli {
+
+bool fit_paths(const io::PointFile& in, const std::string& criterion, double tol, double feed_mm_s,
+               FittedJob& out, std::string& error, Status& status) {
+  out = FittedJob{};
+  std::vector<std::size_t> begins = in.path_begin;
+  if (begins.empty()) begins.push_back(0);
+  for (std::size_t p = 0; p < begins.size(); ++p) {
+    const std::size_t b = begins[p];
+    const std::size_t e = p + 1 < begins.size() ? begins[p + 1] : in.points.size();
+    const std::vector<Vec2<double>> pts(in.points.begin() + static_cast<std::ptrdiff_t>(b),
+                                        in.points.begin() + static_cast<std::ptrdiff_t>(e));
+    std::vector<double> tols;
+    if (!in.tols.empty())
+      tols.assign(in.tols.begin() + static_cast<std::ptrdiff_t>(b), in.tols.begin() + static_cast<std::ptrdiff_t>(e));
+    std::vector<fit::Piece<double>> pieces;
+    std::string why;
+    if (!fit_job(pts, tols, tol, criterion, pieces, why, status)) {
+      error = "path " + std::to_string(p + 1) + " (line " +
+              std::to_string(b < in.point_lines.size() ? in.point_lines[b] : 0) + "): " + why;
+      return false;
+    }
+    control::CutPath path;
+    path.start = pts.front();
+    for (const fit::Piece<double>& piece : pieces) {
+      hal::SegmentCommand c;
+      c.kind = piece.segment.kind;
+      c.end = piece.segment.end;
+      c.centre = piece.segment.centre;
+      c.dir = piece.segment.dir;
+      c.feed = feed_mm_s;
+      c.torch = true;
+      path.segments.push_back(c);
+      out.pieces.push_back(piece);
+      out.piece_path.push_back(p);
+    }
+    out.job.paths.push_back(std::move(path));
+  }
+  status = Status::ok;
+  return true;
+}
+
+}  // namespace kerf::cli

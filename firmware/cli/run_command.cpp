@@ -1,0 +1,175 @@
+#include "cli/run_command.hpp"
+
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+
+#include "cli/fit_command.hpp"
+#include "cli/fit_job.hpp"
+#include "cli/fit_paths.hpp"
+#include "cli/options.hpp"
+#include "config/config.hpp"
+#include "control/controller.hpp"
+#include "control/machine_config.hpp"
+#include "io/output_file.hpp"
+#include "io/sim_output.hpp"
+#include "kerf/hal/modbus/modbus_link.hpp"
+#include "kerf/hal/rt_loop.hpp"
+#include "kerf/sim/scripted_gpio.hpp"
+#if KERF_HAVE_GPIOD
+#include "kerf/hal/gpio/gpiod_gpio.hpp"
+#endif
+
+namespace kerf::cli {
+
+namespace {
+
+volatile std::sig_atomic_t g_signal = 0;
+extern "C" void on_signal(int sig) { g_signal = sig; }
+
+std::unique_ptr<hal::Gpio> open_gpio(const config::Config& cfg, bool simulated, std::string& error) {
+  if (simulated) {
+    sim::ScriptedGpioOptions o;
+    o.limit_count = cfg.gpio.limits.size();
+    return std::make_unique<sim::ScriptedGpio>(o);
+  }
+  // A cut needs all three: the torch, its arc-OK and the E-stop.
+  const std::pair<const char*, const hal::GpioLineConfig*> required[] = {
+      {"gpio.torch", &cfg.gpio.torch}, {"gpio.arc_ok", &cfg.gpio.arc_ok}, {"gpio.estop", &cfg.gpio.estop}};
+  for (const auto& [key, line] : required)
+    if (!line->used) {
+      error = cfg.file + ": " + key + ": kerf run needs this line (or --sim-gpio on a bench)";
+      return nullptr;
+    }
+#if KERF_HAVE_GPIOD
+  return hal::open_gpiod(cfg.gpio, error);
+#else
+  error = "gpio: this build has no libgpiod (the target's libgpiod-dev was not found); --sim-gpio runs a bench";
+  return nullptr;
+#endif
+}
+
+std::unique_ptr<hal::ModbusSegmentLink> open_link(const config::Config& cfg, std::string& error) {
+  hal::ModbusConfig lc;
+  lc.transport = cfg.link.kind == config::Link::Kind::modbus_rtu ? hal::ModbusConfig::Transport::rtu
+                                                                 : hal::ModbusConfig::Transport::tcp;
+  lc.host = cfg.link.host;
+  lc.port = cfg.link.port;
+  lc.device = cfg.link.device;
+  lc.baud = cfg.link.baud;
+  lc.unit = cfg.link.unit;
+  // One attempt per call: the controller retries by cycling and keeps
+  // watching its inputs meanwhile.
+  lc.retries = 0;
+  lc.response_timeout_s = cfg.link.timeout / 8.0 < 0.1 ? cfg.link.timeout / 8.0 : 0.1;
+  return hal::ModbusSegmentLink::open(lc, error);
+}
+
+}  // namespace
+
+int run_run(const RunOptions& opts) {
+  std::string error;
+  config::Config cfg;
+  if (!config::load(opts.config, cfg, error)) {
+    std::fprintf(stderr, "%s\n", error.c_str());
+    return kExitUsage;
+  }
+  if (opts.resume && opts.journal.empty()) return usage_error("--resume: needs --journal FILE");
+  if (cfg.link.kind == config::Link::Kind::can)
+    return usage_error(cfg.file + ": link.kind: kerf run drives Modbus motion boards in this build (can is not wired yet)");
+  io::PointFile in;
+  if (!read_job(opts.job, cfg.fit.criterion, in)) return kExitUsage;
+  FittedJob fitted;
+  Status fit_status = Status::ok;
+  if (!fit_paths(in, cfg.fit.criterion, cfg.fit.tol, cfg.cut.feed / 60.0, fitted, error, fit_status)) {
+    std::fprintf(stderr, "kerf: %s: %s\n", in.file.c_str(), error.c_str());
+    return fit_status == Status::invalid_argument || fit_status == Status::degenerate ? kExitUsage : kExitFailure;
+  }
+  std::unique_ptr<control::Journal> journal;
+  control::ResumePoint from;
+  from.from = fitted.job.paths.front().start;
+  if (!opts.journal.empty()) {
+    journal = opts.resume ? control::Journal::resume(opts.journal, fitted.job.id(), error)
+                          : control::Journal::create(opts.journal, fitted.job.id(), error);
+    if (!journal) {
+      std::fprintf(stderr, "kerf: --journal: %s\n", error.c_str());
+      return kExitUsage;
+    }
+    if (opts.resume) from = control::resume_point(fitted.job, journal->state());
+  }
+  std::unique_ptr<hal::Gpio> gpio = open_gpio(cfg, opts.sim_gpio, error);
+  if (!gpio) {
+    std::fprintf(stderr, "kerf: run: %s\n", error.c_str());
+    return kExitFailure;
+  }
+  std::unique_ptr<hal::ModbusSegmentLink> link = open_link(cfg, error);
+  if (!link) {
+    std::fprintf(stderr, "kerf: run: motion board: %s\n", error.c_str());
+    return kExitFailure;
+  }
+  const hal::RtSetup rt = hal::rt_setup(cfg.rt.priority, cfg.rt.lock_memory);
+  if (!rt.warning.empty()) std::fprintf(stderr, "kerf: run: %s\n", rt.warning.c_str());
+  struct sigaction sa {};
+  sa.sa_handler = on_signal;
+  sigaction(SIGINT, &sa, nullptr);
+  sigaction(SIGTERM, &sa, nullptr);
+
+  control::Controller ctl(fitted.job, control::controller_config(cfg), *link, *gpio, journal.get());
+  ctl.start(from);
+  hal::RtLoop loop(cfg.machine.cycle);
+  double t0 = -1.0, next_status = 1.0;
+  while (!ctl.finished()) {
+    const double due = loop.wait_next();
+    if (t0 < 0.0) t0 = due;
+    if (g_signal != 0) ctl.request_stop(g_signal == SIGINT ? "stopped by SIGINT" : "stopped by SIGTERM");
+    const double now = due - t0;
+    ctl.cycle(now);
+    if (now >= next_status) {  // the operator's status line, once a second
+      next_status += 1.0;
+      std::fprintf(stderr, "kerf: run: t %.0f s, %s, segment %lld of %zu; %s\n", now,
+                   control::to_string(ctl.state()), static_cast<long long>(ctl.report().last_completed + 1),
+                   ctl.report().planned, loop.stats().describe().c_str());
+    }
+  }
+  const control::RunReport& r = ctl.report();
+  io::SimSummary sum;
+  sum.state = control::to_string(r.state);
+  sum.reason = r.reason;
+  sum.link = config::to_string(cfg.link.kind);
+  sum.paths = fitted.job.paths.size();
+  sum.pierces = r.pierces;
+  sum.planned = r.planned;
+  sum.executed = r.completed_this_run;
+  sum.last_executed = r.last_completed + 1;
+  sum.resumed_from = opts.resume ? from.first + 1 : 0;
+  sum.has_cut_to = r.has_cut_to;
+  sum.cut_to = r.cut_to;
+  sum.torch_on = ctl.torch();
+  sum.torch_off_valid = r.torch_off_valid;
+  sum.torch_off_at = r.torch_off_at;
+  sum.stopped_at = r.stopped_at;
+  sum.link_errors = r.link_errors;
+  sum.duration_s = loop.stats().cycles * cfg.machine.cycle;
+  sum.rt = loop.stats().describe();
+  sum.rt_histogram = loop.stats().histogram();
+  sum.executed_total = journal ? journal->state().executed_total : r.completed_this_run;
+  sum.duplicates = journal ? journal->state().duplicates : 0;
+  sum.runs = journal ? journal->state().runs : 1;
+  if (!opts.report.empty() && !io::write_output(opts.report, io::format_sim_json(sum))) {
+    std::fprintf(stderr, "kerf: --report: cannot write %s: %s\n", opts.report.c_str(), std::strerror(errno));
+    return kExitFailure;
+  }
+  std::string line = io::format_sim_summary(sum);
+  line.replace(0, std::strlen("kerf sim"), "kerf run");
+  std::fputs(line.c_str(), stdout);
+  std::fprintf(stdout, "kerf run: %s; wake-up lateness:\n%s", sum.rt.c_str(), sum.rt_histogram.c_str());
+  if (r.state != control::State::done) {
+    std::fprintf(stderr, "kerf: run: stopped after segment %lld: %s\n", static_cast<long long>(sum.last_executed),
+                 r.reason.c_str());
+    return kExitFailure;
+  }
+  return kExitOk;
+}
+
+}  // namespace kerf::cli

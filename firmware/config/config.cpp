@@ -1,0 +1,114 @@
+#include "config/config.hpp"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+
+#include "config/sections.hpp"
+#include "config/table_reader.hpp"
+
+namespace kerf::config {
+
+namespace {
+
+constexpr std::size_t kMaxFileBytes = 1 << 20;  // a config, not a data file
+
+// A reader over root[key], or over an empty table when the section is absent
+// (its values keep their defaults).
+TableReader section(TableReader& root, const char* key, const toml::table& empty) {
+  const toml::table* t = root.table(key);
+  return TableReader(t ? *t : empty, key, t ? line_of(*t, 1) : 1, root.problems());
+}
+
+bool read_file(const std::string& path, std::string& text, std::string& error) {
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) {
+    error = path + ": cannot read: " + std::strerror(errno);
+    return false;
+  }
+  text.clear();
+  char buf[4096];
+  std::size_t n = 0;
+  while ((n = std::fread(buf, 1, sizeof buf, f)) > 0) {
+    text.append(buf, n);
+    if (text.size() > kMaxFileBytes) {
+      std::fclose(f);
+      error = path + ": cannot read: larger than 1 MiB";
+      return false;
+    }
+  }
+  const bool failed = std::ferror(f) != 0;
+  const int err = errno;  // EISDIR for a directory
+  std::fclose(f);
+  if (failed) {
+    error = path + ": cannot read: " + std::strerror(err);
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+Config defaults() {
+  Config c;
+  c.file = "(defaults)";
+  c.machine.axes = {{"x", 1000}, {"y", 1000}};
+  return c;
+}
+
+bool parse(const std::string& text, const std::string& display_name, Config& out,
+           std::string& error) {
+  toml::parse_result parsed = toml::parse(std::string_view(text), std::string_view(display_name));
+  if (!parsed) {
+    const toml::parse_error& e = parsed.error();
+    error = display_name + ":" + std::to_string(e.source().begin.line) +
+            ": syntax error: " + std::string(e.description());
+    return false;
+  }
+  // Everything goes into a copy: `out` is untouched unless the whole file is good.
+  Config c = defaults();
+  c.file = display_name;
+  Problems problems;
+  const toml::table empty;
+  TableReader root(parsed.table(), "", 1, problems);
+  TableReader machine = section(root, "machine", empty);
+  TableReader link = section(root, "link", empty);
+  TableReader gpio = section(root, "gpio", empty);
+  TableReader fit = section(root, "fit", empty);
+  TableReader cut = section(root, "cut", empty);
+  TableReader rt = section(root, "rt", empty);
+  const bool has_link = parsed.table()["link"].is_table();
+  if (!root.has("link"))
+    problems.add(1, "link", "missing: the machine needs a link ([link] with kind = "
+                            "\"modbus-tcp\", \"modbus-rtu\" or \"can\")");
+  root.finish();
+
+  std::vector<LineUse> gpio_lines;
+  read_machine(machine, c.machine);
+  if (has_link) read_link(link, c.link);
+  read_gpio(gpio, c.gpio, gpio_lines);
+  read_fit(fit, c.fit);
+  read_cut(cut, c.cut);
+  read_rt(rt, c.rt);
+
+  if (!problems.any()) {
+    check_machine(machine, c.machine);
+    check_link(link, c.link, machine, c.machine);
+    check_gpio(gpio_lines, problems);
+    check_cut(cut, c.cut, machine, c.machine);
+  }
+  if (problems.any()) {
+    error = problems.first(display_name);
+    return false;
+  }
+  out = std::move(c);
+  return true;
+}
+
+bool load(const std::string& path, Config& out, std::string& error) {
+  std::string text;
+  if (!read_file(path, text, error)) return false;
+  return parse(text, path, out, error);
+}
+
+}  // namespace kerf::config

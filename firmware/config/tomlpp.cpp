@@ -1,0 +1,3 @@
+// toml++'s implementation, compiled once (see tomlpp.hpp).
+#define TOML_IMPLEMENTATION
+#include "config/tomlpp.hpp"

@@ -1,0 +1,447 @@
+#include "control/controller.hpp"
+
+#include <cstdarg>
+#include <cstdio>
+
+namespace kerf::control {
+
+const char* to_string(State s) {
+  switch (s) {
+    case State::idle: return "idle";
+    case State::ready: return "ready";
+    case State::travel: return "travel";
+    case State::piercing: return "piercing";
+    case State::cutting: return "cutting";
+    case State::feed_hold: return "feed-hold";
+    case State::done: return "done";
+    case State::fault: return "fault";
+    case State::estop: return "estop";
+  }
+  return "unknown";
+}
+
+namespace {
+
+// Closer than this the board has nothing to move (1 nm; a count is 1 um or more).
+constexpr double kSamePoint = 1e-6;
+
+bool transient(hal::LinkError e) {
+  return e == hal::LinkError::timeout || e == hal::LinkError::disconnected ||
+         e == hal::LinkError::malformed || e == hal::LinkError::busy;
+}
+
+std::string board_fault_text(std::uint16_t bits) {
+  std::string s = "board fault:";
+  if (bits & hal::kFaultAbort) s += " abort";
+  if (bits & hal::kFaultLinkWatchdog) s += " link-watchdog";
+  if (bits & hal::kFaultBadSegment) s += " bad-segment";
+  if (bits & hal::kFaultStarved) s += " starved";
+  if (bits & hal::kFaultDrive) s += " drive-fault";
+  char hex[24];
+  std::snprintf(hex, sizeof hex, " (bits 0x%04x)", static_cast<unsigned>(bits));
+  return s + hex;
+}
+
+__attribute__((format(printf, 1, 2))) std::string format(const char* fmt, ...) {
+  char buf[240];
+  va_list args;
+  va_start(args, fmt);
+  std::vsnprintf(buf, sizeof buf, fmt, args);
+  va_end(args);
+  return buf;
+}
+
+}  // namespace
+
+Controller::Controller(const Job& job, const ControllerConfig& cfg, hal::SegmentLink& link,
+                       hal::Gpio& gpio, Journal* journal)
+    : job_(job), cfg_(cfg), link_(link), gpio_(gpio), journal_(journal) {}
+
+void Controller::start(const ResumePoint& from) {
+  const std::size_t n = job_.segment_count();
+  report_ = RunReport{};
+  report_.planned = n;
+  report_.first = from.first;
+  report_.last_completed = static_cast<std::int64_t>(from.first) - 1;
+  finished_ = false;
+  have_status_ = false;
+  std::size_t longest = 0;
+  for (const CutPath& p : job_.paths) longest = p.segments.size() > longest ? p.segments.size() : longest;
+  queue_.clear();
+  queue_.reserve(longest + 1);
+  job_of_wire_.clear();
+  job_of_wire_.reserve(n + job_.paths.size() + 1);
+  next_seg_ = from.first;
+  pierce_at_ = from.from;
+  state_ = State::ready;
+  if (from.done || n == 0) {
+    state_ = State::done;
+    finished_ = true;
+    if (journal_ && !journal_->state().finished) journal_->finished();
+    return;
+  }
+  // Resumed at (or within a count of) a segment's end: that segment was cut
+  // whole; record it and start at the next one.
+  if (distance(from.from, job_.segment(next_seg_).end) < kSamePoint) {
+    if (journal_) journal_->completed(static_cast<std::uint32_t>(next_seg_));
+    report_.last_completed = static_cast<std::int64_t>(next_seg_);
+    ++report_.completed_this_run;
+    ++next_seg_;
+    if (next_seg_ == n) {
+      state_ = State::done;
+      finished_ = true;
+      if (journal_) journal_->finished();
+      return;
+    }
+    pierce_at_ = job_.segment_start(next_seg_);
+  }
+  std::size_t i = 0;
+  path_ = job_.path_of(next_seg_, i);
+}
+
+std::int64_t Controller::job_segment_of(std::uint32_t seq) const {
+  if (seq <= base_ || seq > next_seq_) return -1;
+  return job_of_wire_[seq - base_ - 1];
+}
+
+void Controller::cycle(double now_s) {
+  if (finished_) return;
+  // Inputs first, and the torch off before any link I/O when they trip.
+  hal::GpioInputs in;
+  std::string trip;
+  State trip_state = State::fault;
+  if (!gpio_.read(now_s, in)) {
+    trip = std::string("gpio: ") + gpio_.last_error();
+  } else {
+    prev_in_ = in_;
+    in_ = in;
+    if (in.estop) {
+      trip = "E-stop";
+      trip_state = State::estop;
+    } else if (!stop_request_.empty()) {
+      trip = stop_request_;
+    } else if (in.any_limit()) {
+      for (std::uint8_t i = 0; i < in.limit_count; ++i)
+        if (in.limit[i]) {
+          trip = "limit switch " + std::to_string(i) + " hit";
+          break;
+        }
+    }
+  }
+  const bool stopping = state_ == State::fault || state_ == State::estop;
+  const bool cut_was_on = torch_;
+  if (!trip.empty() && !stopping && torch_) set_torch(false, now_s);
+  const bool fresh = poll_link(now_s);
+  if (stopping || state_ == State::fault || state_ == State::estop) {
+    // Waiting for the board to come to rest (or for the link to be given up).
+    if ((fresh && at_rest_) || (link_down_ && !fresh)) {
+      report_.stopped_at = st_.position;
+      finished_ = true;
+    }
+    return;
+  }
+  if (fresh) record_completions();
+  if (!trip.empty()) {
+    if (cut_was_on && fresh) {
+      torch_ = true;  // stop() records where the cut ended, then switches it off (already off)
+    }
+    stop(trip_state, trip, now_s);
+    return;
+  }
+  if (!fresh || state_ == State::fault) return;
+  if (st_.state == hal::BoardState::fault && state_ != State::ready) {
+    stop(State::fault, board_fault_text(st_.faults), now_s);
+    return;
+  }
+  run_state(now_s);
+}
+
+bool Controller::link_ok(hal::LinkError e) {
+  if (e == hal::LinkError::none) {
+    link_down_ = false;
+    return true;
+  }
+  ++report_.link_errors;
+  if (!link_down_) {
+    link_down_ = true;
+    link_down_since_ = WallClock::now();
+  }
+  return false;
+}
+
+bool Controller::poll_link(double now_s) {
+  hal::BoardStatus s;
+  const hal::LinkError e = link_.status(s);
+  if (!link_ok(e)) {
+    const double down = std::chrono::duration<double>(WallClock::now() - link_down_since_).count();
+    if (state_ == State::fault || state_ == State::estop) return false;
+    if (!transient(e)) {
+      stop(State::fault, std::string("link: ") + link_.last_error(), now_s);
+    } else {
+      // The board stops by itself after its watchdog time: so does the torch.
+      if (down >= cfg_.link_watchdog_s && torch_) {
+        set_torch(false, now_s);
+        report_.torch_off_valid = true;
+        report_.torch_off_at = st_.position;
+      }
+      if (down >= cfg_.link_timeout_s)
+        stop(State::fault,
+             format("link down for more than %g s: ", cfg_.link_timeout_s) + link_.last_error(), now_s);
+    }
+    return false;
+  }
+  // At rest: the same position over three polls while not running a queue.
+  if (have_status_ && s.position == st_.position && s.state != hal::BoardState::running)
+    ++rest_polls_;
+  else
+    rest_polls_ = 0;
+  at_rest_ = rest_polls_ >= 2 || s.state == hal::BoardState::done || s.state == hal::BoardState::idle;
+  st_ = s;
+  have_status_ = true;
+  return true;
+}
+
+void Controller::record_completions() {
+  while (seen_executed_ < st_.last_executed) {
+    ++seen_executed_;
+    const std::int64_t k = job_segment_of(seen_executed_);
+    if (k < 0) continue;
+    if (journal_ && !journal_->completed(static_cast<std::uint32_t>(k))) {
+      journal_failed_ = true;
+      return;
+    }
+    report_.last_completed = k;
+    report_.has_cut_to = false;
+    ++report_.completed_this_run;
+  }
+}
+
+void Controller::record_cut_to() {
+  if (!torch_) return;
+  const std::int64_t k = job_segment_of(st_.executing);
+  if (k < 0 || k != report_.last_completed + 1) return;
+  report_.has_cut_to = true;
+  report_.cut_to = {static_cast<std::uint32_t>(k), st_.position};
+  if (journal_) journal_->cut_to(report_.cut_to);
+}
+
+bool Controller::set_torch(bool on, double now_s) {
+  torch_ = on;
+  if (gpio_.set_torch(on)) return true;
+  // An output that cannot be switched is a fault; off is retried every cycle.
+  if (on) stop(State::fault, std::string("gpio: cannot switch the torch on: ") + gpio_.last_error(), now_s);
+  return false;
+}
+
+void Controller::stop(State s, const std::string& why, double now_s) {
+  if (state_ == State::fault || state_ == State::estop) return;
+  if (torch_) {
+    record_cut_to();  // the cut ends where the torch goes off
+    report_.torch_off_valid = true;
+    report_.torch_off_at = st_.position;
+    torch_ = false;
+    gpio_.set_torch(false);
+  }
+  link_.command(hal::Command::abort);  // brake on the path, drop the queue; the link may be down
+  state_ = s;
+  report_.state = s;
+  report_.reason = why;
+  report_.reason_t_s = now_s;
+  rest_polls_ = 0;
+  at_rest_ = false;
+}
+
+void Controller::begin_travel(Vec2<double> to) {
+  block_ = Block::rapid;
+  queue_.clear();
+  sent_ = 0;
+  started_ = finish_sent_ = false;
+  if (distance(st_.position, to) > kSamePoint) {
+    hal::SegmentCommand c;
+    c.kind = SegmentKind::line;
+    c.end = to;
+    c.feed = cfg_.rapid_feed_mm_s;
+    c.torch = false;
+    queue_.push_back(c);
+  }
+  state_ = State::travel;
+}
+
+void Controller::begin_pierce(double now_s) {
+  state_ = State::piercing;
+  arc_ok_t_ = -1.0;
+  torch_on_t_ = now_s;
+  ++report_.pierces;
+  set_torch(true, now_s);
+}
+
+void Controller::begin_cut() {
+  block_ = Block::cut;
+  queue_.clear();
+  std::size_t i = 0;
+  const std::size_t p = job_.path_of(next_seg_, i);
+  for (; i < job_.paths[p].segments.size(); ++i) queue_.push_back(job_.paths[p].segments[i]);
+  sent_ = 0;
+  started_ = finish_sent_ = false;
+  state_ = State::cutting;
+}
+
+bool Controller::pump() {
+  if (!started_ && !queue_.empty()) {
+    if (!link_ok(link_.command(hal::Command::start))) return false;
+    started_ = true;
+  }
+  while (sent_ < queue_.size() && st_.credit > 0) {
+    hal::SegmentCommand c = queue_[sent_];
+    c.seq = next_seq_ + 1;
+    hal::BoardStatus s;
+    if (!link_ok(link_.push(c, s))) return false;  // the same number goes again next cycle
+    st_ = s;
+    ++next_seq_;
+    job_of_wire_.push_back(block_ == Block::cut ? static_cast<std::int64_t>(next_seg_ + sent_) : -1);
+    block_last_seq_ = next_seq_;
+    ++sent_;
+  }
+  if (sent_ == queue_.size() && !queue_.empty() && !finish_sent_) {
+    if (!link_ok(link_.command(hal::Command::finish))) return false;
+    finish_sent_ = true;
+  }
+  return true;
+}
+
+bool Controller::block_done() const {
+  if (queue_.empty()) return true;
+  return finish_sent_ && st_.state == hal::BoardState::done && st_.last_executed >= block_last_seq_;
+}
+
+void Controller::path_finished(double now_s) {
+  set_torch(false, now_s);
+  next_seg_ += queue_.size();
+  ++path_;
+  if (path_ >= job_.paths.size()) {
+    state_ = State::done;
+    report_.state = State::done;
+    if (journal_ && !journal_->finished()) {
+      stop(State::fault, std::string("journal: ") + journal_->last_error(), now_s);
+      return;
+    }
+    report_.stopped_at = st_.position;
+    finished_ = true;
+    return;
+  }
+  pierce_at_ = job_.paths[path_].start;
+  begin_travel(pierce_at_);
+}
+
+void Controller::run_state(double now_s) {
+  if (journal_failed_) {
+    stop(State::fault, std::string("journal: ") + journal_->last_error(), now_s);
+    return;
+  }
+  const bool hold_pressed = in_.hold && !prev_in_.hold;
+  const bool start_pressed = in_.cycle_start && !prev_in_.cycle_start;
+  switch (state_) {
+    case State::idle:
+    case State::done:
+    case State::fault:
+    case State::estop:
+      return;
+    case State::ready:
+      // Take over the board: clear a fault a previous run left, then number
+      // our segments after whatever it has already accepted.
+      if (st_.state == hal::BoardState::fault) {
+        link_ok(link_.command(hal::Command::fault_reset));
+        return;
+      }
+      if (st_.state == hal::BoardState::running || st_.state == hal::BoardState::hold) {
+        link_ok(link_.command(hal::Command::abort));
+        return;
+      }
+      base_ = next_seq_ = seen_executed_ = st_.last_accepted;
+      begin_travel(pierce_at_);
+      return;
+    case State::travel:
+      if (hold_pressed) {
+        if (!queue_.empty() && link_ok(link_.command(hal::Command::hold))) {
+          held_from_ = State::travel;
+          state_ = State::feed_hold;
+        }
+        return;
+      }
+      if (pump() && block_done()) begin_pierce(now_s);
+      return;
+    case State::piercing:
+      if (hold_pressed) {
+        set_torch(false, now_s);
+        held_from_ = State::piercing;
+        state_ = State::feed_hold;
+        return;
+      }
+      if (!in_.arc_ok) {
+        if (arc_ok_t_ >= 0.0) {
+          stop(State::fault, format("arc-OK lost during the pierce at (%.3f, %.3f)", pierce_at_.x, pierce_at_.y), now_s);
+        } else if (now_s - torch_on_t_ > cfg_.arc_ok_timeout_s) {
+          stop(State::fault,
+               format("no arc-OK within %g s of torch on at the pierce at (%.3f, %.3f)", cfg_.arc_ok_timeout_s,
+                      pierce_at_.x, pierce_at_.y),
+               now_s);
+        }
+        return;
+      }
+      if (arc_ok_t_ < 0.0) arc_ok_t_ = now_s;
+      if (now_s - arc_ok_t_ < cfg_.pierce_delay_s) return;
+      if (resume_after_pierce_) {
+        if (link_ok(link_.command(hal::Command::resume))) {
+          resume_after_pierce_ = false;
+          state_ = State::cutting;
+        }
+      } else {
+        begin_cut();
+        pump();
+      }
+      return;
+    case State::cutting:
+      if (!in_.arc_ok) {
+        stop(State::fault,
+             format("arc-OK lost while cutting segment %lld", static_cast<long long>(report_.last_completed + 1)),
+             now_s);
+        return;
+      }
+      record_cut_to();
+      if (hold_pressed) {
+        if (link_ok(link_.command(hal::Command::hold))) {
+          held_from_ = State::cutting;
+          hold_braking_ = true;
+          state_ = State::feed_hold;
+        }
+        return;
+      }
+      if (pump() && block_done()) path_finished(now_s);
+      return;
+    case State::feed_hold:
+      if (held_from_ == State::cutting && hold_braking_) {
+        // The cut goes on while the axes brake; the torch goes off once they stop.
+        if (!in_.arc_ok) {
+          stop(State::fault, "arc-OK lost during a feed hold", now_s);
+          return;
+        }
+        record_cut_to();
+        if (at_rest_) {
+          set_torch(false, now_s);
+          hold_braking_ = false;
+          pierce_at_ = st_.position;
+        }
+        return;
+      }
+      if (!start_pressed) return;
+      if (held_from_ == State::travel) {
+        if (link_ok(link_.command(hal::Command::resume))) state_ = State::travel;
+      } else {
+        resume_after_pierce_ = held_from_ == State::cutting;
+        begin_pierce(now_s);
+      }
+      return;
+  }
+}
+
+}  // namespace kerf::control

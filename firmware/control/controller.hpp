@@ -1,0 +1,150 @@
+// The machine controller: runs a Job on a motion board (hal::SegmentLink)
+// with the torch and the safety inputs on hal::Gpio, one cycle at a time.
+//
+//   Idle -> Ready -> Travel -> Piercing -> Cutting <-> FeedHold ... -> Done
+//   Fault and EStop from anywhere.
+//
+// Each cut path: a rapid to its pierce point with the torch off (Travel);
+// torch on, wait for arc-OK (at most arc_ok_timeout), wait the pierce delay
+// (Piercing); stream the path's segments at the cut feed (Cutting); torch off
+// when the board has run the path's last segment. A feed hold brakes on the
+// path, turns the torch off once stopped, and re-pierces there on cycle start.
+//
+// Faults (E-stop, a limit switch, arc-OK lost while cutting, no arc-OK at a
+// pierce, a board/drive fault, the link down, a GPIO error) switch the torch
+// off in the cycle they are seen, abort the board (it brakes to a stop on the
+// path and drops its queue) and end the run with a reason. The journal keeps
+// every completed segment and the point the torch went off at, so a resumed
+// run re-pierces exactly there: nothing is cut twice, nothing is skipped.
+//
+// The controller never blocks: each cycle makes at most a few link
+// transactions and returns. It allocates only in start().
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "control/job.hpp"
+#include "control/journal.hpp"
+#include "kerf/hal/gpio.hpp"
+#include "kerf/hal/segment_link.hpp"
+
+namespace kerf::control {
+
+enum class State : std::uint8_t { idle, ready, travel, piercing, cutting, feed_hold, done, fault, estop };
+const char* to_string(State s);
+
+struct ControllerConfig {
+  double rapid_feed_mm_s = 10000.0 / 60.0;
+  double pierce_delay_s = 0.5;
+  double arc_ok_timeout_s = 3.0;
+  // Link health runs on the wall clock (a stalled transaction takes wall
+  // time whatever the simulation does). The board's watchdog stops it after
+  // link_watchdog_s without a request: the torch goes off then; the run ends
+  // in Fault once the link has been down for link_timeout_s.
+  double link_watchdog_s = 0.5;
+  double link_timeout_s = 1.0;
+};
+
+struct RunReport {
+  State state = State::idle;
+  std::string reason;                 // why it stopped, when not done
+  double reason_t_s = 0.0;            // controller time of the fault
+  std::size_t planned = 0;            // segments in the job
+  std::size_t first = 0;              // first segment of this run (resume)
+  std::size_t completed_this_run = 0; // completion records this run wrote
+  std::int64_t last_completed = -1;   // job segment index
+  bool has_cut_to = false;            // where the torch went off inside the next segment
+  CutPoint cut_to;
+  bool torch_off_valid = false;
+  Vec2<double> torch_off_at{};        // board position when the fault switched the torch off
+  Vec2<double> stopped_at{};          // board position once at rest
+  std::uint64_t link_errors = 0;      // failed transactions (each retried next cycle)
+  std::uint32_t pierces = 0;
+};
+
+class Controller {
+ public:
+  Controller(const Job& job, const ControllerConfig& cfg, hal::SegmentLink& link, hal::Gpio& gpio,
+             Journal* journal);
+
+  // Prepares a run from `from` (ResumePoint{} for a new job). Allocates.
+  void start(const ResumePoint& from);
+  // One cycle at controller time now_s (monotonic; simulated in the simulator).
+  void cycle(double now_s);
+  // Stops the run in the next cycle as a fault with this reason (a signal,
+  // the operator): torch off, motion stopped on the path, progress kept.
+  void request_stop(const std::string& why) { stop_request_ = why; }
+
+  State state() const { return state_; }
+  // Done, or stopped by a fault with the board at rest: nothing more will happen.
+  bool finished() const { return finished_; }
+  bool torch() const { return torch_; }
+  bool link_down() const { return link_down_; }
+  const RunReport& report() const { return report_; }
+  // The job segment a board sequence number carries; -1 for a rapid or unknown.
+  std::int64_t job_segment_of(std::uint32_t seq) const;
+
+ private:
+  enum class Block : std::uint8_t { none, rapid, cut };
+  using WallClock = std::chrono::steady_clock;
+
+  bool poll_link(double now_s);
+  bool check_inputs(double now_s);
+  void run_state(double now_s);
+  void begin_travel(Vec2<double> to);
+  void begin_pierce(double now_s);
+  void begin_cut();
+  bool pump();  // sends what the board has room for; false on a link error
+  bool block_done() const;
+  void record_completions();
+  void record_cut_to();
+  bool set_torch(bool on, double now_s);
+  void stop(State s, const std::string& why, double now_s);
+  void path_finished(double now_s);
+  bool link_ok(hal::LinkError e);
+
+  const Job& job_;
+  ControllerConfig cfg_;
+  hal::SegmentLink& link_;
+  hal::Gpio& gpio_;
+  Journal* journal_;
+
+  State state_ = State::idle;
+  bool finished_ = false;
+  bool torch_ = false;
+  RunReport report_;
+  hal::GpioInputs in_{}, prev_in_{};
+  hal::BoardStatus st_{};
+  Vec2<double> prev_pos_{};
+  bool have_status_ = false, at_rest_ = false;
+  int rest_polls_ = 0;
+  bool journal_failed_ = false;
+  std::string stop_request_;
+  WallClock::time_point link_down_since_{};
+  bool link_down_ = false;
+
+  // Board sequence numbers: base_ + 1 is the first this run sends.
+  std::uint32_t base_ = 0, next_seq_ = 0, seen_executed_ = 0;
+  std::vector<std::int64_t> job_of_wire_;  // by seq - base_ - 1
+
+  // The move being streamed.
+  Block block_ = Block::none;
+  std::vector<hal::SegmentCommand> queue_;
+  std::size_t sent_ = 0;
+  bool started_ = false, finish_sent_ = false;
+  std::uint32_t block_last_seq_ = 0;
+
+  // Where the job stands.
+  std::size_t path_ = 0;        // current path
+  std::size_t next_seg_ = 0;    // first job segment of the cut block to stream
+  Vec2<double> pierce_at_{};
+  double torch_on_t_ = 0.0, arc_ok_t_ = -1.0;
+  bool resume_after_pierce_ = false;  // re-pierce after a hold: resume the board, no new block
+  State held_from_ = State::idle;
+  bool hold_braking_ = false;
+};
+
+}  // namespace kerf::control

@@ -1,0 +1,90 @@
+#include "control/job.hpp"
+
+#include <cstring>
+
+#include "kerf/core/assert.hpp"
+
+namespace kerf::control {
+
+std::size_t Job::segment_count() const {
+  std::size_t n = 0;
+  for (const CutPath& p : paths) n += p.segments.size();
+  return n;
+}
+
+std::size_t Job::path_of(std::size_t k, std::size_t& index_in_path) const {
+  for (std::size_t p = 0; p < paths.size(); ++p) {
+    if (k < paths[p].segments.size()) {
+      index_in_path = k;
+      return p;
+    }
+    k -= paths[p].segments.size();
+  }
+  KERF_ASSERT(false && "segment index past the job's end");
+  return paths.size();
+}
+
+const hal::SegmentCommand& Job::segment(std::size_t k) const {
+  std::size_t i = 0;
+  const std::size_t p = path_of(k, i);
+  return paths[p].segments[i];
+}
+
+Vec2<double> Job::segment_start(std::size_t k) const {
+  std::size_t i = 0;
+  const std::size_t p = path_of(k, i);
+  return i == 0 ? paths[p].start : paths[p].segments[i - 1].end;
+}
+
+namespace {
+
+struct Fnv {
+  std::uint64_t h = 14695981039346656037ull;
+  void bytes(const void* data, std::size_t n) {
+    const auto* b = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < n; ++i) h = (h ^ b[i]) * 1099511628211ull;
+  }
+  void number(double v) {
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &v, sizeof bits);
+    bytes(&bits, sizeof bits);
+  }
+  void number(std::uint64_t v) { bytes(&v, sizeof v); }
+};
+
+}  // namespace
+
+JobId Job::id() const {
+  Fnv f;
+  f.number(static_cast<std::uint64_t>(paths.size()));
+  for (const CutPath& p : paths) {
+    f.number(p.start.x);
+    f.number(p.start.y);
+    f.number(static_cast<std::uint64_t>(p.segments.size()));
+    for (const hal::SegmentCommand& s : p.segments) {
+      f.number(static_cast<std::uint64_t>(s.kind == SegmentKind::arc ? 1 + (s.dir > 0) : 0));
+      f.number(s.end.x);
+      f.number(s.end.y);
+      if (s.kind == SegmentKind::arc) {
+        f.number(s.centre.x);
+        f.number(s.centre.y);
+      }
+    }
+  }
+  return {f.h, static_cast<std::uint32_t>(segment_count())};
+}
+
+ResumePoint resume_point(const Job& job, const JournalState& state) {
+  ResumePoint r;
+  const std::size_t n = job.segment_count();
+  r.first = static_cast<std::size_t>(state.last_completed + 1);
+  if (r.first >= n) {
+    r.done = true;
+    return r;
+  }
+  r.from = job.segment_start(r.first);
+  if (state.has_cut_to && state.cut_to.segment == r.first) r.from = state.cut_to.at;
+  return r;
+}
+
+}  // namespace kerf::control

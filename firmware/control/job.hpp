@@ -1,0 +1,46 @@
+// A cutting job as the controller runs it: cut paths in order, each a chain
+// of fitted segments that starts where the torch pierces. Segments are
+// numbered 0..N-1 across the whole job; the journal and the report speak of
+// those numbers.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "control/journal.hpp"
+#include "kerf/hal/segment_link.hpp"
+
+namespace kerf::control {
+
+struct CutPath {
+  Vec2<double> start{};                      // the pierce point
+  std::vector<hal::SegmentCommand> segments; // end, centre, dir, feed; seq is set when sent
+};
+
+struct Job {
+  std::vector<CutPath> paths;
+
+  std::size_t segment_count() const;
+  // The path holding job segment k, and k's index inside it.
+  std::size_t path_of(std::size_t k, std::size_t& index_in_path) const;
+  // Where job segment k starts (the pierce point or the previous segment's end).
+  Vec2<double> segment_start(std::size_t k) const;
+  const hal::SegmentCommand& segment(std::size_t k) const;
+  // Identifies the job for the journal: FNV-1a over every path and segment.
+  JobId id() const;
+};
+
+// Where a (resumed) run starts: job segment `first`, cut from `from` (its
+// start, or the point a previous run's torch went off at).
+struct ResumePoint {
+  std::size_t first = 0;
+  Vec2<double> from{};
+  bool done = false;  // nothing left to cut
+};
+
+// From a journal's state: the first segment not known complete, and the
+// point up to which it was already cut.
+ResumePoint resume_point(const Job& job, const JournalState& state);
+
+}  // namespace kerf::control

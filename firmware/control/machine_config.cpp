@@ -1,0 +1,17 @@
+#include "control/machine_config.hpp"
+
+namespace kerf::control {
+
+ControllerConfig controller_config(const config::Config& cfg) {
+  ControllerConfig c;
+  c.rapid_feed_mm_s = cfg.machine.rapid_feed / 60.0;
+  c.pierce_delay_s = cfg.cut.pierce_delay;
+  c.arc_ok_timeout_s = cfg.cut.arc_ok_timeout;
+  c.link_timeout_s = cfg.link.timeout;
+  // The board stops by itself after half the timeout without a request (its
+  // watchdog); the controller switches the torch off then.
+  c.link_watchdog_s = cfg.link.timeout / 2.0;
+  return c;
+}
+
+}  // namespace kerf::control

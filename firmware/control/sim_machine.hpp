@@ -1,0 +1,64 @@
+// The simulated machine for `kerf sim` and the scenario tests: the motion
+// board (sim/) behind its Modbus server, the host's Modbus link, the GPIO
+// lines (a hal::Gpio the caller provides, normally sim::ScriptedGpio) and
+// the controller, run in lockstep on one simulated clock: each controller
+// cycle is followed by the board's servo ticks for that cycle. Every run
+// is therefore repeatable, at any --speed. Link health alone is judged on
+// the wall clock (a stalled transaction takes wall time, whatever the
+// simulation does), as it is on a real machine.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "config/config.hpp"
+#include "control/controller.hpp"
+#include "kerf/sim/motion_board.hpp"
+#include "kerf/sim/motion_executor.hpp"
+
+namespace kerf::control {
+
+// Faults the board side can suffer; GPIO faults go through the Gpio script.
+enum class BoardFaultKind : std::uint8_t { link_drop, link_stall, modbus_exception, crc_error, drive_fault };
+const char* to_string(BoardFaultKind k);
+
+struct BoardFault {
+  BoardFaultKind kind = BoardFaultKind::link_drop;
+  double at_s = 0.0;        // simulated time
+  double duration_s = 0.5;  // wall time the link stays down (drop, stall)
+};
+
+struct SimMachineConfig {
+  bool rtu = false;
+  sim::MotionConfig motion;     // servo period, accel, counts/mm
+  double cycle_s = 0.002;       // controller period: a whole number of servo periods
+  double speed = 0.0;           // simulated s per wall s; 0 = as fast as possible
+  Vec2<double> start{};         // where the axes are at power-up
+  std::vector<BoardFault> faults;
+  double max_sim_s = 4 * 3600.0;
+};
+
+struct SimMachineResult {
+  std::string setup_error;              // the board or the link could not be started
+  RunReport run;
+  // One sample per servo period; `seq` is the job segment + 1 being run (0
+  // for a rapid or none), `torch` the torch output.
+  std::vector<sim::TraceSample> trace;
+  std::vector<std::int64_t> executed;   // job segments completed, in order
+  hal::BoardStatus board{};             // the board's final status
+  std::uint64_t link_resends = 0;
+  double sim_s = 0.0;
+  double wall_s = 0.0;
+  std::string rt;            // the paced loop's statistics (--speed > 0), hal::RtStats::describe()
+  std::string rt_histogram;  // and its histogram
+};
+
+// The board's motion settings and the controller period from a machine configuration.
+SimMachineConfig sim_machine_config(const config::Config& cfg);
+
+SimMachineResult run_sim_machine(const Job& job, const ControllerConfig& ccfg, const SimMachineConfig& mcfg,
+                                 hal::Gpio& gpio, Journal* journal, const ResumePoint& from);
+
+}  // namespace kerf::control

@@ -1,0 +1,542 @@
+#include "io/run_svg.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <string_view>
+
+// Text is built with += throughout (GCC bug 105329, see fit_output.cpp).
+
+namespace kerf::io {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Canvas, in px.
+constexpr double kWidth = 960;
+constexpr double kLeft = 80;            // room for the y tick labels
+constexpr double kRight = 20;
+constexpr double kPlotWidth = kWidth - kLeft - kRight;
+constexpr double kTitleY = 24;
+constexpr double kLegendY = 46;
+constexpr double kTopY = 70;            // top of the XY panel
+constexpr double kMaxTopHeight = 560;
+constexpr double kPanelGap = 70;        // room for the x tick labels and axis title
+constexpr double kSpeedHeight = 200;
+constexpr double kBottomMargin = 50;
+
+constexpr std::array<const char*, 8> kPalette = {"#1f77b4", "#ff7f0e", "#2ca02c", "#9467bd",
+                                                 "#8c564b", "#e377c2", "#17becf", "#bcbd22"};
+
+// A coordinate in px: two decimals are far below a pixel.
+void num(std::string& out, double v) {
+  if (!std::isfinite(v)) v = 0.0;
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.2f", v);
+  std::string_view s = buf;
+  if (s == "-0.00") s = "0.00";
+  out += s;
+}
+
+// A tick label: short, no trailing zeros.
+void label(std::string& out, double v) {
+  if (std::fabs(v) < 1e-9) v = 0.0;
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  out += buf;
+}
+
+// Length of the well-formed UTF-8 sequence at s[i], or 0 (overlongs and
+// surrogates are not checked: they are not what a file name holds by mistake).
+std::size_t utf8_length(const std::string& s, std::size_t i) {
+  const auto c = static_cast<unsigned char>(s[i]);
+  const std::size_t n = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xe ? 3 : (c >> 3) == 0x1e ? 4 : 0;
+  if (n == 0 || i + n > s.size()) return 0;
+  for (std::size_t k = 1; k < n; ++k)
+    if ((static_cast<unsigned char>(s[i + k]) >> 6) != 0x2) return 0;
+  return n;
+}
+
+// Text for XML: markup escaped; control characters (forbidden in XML 1.0 even
+// escaped) and bytes that are not UTF-8 become '?'.
+void escaped(std::string& out, const std::string& s) {
+  for (std::size_t i = 0; i < s.size();) {
+    const std::size_t n = utf8_length(s, i);
+    const char c = s[i];
+    if (n > 1) {
+      out.append(s, i, n);
+      i += n;
+      continue;
+    }
+    ++i;
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += n == 1 && (static_cast<unsigned char>(c) >= 0x20 || c == '\t') ? c : '?';
+    }
+  }
+}
+
+struct Box {
+  double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+  void add(Vec2<double> p) {
+    if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;
+    x0 = std::fmin(x0, p.x);
+    y0 = std::fmin(y0, p.y);
+    x1 = std::fmax(x1, p.x);
+    y1 = std::fmax(y1, p.y);
+  }
+  bool empty() const { return !(x0 <= x1); }
+};
+
+// World (mm, y up) to px (y down) for the XY panel.
+struct XyMap {
+  double x0, y1, scale, left, top;
+  double px(double x) const { return left + (x - x0) * scale; }
+  double py(double y) const { return top + (y1 - y) * scale; }
+};
+
+// Swept angle of an arc piece in (0, 2*pi]: start == end is a full turn.
+double sweep_angle(const Segment<double>& s) {
+  const Vec2<double> a = s.start - s.centre;
+  const Vec2<double> b = s.end - s.centre;
+  double t = std::atan2(a.cross(b), a.dot(b));  // CCW turn from a to b, in (-pi, pi]
+  if (s.dir < 0) t = -t;
+  if (t <= 0) t += 2 * kPi;
+  return t;
+}
+
+void add_arc_points(Box& box, const Segment<double>& s) {
+  const Vec2<double> a = s.start - s.centre;
+  const double r = a.norm();
+  const double a0 = std::atan2(a.y, a.x);
+  const double sweep = sweep_angle(s) * (s.dir < 0 ? -1 : 1);
+  constexpr int kSteps = 64;
+  for (int i = 0; i <= kSteps; ++i) {
+    const double t = a0 + sweep * i / kSteps;
+    box.add({s.centre.x + r * std::cos(t), s.centre.y + r * std::sin(t)});
+  }
+}
+
+void point(std::string& out, const XyMap& m, Vec2<double> p) {
+  num(out, m.px(p.x));
+  out += ' ';
+  num(out, m.py(p.y));
+}
+
+// One piece's path data. SVG's sweep-flag 1 is its positive angle direction,
+// which on a y-down screen is clockwise as seen; with y flipped the picture
+// looks like the world, so a CCW piece (E = +1) has sweep-flag 0.
+std::string piece_d(const XyMap& m, const Segment<double>& s) {
+  std::string d = "M";
+  point(d, m, s.start);
+  // An arc that bends less than a pixel over the whole canvas is drawn as its
+  // chord: renderers lose precision with radii of millions of px.
+  const bool flat = s.radius() * m.scale > 1e6 && s.start != s.end && sweep_angle(s) < kPi;
+  if (!s.is_arc() || flat) {
+    d += " L";
+    point(d, m, s.end);
+    return d;
+  }
+  std::string r;
+  num(r, s.radius() * m.scale);
+  const char* sweep_flag = s.dir > 0 ? " 0 " : " 1 ";
+  const auto arc = [&](bool large, Vec2<double> to) {
+    d += " A";
+    d += r;
+    d += ' ';
+    d += r;
+    d += " 0 ";
+    d += large ? '1' : '0';
+    d += sweep_flag;
+    point(d, m, to);
+  };
+  if (s.start == s.end) {  // a full circle: SVG draws nothing between equal ends
+    arc(false, s.centre * 2.0 - s.start);
+    arc(false, s.end);
+  } else {
+    arc(sweep_angle(s) > kPi, s.end);
+  }
+  return d;
+}
+
+// Indices in [begin, end) to draw, at most kMaxPolylineVertices: per bucket
+// its first and last and, for each of the `nkeys` keys, its lowest and highest.
+template <class Key>
+std::vector<std::size_t> decimate(std::size_t begin, std::size_t end, std::size_t nkeys, Key key) {
+  std::vector<std::size_t> keep;
+  const std::size_t n = end - begin;
+  if (n <= kMaxPolylineVertices) {
+    for (std::size_t i = begin; i < end; ++i) keep.push_back(i);
+    return keep;
+  }
+  const std::size_t per_bucket = 2 + 2 * nkeys;
+  const std::size_t buckets = kMaxPolylineVertices / per_bucket;
+  const std::size_t size = (n + buckets - 1) / buckets;
+  std::vector<std::size_t> picks;
+  for (std::size_t b = begin; b < end; b += size) {
+    const std::size_t e = std::min(end, b + size);
+    picks.assign({b, e - 1});
+    for (std::size_t k = 0; k < nkeys; ++k) {
+      std::size_t lo = b, hi = b;
+      for (std::size_t i = b; i < e; ++i) {
+        if (key(i, k) < key(lo, k)) lo = i;
+        if (key(i, k) > key(hi, k)) hi = i;
+      }
+      picks.push_back(lo);
+      picks.push_back(hi);
+    }
+    std::sort(picks.begin(), picks.end());
+    picks.erase(std::unique(picks.begin(), picks.end()), picks.end());
+    keep.insert(keep.end(), picks.begin(), picks.end());
+  }
+  return keep;
+}
+
+// A tick step of 1, 2 or 5 times a power of ten, giving about `target` ticks.
+double nice_step(double range, int target) {
+  const double raw = range / target;
+  const double mag = std::pow(10.0, std::floor(std::log10(raw)));
+  const double f = raw / mag;
+  return (f < 1.5 ? 1 : f < 3.5 ? 2 : f < 7.5 ? 5 : 10) * mag;
+}
+
+// Ticks and grid lines along one axis of a panel; `to_px` maps a value.
+template <class ToPx>
+void axis(std::string& out, bool horizontal, double lo, double hi, ToPx to_px, double x_or_y,
+          double grid_from, double grid_to) {
+  if (!(hi > lo)) return;
+  const double step = nice_step(hi - lo, horizontal ? 10 : 6);
+  for (double v = std::ceil(lo / step) * step; v <= hi + step * 1e-9; v += step) {
+    const double p = to_px(v);
+    if (horizontal) {
+      out += "<line class=\"grid\" x1=\"";
+      num(out, p);
+      out += "\" y1=\"";
+      num(out, grid_from);
+      out += "\" x2=\"";
+      num(out, p);
+      out += "\" y2=\"";
+      num(out, grid_to);
+      out += "\"/><text class=\"tick\" text-anchor=\"middle\" x=\"";
+      num(out, p);
+      out += "\" y=\"";
+      num(out, x_or_y + 16);
+      out += "\">";
+    } else {
+      out += "<line class=\"grid\" x1=\"";
+      num(out, grid_from);
+      out += "\" y1=\"";
+      num(out, p);
+      out += "\" x2=\"";
+      num(out, grid_to);
+      out += "\" y2=\"";
+      num(out, p);
+      out += "\"/><text class=\"tick\" text-anchor=\"end\" x=\"";
+      num(out, x_or_y - 6);
+      out += "\" y=\"";
+      num(out, p + 4);
+      out += "\">";
+    }
+    label(out, v);
+    out += "</text>\n";
+  }
+}
+
+void frame(std::string& out, double x, double y, double w, double h) {
+  out += "<rect class=\"frame\" x=\"";
+  num(out, x);
+  out += "\" y=\"";
+  num(out, y);
+  out += "\" width=\"";
+  num(out, w);
+  out += "\" height=\"";
+  num(out, h);
+  out += "\"/>\n";
+}
+
+void text(std::string& out, double x, double y, const char* anchor, const std::string& s,
+          const char* extra = "") {
+  out += "<text class=\"axis\" text-anchor=\"";
+  out += anchor;
+  out += "\" x=\"";
+  num(out, x);
+  out += "\" y=\"";
+  num(out, y);
+  out += '"';
+  out += extra;
+  out += '>';
+  escaped(out, s);
+  out += "</text>\n";
+}
+
+// Maximal runs of equal torch state: [begin, end) sample ranges.
+struct Run {
+  std::size_t begin, end;
+  bool torch;
+};
+
+std::vector<Run> torch_runs(const std::vector<TraceSample>& trace) {
+  std::vector<Run> runs;
+  for (std::size_t i = 0; i < trace.size(); ++i) {
+    if (runs.empty() || runs.back().torch != trace[i].torch) runs.push_back({i, i + 1, trace[i].torch});
+    else runs.back().end = i + 1;
+  }
+  return runs;
+}
+
+void legend_item(std::string& out, double x, const std::string& swatch, const std::string& name) {
+  out += "<g transform=\"translate(";
+  num(out, x);
+  out += ' ';
+  num(out, kLegendY);
+  out += ")\">";
+  out += swatch;
+  out += "<text class=\"tick\" x=\"26\" y=\"4\">";
+  escaped(out, name);
+  out += "</text></g>\n";
+}
+
+void legend(std::string& out, const RunPlot& plot) {
+  double x = kLeft;
+  const auto item = [&](const std::string& swatch, const std::string& name) {
+    legend_item(out, x, swatch, name);
+    x += 30 + 7.0 * static_cast<double>(name.size());
+  };
+  item("<circle class=\"pt\" cx=\"10\" cy=\"0\" r=\"2\"/>", "input points");
+  item("<line x1=\"0\" y1=\"0\" x2=\"20\" y2=\"0\" stroke=\"#1f77b4\" stroke-width=\"2\"/>",
+       "fitted pieces (" + std::to_string(plot.pieces.size()) + ")");
+  if (plot.tol > 0) {
+    std::string name = "band \u00b1";
+    label(name, plot.tol);
+    name += " mm";
+    item("<line class=\"band\" x1=\"0\" y1=\"0\" x2=\"20\" y2=\"0\" stroke-width=\"8\"/>", name);
+  }
+  item("<line class=\"cut\" x1=\"0\" y1=\"0\" x2=\"20\" y2=\"0\"/>", "cut (torch on)");
+  item("<line class=\"rapid\" x1=\"0\" y1=\"0\" x2=\"20\" y2=\"0\"/>", "rapid (torch off)");
+  item("<circle class=\"pierce\" cx=\"10\" cy=\"0\" r=\"4\"/>", "pierce");
+  item("<rect class=\"on\" x=\"0\" y=\"-6\" width=\"20\" height=\"12\"/>", "torch on (speed)");
+}
+
+void polyline(std::string& out, const char* cls, const std::vector<std::size_t>& idx,
+              const std::vector<TraceSample>& trace, const XyMap& m) {
+  out += "<polyline class=\"";
+  out += cls;
+  out += "\" points=\"";
+  for (std::size_t k = 0; k < idx.size(); ++k) {
+    if (k) out += ' ';
+    num(out, m.px(trace[idx[k]].pos.x));
+    out += ',';
+    num(out, m.py(trace[idx[k]].pos.y));
+  }
+  out += "\"/>\n";
+}
+
+// The XY panel; returns its height in px.
+double xy_panel(std::string& out, const RunPlot& plot, const std::vector<Run>& runs) {
+  Box box;
+  for (const auto& path : plot.paths)
+    for (const Vec2<double>& p : path) box.add(p);
+  for (const Segment<double>& s : plot.pieces) {
+    box.add(s.start);
+    box.add(s.end);
+    if (s.is_arc()) add_arc_points(box, s);
+  }
+  for (const TraceSample& t : plot.trace) box.add(t.pos);
+  if (box.empty()) box = {0, 0, 1, 1};
+  double dx = box.x1 - box.x0, dy = box.y1 - box.y0;
+  const double pad = 0.03 * std::fmax(std::fmax(dx, dy), 1e-9);
+  box.x0 -= pad;
+  box.x1 += pad;
+  box.y0 -= pad;
+  box.y1 += pad;
+  dx = box.x1 - box.x0;
+  dy = box.y1 - box.y0;
+  const double scale = std::fmin(kPlotWidth / dx, kMaxTopHeight / dy);
+  const double height = dy * scale;
+  const XyMap m{box.x0, box.y1, scale, kLeft, kTopY};
+
+  out += "<g id=\"xy\">\n";
+  frame(out, kLeft, kTopY, dx * scale, height);
+  axis(out, true, box.x0, box.x1, [&](double v) { return m.px(v); }, kTopY + height, kTopY,
+       kTopY + height);
+  axis(out, false, box.y0, box.y1, [&](double v) { return m.py(v); }, kLeft, kLeft,
+       kLeft + dx * scale);
+  text(out, kLeft + dx * scale / 2, kTopY + height + 36, "middle", "x (mm)");
+  std::string ylabel_pos = " transform=\"rotate(-90 ";
+  num(ylabel_pos, kLeft - 56);
+  ylabel_pos += ' ';
+  num(ylabel_pos, kTopY + height / 2);
+  ylabel_pos += ")\"";
+  text(out, kLeft - 56, kTopY + height / 2, "middle", "y (mm)", ylabel_pos.c_str());
+
+  // The band under the pieces, when it is wide enough to see.
+  const double band_px = 2 * plot.tol * scale;
+  std::vector<std::string> ds;
+  for (const Segment<double>& s : plot.pieces) ds.push_back(piece_d(m, s));
+  if (band_px >= 0.5) {
+    out += "<g class=\"band\" stroke-width=\"";
+    num(out, band_px);
+    out += "\">\n";
+    for (const std::string& d : ds) {
+      out += "<path d=\"";
+      out += d;
+      out += "\"/>\n";
+    }
+    out += "</g>\n";
+  }
+  for (std::size_t i = 0; i < ds.size(); ++i) {
+    out += "<path class=\"piece\" data-path=\"";
+    out += std::to_string(i < plot.piece_path.size() ? plot.piece_path[i] : 0);
+    out += "\" stroke=\"";
+    out += kPalette[i % kPalette.size()];
+    out += "\" d=\"";
+    out += ds[i];
+    out += "\"/>\n";
+  }
+  // Each run starts at the previous run's last sample, so the drawing is unbroken.
+  const auto& tr = plot.trace;
+  for (const Run& r : runs) {
+    const std::size_t from = r.begin > 0 ? r.begin - 1 : r.begin;
+    const auto idx = decimate(from, r.end, 2, [&](std::size_t i, std::size_t k) {
+      return k == 0 ? tr[i].pos.x : tr[i].pos.y;
+    });
+    polyline(out, r.torch ? "cut" : "rapid", idx, tr, m);
+  }
+  // The points over the trace, so that both stay visible.
+  for (const auto& path : plot.paths)
+    for (const Vec2<double>& p : path) {
+      out += "<circle class=\"pt\" cx=\"";
+      num(out, m.px(p.x));
+      out += "\" cy=\"";
+      num(out, m.py(p.y));
+      out += "\" r=\"1.2\"/>\n";
+    }
+  for (const Run& r : runs) {
+    if (!r.torch) continue;
+    out += "<circle class=\"pierce\" cx=\"";
+    num(out, m.px(tr[r.begin].pos.x));
+    out += "\" cy=\"";
+    num(out, m.py(tr[r.begin].pos.y));
+    out += "\" r=\"4\"/>\n";
+  }
+  out += "</g>\n";
+  return height;
+}
+
+void speed_panel(std::string& out, const std::vector<TraceSample>& tr, const std::vector<Run>& runs,
+                 double top) {
+  // Speed at each sample from the step before it.
+  std::vector<double> ts, vs;
+  for (std::size_t i = 1; i < tr.size(); ++i) {
+    const double dt = tr[i].t_s - tr[i - 1].t_s;
+    if (!(dt > 0)) continue;
+    ts.push_back(tr[i].t_s);
+    vs.push_back(distance(tr[i - 1].pos, tr[i].pos) / dt * 60.0);
+  }
+  double t0 = 0, t1 = 1;
+  if (!tr.empty() && tr.back().t_s > tr.front().t_s) {
+    t0 = tr.front().t_s;
+    t1 = tr.back().t_s;
+  }
+  double vmax = 0;
+  for (const double v : vs) vmax = std::fmax(vmax, v);
+  vmax = vmax > 0 ? vmax * 1.05 : 1.0;
+  const auto px = [&](double t) { return kLeft + (t - t0) / (t1 - t0) * kPlotWidth; };
+  const auto py = [&](double v) { return top + kSpeedHeight - v / vmax * kSpeedHeight; };
+
+  out += "<g id=\"speed\">\n";
+  for (const Run& r : runs) {
+    if (!r.torch) continue;
+    const double a = tr[r.begin].t_s;
+    const double b = r.end < tr.size() ? tr[r.end].t_s : tr[r.end - 1].t_s;
+    out += "<rect class=\"on\" x=\"";
+    num(out, px(a));
+    out += "\" y=\"";
+    num(out, top);
+    out += "\" width=\"";
+    num(out, std::fmax(px(b) - px(a), 0.5));
+    out += "\" height=\"";
+    num(out, kSpeedHeight);
+    out += "\"/>\n";
+  }
+  frame(out, kLeft, top, kPlotWidth, kSpeedHeight);
+  axis(out, true, t0, t1, px, top + kSpeedHeight, top, top + kSpeedHeight);
+  axis(out, false, 0.0, vmax, py, kLeft, kLeft, kLeft + kPlotWidth);
+  text(out, kLeft + kPlotWidth / 2, top + kSpeedHeight + 36, "middle", "t (s)");
+  std::string rot = " transform=\"rotate(-90 ";
+  num(rot, kLeft - 56);
+  rot += ' ';
+  num(rot, top + kSpeedHeight / 2);
+  rot += ")\"";
+  text(out, kLeft - 56, top + kSpeedHeight / 2, "middle", "speed (mm/min)", rot.c_str());
+  if (vs.empty()) {
+    text(out, kLeft + kPlotWidth / 2, top + kSpeedHeight / 2, "middle", "no trace");
+  } else {
+    const auto idx = decimate(0, vs.size(), 1, [&](std::size_t i, std::size_t) { return vs[i]; });
+    out += "<polyline class=\"speed\" points=\"";
+    for (std::size_t k = 0; k < idx.size(); ++k) {
+      if (k) out += ' ';
+      num(out, px(ts[idx[k]]));
+      out += ',';
+      num(out, py(vs[idx[k]]));
+    }
+    out += "\"/>\n";
+  }
+  out += "</g>\n";
+}
+
+}  // namespace
+
+std::string format_run_svg(const RunPlot& plot) {
+  const std::vector<Run> runs = torch_runs(plot.trace);
+  std::string body;
+  const double xy_height = xy_panel(body, plot, runs);
+  const double speed_top = kTopY + xy_height + kPanelGap;
+  speed_panel(body, plot.trace, runs, speed_top);
+  const double height = speed_top + kSpeedHeight + kBottomMargin;
+
+  std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  out += "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"";
+  num(out, kWidth);
+  out += "\" height=\"";
+  num(out, height);
+  out += "\" viewBox=\"0 0 ";
+  num(out, kWidth);
+  out += ' ';
+  num(out, height);
+  out += "\" font-family=\"sans-serif\">\n";
+  out += "<style>"
+         ".frame{fill:none;stroke:#444;stroke-width:1}"
+         ".grid{stroke:#e4e4e4;stroke-width:1}"
+         ".tick{font-size:11px;fill:#333}"
+         ".axis{font-size:13px;fill:#111}"
+         ".title{font-size:16px;font-weight:bold;fill:#111}"
+         ".pt{fill:#555}"
+         ".piece{fill:none;stroke-width:2}"
+         ".band,.band path{fill:none;stroke:#f2d98c;stroke-opacity:0.6;stroke-linecap:round}"
+         ".cut{fill:none;stroke:#222;stroke-width:0.75}"
+         ".rapid{fill:none;stroke:#999;stroke-width:1;stroke-dasharray:5 4}"
+         ".pierce{fill:none;stroke:#d00;stroke-width:1.5}"
+         ".on{fill:#ffe0b0;stroke:none}"
+         ".speed{fill:none;stroke:#1f5fb4;stroke-width:1}"
+         "</style>\n";
+  out += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  out += "<text class=\"title\" x=\"";
+  num(out, kLeft);
+  out += "\" y=\"";
+  num(out, kTitleY);
+  out += "\">";
+  escaped(out, plot.title);
+  out += "</text>\n";
+  legend(out, plot);
+  out += body;
+  out += "</svg>\n";
+  return out;
+}
+
+}  // namespace kerf::io

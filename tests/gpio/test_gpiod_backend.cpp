@@ -1,0 +1,193 @@
+// The libgpiod backend's logic above the version seam, against fake chips
+// (fake_gpiod.cpp): torch safety, active-low, debounce, line lookup, busy
+// lines, I/O errors, and that every error path closes what it opened.
+#include <gtest/gtest.h>
+
+#include "fake_gpiod.hpp"
+#include "kerf/hal/gpio/gpiod_gpio.hpp"
+
+namespace kerf::hal {
+namespace {
+
+using fake_gpiod::world;
+
+GpioLineConfig at(const char* chip, int offset, bool active_low = false, double debounce_s = 0) {
+  GpioLineConfig l;
+  l.used = true;
+  l.chip = chip;
+  l.offset = offset;
+  l.active_low = active_low;
+  l.debounce_s = debounce_s;
+  return l;
+}
+
+GpioLineConfig named(const char* chip, const char* name) {
+  GpioLineConfig l;
+  l.used = true;
+  l.chip = chip;
+  l.name = name;
+  return l;
+}
+
+class GpiodBackend : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    world() = fake_gpiod::World{};
+    fake_gpiod::FakeChip c0{"gpiochip0", "pinctrl-bcm2835", std::vector<fake_gpiod::FakeLine>(54)};
+    c0.lines[17].name = "TORCH";
+    c0.lines[4].name = "ESTOP";
+    fake_gpiod::FakeChip c1{"gpiochip1", "mcp23017", std::vector<fake_gpiod::FakeLine>(16)};
+    c1.lines[2].name = "ARC_OK";
+    world().chips["/dev/gpiochip0"] = c0;
+    world().chips["/dev/gpiochip1"] = c1;
+  }
+  // Nothing stays open or requested once the backend is gone or failed.
+  void TearDown() override {
+    EXPECT_EQ(world().open_chips, 0);
+    EXPECT_EQ(world().requested_lines, 0);
+  }
+  fake_gpiod::FakeLine& line(const char* path, int offset) {
+    return world().chips.at(path).lines.at(static_cast<std::size_t>(offset));
+  }
+};
+
+TEST_F(GpiodBackend, TorchStartsOffAndEndsOffActiveHigh) {
+  GpioConfig cfg;
+  cfg.torch = at("gpiochip0", 17);
+  std::string error;
+  {
+    auto gpio = open_gpiod(cfg, error);
+    ASSERT_NE(gpio, nullptr) << error;
+    ASSERT_EQ(world().writes.size(), 1u);
+    EXPECT_TRUE(world().writes[0].initial);
+    EXPECT_FALSE(world().writes[0].high);
+    EXPECT_EQ(line("/dev/gpiochip0", 17).consumer, "kerf");
+    ASSERT_TRUE(gpio->set_torch(true));
+    EXPECT_TRUE(line("/dev/gpiochip0", 17).level);
+  }
+  // The destructor drove it off before releasing.
+  EXPECT_FALSE(world().writes.back().high);
+  EXPECT_FALSE(line("/dev/gpiochip0", 17).level);
+}
+
+TEST_F(GpiodBackend, TorchActiveLowStartsAndEndsHigh) {
+  GpioConfig cfg;
+  cfg.torch = at("gpiochip0", 17, /*active_low=*/true);
+  std::string error;
+  {
+    auto gpio = open_gpiod(cfg, error);
+    ASSERT_NE(gpio, nullptr) << error;
+    EXPECT_TRUE(world().writes.at(0).initial);
+    EXPECT_TRUE(world().writes.at(0).high);  // logical off
+    ASSERT_TRUE(gpio->set_torch(true));
+    EXPECT_FALSE(line("/dev/gpiochip0", 17).level);
+  }
+  EXPECT_TRUE(line("/dev/gpiochip0", 17).level);
+}
+
+TEST_F(GpiodBackend, InputsAreActiveLowAndDebounced) {
+  GpioConfig cfg;
+  cfg.estop = at("gpiochip0", 4, /*active_low=*/true);
+  cfg.arc_ok = named("", "ARC_OK");  // searched on every chip
+  cfg.limits = {at("gpiochip1", 5, false, 0.25), GpioLineConfig{}};
+  std::string error;
+  auto gpio = open_gpiod(cfg, error);
+  ASSERT_NE(gpio, nullptr) << error;
+  line("/dev/gpiochip0", 4).level = true;  // E-stop chain closed: not asserted
+  line("/dev/gpiochip1", 2).level = true;
+  GpioInputs in;
+  ASSERT_TRUE(gpio->read(1.0, in));
+  EXPECT_FALSE(in.estop);
+  EXPECT_TRUE(in.arc_ok);
+  EXPECT_EQ(in.limit_count, 2);
+  EXPECT_FALSE(in.any_limit());
+  line("/dev/gpiochip0", 4).level = false;
+  line("/dev/gpiochip1", 5).level = true;
+  ASSERT_TRUE(gpio->read(1.125, in));
+  EXPECT_TRUE(in.estop);      // no debounce on E-stop
+  EXPECT_FALSE(in.limit[0]);  // limit 0 has been high for 0 s of its 0.25
+  ASSERT_TRUE(gpio->read(1.375, in));
+  EXPECT_TRUE(in.limit[0]);
+  EXPECT_FALSE(in.limit[1]);
+}
+
+TEST_F(GpiodBackend, LinesByNameAndChipLabel) {
+  GpioConfig cfg;
+  cfg.torch = named("pinctrl-bcm2835", "TORCH");
+  cfg.estop = named("gpiochip0", "ESTOP");
+  cfg.hold = at("mcp23017", 9);
+  std::string error;
+  auto gpio = open_gpiod(cfg, error);
+  ASSERT_NE(gpio, nullptr) << error;
+  EXPECT_EQ(line("/dev/gpiochip0", 17).consumer, "kerf");
+  EXPECT_EQ(line("/dev/gpiochip0", 4).consumer, "kerf");
+  EXPECT_EQ(line("/dev/gpiochip1", 9).consumer, "kerf");
+}
+
+TEST_F(GpiodBackend, OffsetOutOfRangeThroughOpen) {
+  GpioConfig cfg;
+  cfg.arc_ok = at("gpiochip0", 99);
+  std::string error;
+  EXPECT_EQ(open_gpiod(cfg, error), nullptr);
+  EXPECT_EQ(error, "gpio: arc_ok: chip gpiochip0 has 54 lines, offset 99 is out of range");
+}
+
+TEST_F(GpiodBackend, BusyLineNamesItsConsumerAndReleasesTheOthers) {
+  line("/dev/gpiochip1", 7).consumer = "linuxcnc";
+  GpioConfig cfg;
+  cfg.torch = at("gpiochip0", 17, /*active_low=*/true);  // requested first...
+  cfg.estop = at("gpiochip0", 4);
+  cfg.cycle_start = at("gpiochip1", 7);  // ...this one, last, is busy
+  std::string error;
+  EXPECT_EQ(open_gpiod(cfg, error), nullptr);
+  EXPECT_EQ(error, "gpio: cycle_start: line 7 on gpiochip1 is busy (used by \"linuxcnc\")");
+  EXPECT_EQ(line("/dev/gpiochip0", 4).consumer, "");
+  EXPECT_EQ(line("/dev/gpiochip0", 17).consumer, "");
+  EXPECT_TRUE(line("/dev/gpiochip0", 17).level);  // left logically off (active-low)
+  EXPECT_EQ(world().chips.at("/dev/gpiochip1").lines[7].consumer, "linuxcnc");
+}
+
+TEST_F(GpiodBackend, NameErrors) {
+  GpioConfig cfg;
+  cfg.hold = named("gpiochip1", "HOLD");
+  std::string error;
+  EXPECT_EQ(open_gpiod(cfg, error), nullptr);
+  EXPECT_EQ(error, "gpio: hold: no line named \"HOLD\" on gpiochip1");
+  cfg.hold = named("gpiochip1", "ARC_OK");
+  cfg.arc_ok = named("gpiochip1", "ARC_OK");
+  EXPECT_EQ(open_gpiod(cfg, error), nullptr);
+  EXPECT_EQ(error, "gpio: hold: line 2 on gpiochip1 is already arc_ok's");
+  world().chips["/dev/gpiochip1"].lines[3].name = "ESTOP";
+  cfg = GpioConfig{};
+  cfg.estop = named("", "ESTOP");
+  EXPECT_EQ(open_gpiod(cfg, error), nullptr);
+  EXPECT_EQ(error, "gpio: estop: line name \"ESTOP\" is on both gpiochip0 and gpiochip1: set the chip");
+  cfg.estop = named("", "E_STOP");
+  EXPECT_EQ(open_gpiod(cfg, error), nullptr);
+  EXPECT_EQ(error, "gpio: estop: no line named \"E_STOP\" on any of 2 chips (gpiochip0, gpiochip1)");
+  cfg.estop = named("gpiochip0", "ESTOP");  // the chip is given: not ambiguous
+  auto gpio = open_gpiod(cfg, error);
+  EXPECT_NE(gpio, nullptr) << error;
+}
+
+TEST_F(GpiodBackend, IoErrorsAreReportedNotThrown) {
+  GpioConfig cfg;
+  cfg.torch = at("gpiochip0", 17);
+  cfg.estop = at("gpiochip0", 4);
+  std::string error;
+  auto gpio = open_gpiod(cfg, error);
+  ASSERT_NE(gpio, nullptr) << error;
+  line("/dev/gpiochip0", 4).fail_io = true;
+  GpioInputs in;
+  EXPECT_FALSE(gpio->read(0.0, in));
+  EXPECT_STREQ(gpio->last_error(),
+               "gpio: estop: reading line 4 on gpiochip0 failed: Input/output error");
+  line("/dev/gpiochip0", 17).fail_io = true;
+  EXPECT_FALSE(gpio->set_torch(true));
+  EXPECT_STREQ(gpio->last_error(),
+               "gpio: torch: setting line 17 on gpiochip0 failed: Input/output error");
+  line("/dev/gpiochip0", 17).fail_io = false;  // so the destructor can turn it off
+}
+
+}  // namespace
+}  // namespace kerf::hal

@@ -1,0 +1,57 @@
+// A minimal hal::Gpio for controller tests: the arc comes 20 ms after the
+// torch turns on; inputs are set by the test between cycles; every torch
+// change is recorded with the time of the read before it.
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "kerf/hal/gpio.hpp"
+
+namespace kerf::test {
+
+class FakeGpio final : public hal::Gpio {
+ public:
+  struct Change {
+    double t;
+    bool on;
+  };
+  // Runs `fn` at the first read at or after t_s.
+  void at(double t_s, std::function<void(FakeGpio&)> fn) { events_.push_back({t_s, std::move(fn)}); }
+
+  bool read(double now_s, hal::GpioInputs& in) override {
+    now_ = now_s;
+    for (auto& e : events_)
+      if (e.fn && now_s >= e.t) {
+        e.fn(*this);
+        e.fn = nullptr;
+      }
+    in = inputs;
+    in.arc_ok = torch_ && arc_works && now_s >= torch_on_t_ + 0.02 && !arc_lost;
+    return true;
+  }
+  bool set_torch(bool on) override {
+    if (on != torch_) changes.push_back({now_, on});
+    if (on && !torch_) torch_on_t_ = now_;
+    torch_ = on;
+    return true;
+  }
+  const char* last_error() const override { return ""; }
+  bool torch() const { return torch_; }
+
+  hal::GpioInputs inputs{};
+  bool arc_works = true;
+  bool arc_lost = false;
+  std::vector<Change> changes;
+
+ private:
+  struct Event {
+    double t;
+    std::function<void(FakeGpio&)> fn;
+  };
+  std::vector<Event> events_;
+  double now_ = 0.0, torch_on_t_ = 0.0;
+  bool torch_ = false;
+};
+
+}  // namespace kerf::test
