@@ -185,3 +185,33 @@ TEST(CanFaultRecovery, BusOffRecoversWhenTheBusDoes) {
 
 }  // namespace
 }  // namespace kerf::test
+
+namespace kerf::test {
+namespace {
+
+// The plant's following error beyond the drive's window (0x6065): the drive
+// faults with EMCY 0x8611 and statusword bit 13, and the link stops.
+TEST(CanFollowingError, BeyondTheWindowTheDriveFaults) {
+  CspRig rig;
+  // 50 mm/s at 1 ms SYNC is 50 counts a period; a 20-count window is too tight.
+  ASSERT_EQ(rig.master->sdo_write(0, kFollowingWindow, 0, 20, 4), hal::AxisError::none) << rig.master->last_error();
+  hal::BoardStatus st;
+  hal::SegmentCommand s;
+  s.seq = 1;
+  s.end = {10.0, 0.0};
+  s.feed = 50.0;
+  ASSERT_EQ(rig.link->push(s, st), LinkError::none);
+  ASSERT_EQ(rig.link->command(hal::Command::start), LinkError::none);
+  ASSERT_TRUE(rig.run_until([](const hal::BoardStatus& b) { return b.state == BoardState::fault; }, 1000));
+  rig.link->status(st);
+  EXPECT_TRUE(st.faults & hal::kFaultEmcy);
+  EXPECT_NE(std::string(rig.link->last_error()).find("node 1): emergency: EMCY error code 0x8611"), std::string::npos)
+      << rig.link->last_error();
+  EXPECT_EQ(rig.bus.drive(0).state(), DriveState::fault);
+  EXPECT_TRUE(rig.bus.drive(0).statusword() & kSwFollowingError);
+  // The window as set allows the ramp's first steps: the fault came once the speed passed 20 counts/period.
+  EXPECT_GT(rig.bus.drive(0).actual(), 0);
+}
+
+}  // namespace
+}  // namespace kerf::test

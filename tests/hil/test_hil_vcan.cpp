@@ -79,6 +79,22 @@ bool wait_boot(hal::CanBus& bus, std::vector<int> nodes) {
   return nodes.empty();
 }
 
+// Sends an error frame on vcan0 as a CAN controller's driver would report it.
+void send_error_frame(std::uint32_t err_class, std::uint8_t data1) {
+  const int s = socket(PF_CAN, SOCK_RAW, CAN_RAW);
+  ASSERT_GE(s, 0);
+  sockaddr_can addr{};
+  addr.can_family = AF_CAN;
+  addr.can_ifindex = static_cast<int>(if_nametoindex("vcan0"));
+  ASSERT_EQ(bind(s, reinterpret_cast<sockaddr*>(&addr), sizeof addr), 0);
+  can_frame e{};
+  e.can_id = CAN_ERR_FLAG | err_class;
+  e.can_dlc = CAN_ERR_DLC;
+  e.data[1] = data1;
+  ASSERT_EQ(write(s, &e, sizeof e), static_cast<ssize_t>(sizeof e)) << std::strerror(errno);
+  close(s);
+}
+
 struct HilRig {
   std::unique_ptr<DriveProcess> drives;
   std::unique_ptr<hal::SocketCanBus> bus;
@@ -213,6 +229,33 @@ TEST(HilVcan, BusOffErrorFrameFaultsTheLink) {
   EXPECT_EQ(rig.bus->state(), hal::BusState::bus_off);
   EXPECT_EQ(rig.bus->send(hal::CanFrame{}), hal::CanResult::bus_off);  // refused, not dropped
   EXPECT_NE(std::string(rig.link->last_error()).find("bus-off"), std::string::npos);
+}
+
+// Error-passive is counted and the job goes on; after bus-off, the fault
+// reset waits for the kernel's "restarted" report, then the drives come back.
+TEST(HilVcan, ErrorPassiveIsCountedBusOffRecoversAfterRestart) {
+  HilRig rig;
+  ASSERT_NO_FATAL_FAILURE(rig.start("hil_error_states"));
+  ASSERT_NO_FATAL_FAILURE(rig.push_lines(3, 100.0));
+  ASSERT_NO_FATAL_FAILURE(send_error_frame(CAN_ERR_CRTL, CAN_ERR_CRTL_TX_PASSIVE));
+  ASSERT_TRUE(rig.run_until([](const hal::BoardStatus& st) { return st.state != BoardState::running; }, 20000));
+  hal::BoardStatus st;
+  rig.link->status(st);
+  EXPECT_EQ(st.state, BoardState::done) << rig.link->last_error();
+  EXPECT_EQ(rig.master->counters().error_passive, 1u);
+  EXPECT_EQ(rig.bus->state(), hal::BusState::passive);
+  ASSERT_NO_FATAL_FAILURE(send_error_frame(CAN_ERR_BUSOFF, 0));
+  // The link is done: no SYNC runs by itself here, so cycle until the bus-off is seen.
+  for (int i = 0; i < 1000 && rig.bus->state() != hal::BusState::bus_off; ++i) rig.master->cycle();
+  ASSERT_EQ(rig.bus->state(), hal::BusState::bus_off);
+  EXPECT_EQ(rig.master->fault_reset(), hal::AxisError::bus_off);  // not recovered yet
+  ASSERT_NO_FATAL_FAILURE(send_error_frame(CAN_ERR_RESTARTED, 0));
+  hal::CanFrame f;
+  for (int i = 0; i < 1000 && rig.bus->state() == hal::BusState::bus_off; ++i)
+    rig.bus->receive(f, rig.bus->now_us() + 2000);
+  EXPECT_EQ(rig.bus->state(), hal::BusState::active);
+  EXPECT_EQ(rig.master->fault_reset(), hal::AxisError::none) << rig.master->last_error();
+  EXPECT_EQ(decode_state(rig.master->axis(0).statusword), DriveState::operation_enabled);
 }
 
 TEST(HilVcan, MalformedFramesOnTheWireAreCounted) {
