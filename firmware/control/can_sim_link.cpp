@@ -49,7 +49,7 @@ std::vector<sim::DriveConfig> drive_configs(const CanSimOptions& o) {
     sim::DriveConfig d;
     d.node = node_of(o, i);
     const double mm = i == 0 ? o.start.x : i == 1 ? o.start.y : 0.0;
-    d.start = static_cast<std::int32_t>(std::lround(mm * o.counts_per_mm));
+    d.start = static_cast<std::int32_t>(std::lround(mm * (i == 1 ? o.counts_per_mm.y : o.counts_per_mm.x)));
     v.push_back(d);
   }
   return v;
@@ -59,7 +59,7 @@ hal::CanOpenConfig master_config(const CanSimOptions& o, bool wall_clock) {
   hal::CanOpenConfig c;
   c.nodes.clear();
   for (std::size_t i = 0; i < o.axes; ++i) c.nodes.push_back(node_of(o, i));
-  c.sync_us = o.sync_ms * 1000u;
+  c.sync_us = static_cast<std::uint32_t>(std::lround(o.sync_ms * 1000.0));
   if (wall_clock) {  // a loaded host must not look like a dead drive
     c.heartbeat_ms = 50;
     c.heartbeat_timeout_ms = 250;
@@ -199,13 +199,24 @@ class SocketCanSimLink final : public CanSimLinkBase {
 
 }  // namespace
 
+CanSimOptions can_sim_options(const config::Config& cfg) {
+  CanSimOptions o;
+  o.axes = cfg.machine.axes.size();
+  for (int id : cfg.link.node_ids) o.node_ids.push_back(static_cast<std::uint8_t>(id));
+  o.sync_ms = cfg.link.sync_ms;
+  if (!cfg.machine.axes.empty()) o.counts_per_mm.x = cfg.machine.axes[0].counts_per_mm;
+  if (cfg.machine.axes.size() > 1) o.counts_per_mm.y = cfg.machine.axes[1].counts_per_mm;
+  o.accel_mm_s2 = cfg.machine.accel;
+  return o;
+}
+
 std::unique_ptr<CanSimLink> make_can_sim_link(const CanSimOptions& opts, std::string& error) {
   if (opts.axes < 2 || opts.axes > 3) {
     error = "--axes: the CAN link drives 2 or 3 axes";
     return nullptr;
   }
-  if (opts.sync_ms < 1 || opts.sync_ms > 10) {
-    error = "--sync-ms: the SYNC period must be 1..10 ms";
+  if (!(opts.sync_ms >= 1 && opts.sync_ms <= 10) || opts.sync_ms != std::floor(opts.sync_ms)) {
+    error = "--sync-ms: the SYNC period must be a whole number of ms in 1..10";
     return nullptr;
   }
   if (!opts.node_ids.empty() && opts.node_ids.size() != opts.axes) {

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "config/config.hpp"
 #include "kerf/hal/axis_link.hpp"
 #include "kerf/hal/can/csp_segment_link.hpp"
 #include "kerf/hal/segment_link.hpp"
@@ -29,10 +30,10 @@ bool parse_can_fault(const std::string& text, CanFaultKind& out);
 struct CanSimOptions {
   std::size_t axes = 2;          // 2 or 3: x, y (and a third axis that holds its position)
   std::vector<std::uint8_t> node_ids;  // one per axis (the config's link.node_ids); empty: 1..axes
-  std::uint32_t sync_ms = 1;     // SYNC period, 1..10 ms
+  double sync_ms = 1;            // SYNC period, a whole number of ms in 1..10
   std::string iface;             // empty: the in-process bus
   Vec2<double> start{};          // where the axes are at power-up, mm
-  double counts_per_mm = 1000.0;
+  Vec2<double> counts_per_mm{1000.0, 1000.0};  // x, y (a third axis: x's)
   double accel_mm_s2 = 2000.0;
   double corner_angle_rad = 0.05;
   std::size_t queue_slots = 32;
@@ -58,6 +59,11 @@ class CanSimLink : public hal::SegmentLink {
   // Writes candump_path (the in-process log; SocketCAN logs as it goes).
   virtual bool finish_log(std::string& error) = 0;
 };
+
+// The options a machine configuration gives: axes and their counts/mm,
+// link.node_ids, link.sync_ms, machine.accel; the in-process bus (set iface
+// for SocketCAN: the config's link.iface names the real machine's bus).
+CanSimOptions can_sim_options(const config::Config& cfg);
 
 // Starts the drives, brings them up (NMT, SDO setup) and enables them (402).
 // Null with a clear reason in `error` when anything fails.

@@ -98,18 +98,46 @@ TEST(CanSimLink, EveryFaultKindStopsWithTheLastSegmentNamed) {
   }
 }
 
-TEST(CanSimLink, NodeIdsFromTheConfiguration) {
+TEST(CanSimLink, OptionsFromTheMachineConfiguration) {
+  config::Config cfg;
+  cfg.machine.axes = {{"x", 800.0}, {"y", 1250.0}};
+  cfg.machine.accel = 1500.0;
+  cfg.link.kind = config::Link::Kind::can;
+  cfg.link.node_ids = {5, 9};
+  cfg.link.sync_ms = 2;
+  const control::CanSimOptions o = control::can_sim_options(cfg);
+  EXPECT_EQ(o.axes, 2u);
+  EXPECT_EQ(o.node_ids, (std::vector<std::uint8_t>{5, 9}));
+  EXPECT_EQ(o.sync_ms, 2.0);
+  EXPECT_EQ(o.counts_per_mm.x, 800.0);
+  EXPECT_EQ(o.counts_per_mm.y, 1250.0);
+  EXPECT_EQ(o.accel_mm_s2, 1500.0);
+  EXPECT_TRUE(o.iface.empty());
+}
+
+TEST(CanSimLink, NodeIdsAndCountsPerAxis) {
   control::CanSimOptions o;
   o.node_ids = {5, 9};
+  o.counts_per_mm = {800.0, 1250.0};
   std::string err;
   auto link = control::make_can_sim_link(o, err);
   ASSERT_TRUE(link) << err;
   EXPECT_EQ(link->axes().axis(0).node, 5);
   EXPECT_EQ(link->axes().axis(1).node, 9);
   ASSERT_NO_FATAL_FAILURE(push_lines(*link, 1));
-  for (int i = 0; i < 50; ++i) link->tick();
+  ASSERT_EQ(run(*link, 5000), BoardState::done) << link->last_error();
+  EXPECT_EQ(link->axes().axis(0).actual, 8800);   // 11 mm at 800 counts/mm
+  EXPECT_EQ(link->axes().axis(1).actual, 2500);   // 2 mm at 1250 counts/mm
+  hal::BoardStatus st;
+  link->status(st);
+  EXPECT_DOUBLE_EQ(st.position.x, 11.0);
+  EXPECT_DOUBLE_EQ(st.position.y, 2.0);
   link->inject(CanFaultKind::heartbeat_loss);  // the last axis: node 9
-  ASSERT_EQ(run(*link, 1000), BoardState::fault);
+  for (int i = 0; i < 1000 && st.state != BoardState::fault; ++i) {
+    link->tick();  // SYNC keeps running after the job, and so does the heartbeat consumer
+    link->status(st);
+  }
+  ASSERT_EQ(st.state, BoardState::fault);
   EXPECT_NE(std::string(link->last_error()).find("axis 1 (node 9): heartbeat lost"), std::string::npos)
       << link->last_error();
   o.node_ids = {5};
@@ -135,6 +163,9 @@ TEST(CanSimLink, BadOptionsAreRefused) {
   o.sync_ms = 11;
   EXPECT_FALSE(control::make_can_sim_link(o, err));
   EXPECT_NE(err.find("--sync-ms"), std::string::npos);
+  o.sync_ms = 1.5;
+  EXPECT_FALSE(control::make_can_sim_link(o, err));
+  EXPECT_NE(err.find("whole number"), std::string::npos);
   CanFaultKind k{};
   EXPECT_TRUE(control::parse_can_fault("bus-off", k));
   EXPECT_EQ(k, CanFaultKind::bus_off);

@@ -49,15 +49,15 @@ bool CspSegmentLink::configure(std::string& error) {
   mc.period = axes_.period_s();
   mc.accel = cfg_.accel_mm_s2;
   mc.corner_angle = cfg_.corner_angle_rad;
-  mc.counts_per_mm = {cfg_.counts_per_mm, cfg_.counts_per_mm};
+  mc.counts_per_mm = cfg_.counts_per_mm;
   if (interp_.configure(mc) != Status::ok) {
     error = "CSP link: the motion configuration is out of range";
     return false;
   }
   // The job starts where the drives stand.
   for (int a = 0; a < 2; ++a) target_[a] = axes_.axis(static_cast<std::size_t>(a)).actual;
-  position_ = {static_cast<double>(target_[0]) / cfg_.counts_per_mm,
-               static_cast<double>(target_[1]) / cfg_.counts_per_mm};
+  position_ = {static_cast<double>(target_[0]) / cfg_.counts_per_mm.x,
+               static_cast<double>(target_[1]) / cfg_.counts_per_mm.y};
   tail_end_ = position_;
   return true;
 }
@@ -87,8 +87,8 @@ LinkError CspSegmentLink::push(const SegmentCommand& seg, BoardStatus& status) {
   if (seg.seq != last_accepted_ + 1) why = "sequence gap";
   else if (state_ == BoardState::fault || state_ == BoardState::done || finish_) why = "not accepting segments now";
   else if (interp_.free_slots() == 0) why = "no credit";
-  else if (std::fabs(seg.end.x * cfg_.counts_per_mm) >= kMaxCounts ||
-           std::fabs(seg.end.y * cfg_.counts_per_mm) >= kMaxCounts)
+  else if (std::fabs(seg.end.x * cfg_.counts_per_mm.x) >= kMaxCounts ||
+           std::fabs(seg.end.y * cfg_.counts_per_mm.y) >= kMaxCounts)
     why = "end point beyond the drives' 32-bit position range";
   if (why == nullptr) {
     motion::PathSegment<double> p;
@@ -175,8 +175,8 @@ void CspSegmentLink::reset_locked() {
   finish_ = false;
   interp_.reset();
   // The next segment starts where the axes were last commanded to stop.
-  tail_end_ = {static_cast<double>(target_[0]) / cfg_.counts_per_mm,
-               static_cast<double>(target_[1]) / cfg_.counts_per_mm};
+  tail_end_ = {static_cast<double>(target_[0]) / cfg_.counts_per_mm.x,
+               static_cast<double>(target_[1]) / cfg_.counts_per_mm.y};
   dropped_through_ = last_accepted_;  // what the fault dropped never ran
 }
 
@@ -233,8 +233,8 @@ void CspSegmentLink::cycle() {
   lock.lock();
   const AxisState& ax = axes_.axis(0);
   const AxisState& ay = axes_.axis(1);
-  position_ = {static_cast<double>(ax.actual) / cfg_.counts_per_mm,
-               static_cast<double>(ay.actual) / cfg_.counts_per_mm};
+  position_ = {static_cast<double>(ax.actual) / cfg_.counts_per_mm.x,
+               static_cast<double>(ay.actual) / cfg_.counts_per_mm.y};
   // At rest means the drives have caught up with the last setpoint.
   settled_ = ax.actual == tx && ay.actual == ty;
   if (e != AxisError::none) fault_locked(fault_bit(e), axes_.last_error());
