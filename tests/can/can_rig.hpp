@@ -21,13 +21,15 @@ struct CanRig {
   std::unique_ptr<hal::CanOpenMaster> master;
 
   explicit CanRig(std::size_t axes = 2, std::uint32_t sync_us = 1000, std::int32_t start = 0,
-                  std::int32_t start_y = INT32_MIN) {
+                  std::int32_t start_y = INT32_MIN, double lag_alpha = 1.0) {
     hal::CanOpenConfig cfg;
     cfg.nodes.clear();
     for (std::size_t i = 0; i < axes; ++i) {
       sim::DriveConfig d;
       d.node = static_cast<std::uint8_t>(i + 1);
       d.start = i == 1 && start_y != INT32_MIN ? start_y : start;
+      d.lag_alpha = lag_alpha;
+      d.following_window = 100000;
       bus.add_drive(d);
       cfg.nodes.push_back(d.node);
     }
@@ -46,8 +48,8 @@ struct CanRig {
 struct CspRig : CanRig {
   std::unique_ptr<hal::CspSegmentLink> link;
   explicit CspRig(std::size_t axes = 2, std::uint32_t sync_us = 1000, std::int32_t start = 0,
-                  std::int32_t start_y = INT32_MIN)
-      : CanRig(axes, sync_us, start, start_y) {
+                  std::int32_t start_y = INT32_MIN, double lag_alpha = 1.0)
+      : CanRig(axes, sync_us, start, start_y, lag_alpha) {
     up();
     std::string err;
     hal::CspConfig c;

@@ -36,11 +36,18 @@ void expect_setpoint_every_sync(const std::vector<sim::LoggedFrame>& log, int no
   EXPECT_EQ(bad, 0u) << "SYNC cycles without exactly one setpoint per drive";
 }
 
-TEST(CanCsp, DemoJobStaysOnTheFittedPathAndEverySyncHasItsSetpoint) {
+struct DemoRun {
+  DemoJob job;
+  double worst_path = 0.0;    // mm, the drives' actual positions to the fitted path
+  double worst_points = 0.0;  // mm, to the job's polyline
+};
+
+// Runs the demo job to done on a rig whose drives lag by `lag_alpha`.
+void run_demo(double lag_alpha, DemoRun& out) {
   DemoJob job = demo_job(250.0);
   const Vec2<double> s0 = job.path.front().start;
   CspRig rig(2, 1000, static_cast<std::int32_t>(std::lround(s0.x * 1000)),
-             static_cast<std::int32_t>(std::lround(s0.y * 1000)));
+             static_cast<std::int32_t>(std::lround(s0.y * 1000)), lag_alpha);
   std::size_t next = push_some(*rig.link, job.segments, 0);
   ASSERT_EQ(rig.link->command(hal::Command::start), LinkError::none);
   hal::BoardStatus st;
@@ -61,19 +68,32 @@ TEST(CanCsp, DemoJobStaysOnTheFittedPathAndEverySyncHasItsSetpoint) {
   std::vector<std::uint32_t> all(n);
   for (std::uint32_t k = 0; k < n; ++k) all[k] = k + 1;
   EXPECT_EQ(rig.link->executed(), all);
-  double worst_path = 0.0, worst_points = 0.0;
   for (const auto& s : rig.link->trace()) {
     const Vec2<double> p{s.actual[0] * kCount, s.actual[1] * kCount};
-    worst_path = std::max(worst_path, distance_to_path(job.path, p));
-    worst_points = std::max(worst_points, distance_to_polyline(job.points.points, p));
+    out.worst_path = std::max(out.worst_path, distance_to_path(job.path, p));
+    out.worst_points = std::max(out.worst_points, distance_to_polyline(job.points.points, p));
   }
-  EXPECT_LE(worst_path, kCount + 1e-9);
-  EXPECT_LE(worst_points, job.tol + kCount + 1e-9);
   const Vec2<double> end = job.path.back().end;
   EXPECT_NEAR(st.position.x, end.x, kCount);
   EXPECT_NEAR(st.position.y, end.y, kCount);
   expect_setpoint_every_sync(rig.bus.log(), 2);
-  RecordProperty("sync_cycles", static_cast<int>(rig.master->counters().cycles));
+  out.job = job;
+}
+
+TEST(CanCsp, DemoJobStaysOnTheFittedPathAndEverySyncHasItsSetpoint) {
+  DemoRun r;
+  ASSERT_NO_FATAL_FAILURE(run_demo(1.0, r));
+  EXPECT_LE(r.worst_path, kCount + 1e-9);
+  EXPECT_LE(r.worst_points, r.job.tol + kCount + 1e-9);
+  RecordProperty("worst_path_um", static_cast<int>(std::lround(r.worst_path * 1e3)));
+}
+
+// The check above can fail: drives whose plant closes only a fifth of the
+// gap per SYNC cut inside the arcs by more than a count.
+TEST(CanCsp, TheTraceCheckSeesASluggishPlant) {
+  DemoRun r;
+  ASSERT_NO_FATAL_FAILURE(run_demo(0.2, r));
+  EXPECT_GT(r.worst_path, kCount);
 }
 
 // Two 10 mm lines along x at 50 mm/s.
