@@ -85,7 +85,7 @@ TEST(CanCsp, DemoJobStaysOnTheFittedPathAndEverySyncHasItsSetpoint) {
   ASSERT_NO_FATAL_FAILURE(run_demo(1.0, r));
   EXPECT_LE(r.worst_path, kCount + 1e-9);
   EXPECT_LE(r.worst_points, r.job.tol + kCount + 1e-9);
-  RecordProperty("worst_path_um", static_cast<int>(std::lround(r.worst_path * 1e3)));
+  RecordProperty("worst_path_nm", static_cast<int>(std::lround(r.worst_path * 1e6)));
 }
 
 // The check above can fail: drives whose plant closes only a fifth of the
