@@ -134,7 +134,13 @@ LinkError CspSegmentLink::command(Command c) {
   std::lock_guard<std::mutex> lock(mu_);
   bool ok = true;
   switch (c) {
-    case Command::start: ok = state_ == BoardState::idle; if (ok) state_ = BoardState::running; break;
+    case Command::start:  // from idle, or after a finished run: a new run (as the board)
+      ok = state_ == BoardState::idle || state_ == BoardState::done;
+      if (ok) {
+        state_ = BoardState::running;
+        finish_ = false;
+      }
+      break;
     case Command::hold:
       ok = state_ == BoardState::running;
       if (ok) {
