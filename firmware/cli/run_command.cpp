@@ -134,6 +134,7 @@ int run_run(const RunOptions& opts) {
   }
   const control::RunReport& r = ctl.report();
   io::SimSummary sum;
+  sum.simulated = false;
   sum.state = control::to_string(r.state);
   sum.reason = r.reason;
   sum.link = config::to_string(cfg.link.kind);
@@ -160,9 +161,7 @@ int run_run(const RunOptions& opts) {
     std::fprintf(stderr, "kerf: --report: cannot write %s: %s\n", opts.report.c_str(), std::strerror(errno));
     return kExitFailure;
   }
-  std::string line = io::format_sim_summary(sum);
-  line.replace(0, std::strlen("kerf sim"), "kerf run");
-  std::fputs(line.c_str(), stdout);
+  std::fputs(io::format_sim_summary(sum).c_str(), stdout);
   std::fprintf(stdout, "kerf run: %s; wake-up lateness:\n%s", sum.rt.c_str(), sum.rt_histogram.c_str());
   if (r.state != control::State::done) {
     std::fprintf(stderr, "kerf: run: stopped after segment %lld: %s\n", static_cast<long long>(sum.last_executed),

@@ -1,6 +1,8 @@
 #include "cli/sim_command.hpp"
 
+#include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <memory>
@@ -177,6 +179,17 @@ int run_sim(const SimOptions& given) {
   mcfg.rtu = rtu;
   mcfg.speed = speed;
   mcfg.faults = board_faults;
+  // Long enough for any run of this job: every path at the cut feed, a rapid
+  // across the job's extent between paths, each pierce at its timeout, three
+  // times over.
+  double cut_mm = 0.0, extent = 0.0;
+  for (const fit::Piece<double>& p : fitted.pieces) {
+    cut_mm += p.segment.is_arc() ? p.segment.radius() * 6.3 : distance(p.segment.start, p.segment.end);
+    extent = std::max({extent, std::abs(p.segment.end.x), std::abs(p.segment.end.y)});
+  }
+  const double paths = static_cast<double>(fitted.job.paths.size());
+  mcfg.max_sim_s = std::max(600.0, 3.0 * (cut_mm / (feed / 60.0) + paths * (4.0 * extent / (cfg.machine.rapid_feed / 60.0) +
+                                                                             cfg.cut.arc_ok_timeout + cfg.cut.pierce_delay + 2.0)));
   // The axes power up at the job's first pierce point, as if homed there; a
   // resumed run starts there too and travels to its resume point.
   mcfg.start = fitted.job.paths.front().start;

@@ -134,7 +134,9 @@ void Controller::cycle(double now_s) {
   const bool fresh = poll_link(now_s);
   if (stopping || state_ == State::fault || state_ == State::estop) {
     // Waiting for the board to come to rest (or for the link to be given up).
-    if ((fresh && at_rest_) || (link_down_ && !fresh)) {
+    const bool link_gone =
+        link_down_ && std::chrono::duration<double>(WallClock::now() - link_down_since_).count() >= cfg_.link_timeout_s;
+    if ((fresh && at_rest_) || (!fresh && link_gone)) {
       report_.stopped_at = st_.position;
       finished_ = true;
     }
@@ -437,7 +439,9 @@ void Controller::run_state(double now_s) {
       if (held_from_ == State::travel) {
         if (link_ok(link_.command(hal::Command::resume))) state_ = State::travel;
       } else {
-        resume_after_pierce_ = held_from_ == State::cutting;
+        // Held while cutting (or while re-piercing after that): the board
+        // holds the rest of the path, so the pierce ends in a resume.
+        if (held_from_ == State::cutting) resume_after_pierce_ = true;
         begin_pierce(now_s);
       }
       return;

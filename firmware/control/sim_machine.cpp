@@ -1,15 +1,12 @@
 #include "control/sim_machine.hpp"
 
-#include <modbus/modbus.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <thread>
 
-#include "kerf/hal/modbus/modbus_link.hpp"
 #include "kerf/hal/rt_loop.hpp"
-#include "kerf/sim/board_server.hpp"
+#include "control/sim_plant.hpp"
 
 namespace kerf::control {
 
@@ -24,20 +21,6 @@ const char* to_string(BoardFaultKind k) {
   return "unknown";
 }
 
-namespace {
-
-void inject(sim::BoardServer& server, sim::MotionBoard& board, const BoardFault& f) {
-  switch (f.kind) {
-    case BoardFaultKind::link_drop: server.drop_link(f.duration_s); break;
-    case BoardFaultKind::link_stall: server.stall(f.duration_s); break;
-    // Busy is transient: the controller sends the same request next cycle.
-    case BoardFaultKind::modbus_exception: server.exception_replies(3, MODBUS_EXCEPTION_SLAVE_OR_SERVER_BUSY); break;
-    case BoardFaultKind::crc_error: server.corrupt_crc(3); break;
-    case BoardFaultKind::drive_fault: board.inject_fault(hal::kFaultDrive); break;
-  }
-}
-
-}  // namespace
 
 SimMachineConfig sim_machine_config(const config::Config& cfg) {
   SimMachineConfig m;
@@ -52,37 +35,20 @@ SimMachineConfig sim_machine_config(const config::Config& cfg) {
 SimMachineResult run_sim_machine(const Job& job, const ControllerConfig& ccfg, const SimMachineConfig& mcfg,
                                  hal::Gpio& gpio, Journal* journal, const ResumePoint& from) {
   SimMachineResult res;
+  std::unique_ptr<SimPlant> plant = make_modbus_plant(mcfg, ccfg.link_watchdog_s, res.setup_error);
+  if (!plant) return res;
+  return run_sim_machine(job, ccfg, mcfg, *plant, gpio, journal, from);
+}
+
+SimMachineResult run_sim_machine(const Job& job, const ControllerConfig& ccfg, const SimMachineConfig& mcfg,
+                                 SimPlant& plant, hal::Gpio& gpio, Journal* journal, const ResumePoint& from) {
+  SimMachineResult res;
   using clock = std::chrono::steady_clock;
   const auto wall0 = clock::now();
-  std::string why;
-  auto exec = sim::make_motion_executor(mcfg.motion, why);
-  if (!exec) {
-    res.setup_error = why;
-    return res;
-  }
-  const double servo = mcfg.motion.servo_period_s;
+  const double servo = plant.tick_s();
   const long ticks_per_cycle = std::max(1L, std::lround(mcfg.cycle_s / servo));
-  sim::BoardConfig bc;
-  bc.servo_period_s = servo;
-  bc.start = mcfg.start;
-  sim::MotionBoard board(bc, std::move(exec));
-  sim::ServerConfig sc;
-  sc.transport = mcfg.rtu ? sim::ServerConfig::Transport::rtu : sim::ServerConfig::Transport::tcp;
-  sc.watchdog_s = ccfg.link_watchdog_s;
-  auto server = sim::BoardServer::start(board, sc, res.setup_error);
-  if (!server) return res;
-  hal::ModbusConfig lc;
-  lc.transport = mcfg.rtu ? hal::ModbusConfig::Transport::rtu : hal::ModbusConfig::Transport::tcp;
-  lc.port = server->port();
-  lc.device = server->device();
-  // The controller retries by cycling, so that it keeps reading its inputs
-  // while the link is in trouble: one attempt per call, a short timeout.
-  lc.retries = 0;
-  lc.response_timeout_s = std::min(0.1, ccfg.link_watchdog_s / 4.0);
-  auto link = hal::ModbusSegmentLink::open(lc, res.setup_error);
-  if (!link) return res;
-
-  Controller ctl(job, ccfg, *link, gpio, journal);
+  hal::SegmentLink& link = plant.link();
+  Controller ctl(job, ccfg, link, gpio, journal);
   ctl.start(from);
   std::vector<BoardFault> faults = mcfg.faults;
   std::stable_sort(faults.begin(), faults.end(),
@@ -92,7 +58,7 @@ SimMachineResult run_sim_machine(const Job& job, const ControllerConfig& ccfg, c
   std::uint64_t ticks = 0;
   std::uint32_t last_executed = 0;
   auto sample = [&] {
-    const hal::BoardStatus s = board.status();
+    const hal::BoardStatus s = plant.truth();
     const std::int64_t k = ctl.job_segment_of(s.executing);
     res.trace.push_back({static_cast<double>(ticks) * servo, s.position,
                          static_cast<std::uint32_t>(k < 0 ? 0 : k + 1), ctl.torch()});
@@ -112,7 +78,10 @@ SimMachineResult run_sim_machine(const Job& job, const ControllerConfig& ccfg, c
     if (mcfg.speed > 0.0) pace.wait_next();
     const double now = static_cast<double>(ticks) * servo;
     while (next_fault < faults.size() && faults[next_fault].at_s <= now)
-      inject(*server, board, faults[next_fault++]);
+      if (!plant.inject(faults[next_fault++])) {
+        res.setup_error = std::string("this link has no fault ") + to_string(faults[next_fault - 1].kind);
+        return res;
+      }
     ctl.cycle(now);
     // Link faults are wall-time events (timeouts, the board's watchdog): while
     // the link is down the simulation runs at least in real time, so that the
@@ -126,14 +95,14 @@ SimMachineResult run_sim_machine(const Job& job, const ControllerConfig& ccfg, c
     }
     last_wall = clock::now();
     for (long i = 0; i < ticks_now; ++i) {
-      board.tick();
+      plant.tick();
       ++ticks;
       sample();
     }
     // Finished, and the axes at rest (the controller may have lost the link,
     // but the board brakes by itself and the simulation shows it).
     if (ctl.finished()) {
-      const hal::BoardStatus s = board.status();
+      const hal::BoardStatus s = plant.truth();
       const bool still = s.position == res.trace[res.trace.size() - 1 - static_cast<std::size_t>(ticks_per_cycle)].pos;
       tail = still && s.state != hal::BoardState::running ? tail + 1 : 0;
     }
@@ -147,9 +116,9 @@ SimMachineResult run_sim_machine(const Job& job, const ControllerConfig& ccfg, c
     res.rt_histogram = pace.stats().histogram();
   }
   res.run = ctl.report();
-  res.board = board.status();
+  res.board = plant.truth();
   res.run.stopped_at = res.board.position;  // where the axes really came to rest
-  res.link_resends = link->resends();
+  res.link_resends = link.resends();
   res.sim_s = static_cast<double>(ticks) * servo;
   res.wall_s = std::chrono::duration<double>(clock::now() - wall0).count();
   return res;

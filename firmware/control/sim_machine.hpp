@@ -19,6 +19,10 @@
 #include "kerf/sim/motion_executor.hpp"
 
 namespace kerf::control {
+class SimPlant;
+}
+
+namespace kerf::control {
 
 // Faults the board side can suffer; GPIO faults go through the Gpio script.
 enum class BoardFaultKind : std::uint8_t { link_drop, link_stall, modbus_exception, crc_error, drive_fault };
@@ -37,7 +41,7 @@ struct SimMachineConfig {
   double speed = 0.0;           // simulated s per wall s; 0 = as fast as possible
   Vec2<double> start{};         // where the axes are at power-up
   std::vector<BoardFault> faults;
-  double max_sim_s = 4 * 3600.0;
+  double max_sim_s = 600.0;     // give up (a stuck run, a hold never released) after this
 };
 
 struct SimMachineResult {
@@ -58,7 +62,11 @@ struct SimMachineResult {
 // The board's motion settings and the controller period from a machine configuration.
 SimMachineConfig sim_machine_config(const config::Config& cfg);
 
+// On the Modbus board (TCP or RTU, as mcfg.rtu says).
 SimMachineResult run_sim_machine(const Job& job, const ControllerConfig& ccfg, const SimMachineConfig& mcfg,
                                  hal::Gpio& gpio, Journal* journal, const ResumePoint& from);
+// On any plant (sim_plant.hpp); mcfg's motion and rtu settings are the plant's business then.
+SimMachineResult run_sim_machine(const Job& job, const ControllerConfig& ccfg, const SimMachineConfig& mcfg,
+                                 SimPlant& plant, hal::Gpio& gpio, Journal* journal, const ResumePoint& from);
 
 }  // namespace kerf::control

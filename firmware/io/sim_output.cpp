@@ -89,16 +89,20 @@ std::string format_sim_json(const SimSummary& s) {
 }
 
 std::string format_sim_summary(const SimSummary& s) {
-  char buf[1024];
-  std::snprintf(buf, sizeof buf,
-                "kerf sim: %s over %s: %zu paths, %zu of %zu segments executed this run (last %lld; "
-                "%llu in all, %llu duplicates), %zu pierces; max path deviation %.6f mm; "
-                "%.3f s simulated, %.3f s wall; torch %s%s%s\n",
-                s.state.c_str(), s.link.c_str(), s.paths, s.executed, s.planned,
+  char head[512], tail[256];
+  std::snprintf(head, sizeof head,
+                "kerf %s: %s over %s: %zu paths, %zu of %zu segments executed this run (last %lld; "
+                "%llu in all, %llu duplicates), %zu pierces",
+                s.simulated ? "sim" : "run", s.state.c_str(), s.link.c_str(), s.paths, s.executed, s.planned,
                 static_cast<long long>(s.last_executed), static_cast<unsigned long long>(s.executed_total),
-                static_cast<unsigned long long>(s.duplicates), s.pierces, s.max_path_deviation_mm, s.duration_s,
-                s.wall_s, s.torch_on ? "ON" : "off", s.reason.empty() ? "" : "; stopped: ", s.reason.c_str());
-  return buf;
+                static_cast<unsigned long long>(s.duplicates), s.pierces);
+  if (s.simulated)
+    std::snprintf(tail, sizeof tail, "; max path deviation %.6f mm; %.3f s simulated, %.3f s wall", s.max_path_deviation_mm,
+                  s.duration_s, s.wall_s);
+  else
+    std::snprintf(tail, sizeof tail, "; %.3f s", s.duration_s);
+  return std::string(head) + tail + "; torch " + (s.torch_on ? "ON" : "off") +
+         (s.reason.empty() ? "" : "; stopped: " + s.reason) + "\n";
 }
 
 }  // namespace kerf::io

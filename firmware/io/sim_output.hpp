@@ -12,6 +12,7 @@
 namespace kerf::io {
 
 struct SimSummary {
+  bool simulated = true;  // kerf sim; false for kerf run (no trace, no simulated time)
   std::string state;   // done | fault | estop
   std::string reason;  // empty when done
   std::string link;    // modbus-tcp | modbus-rtu

@@ -201,3 +201,26 @@ TEST(ControllerResume, StartsAtTheCutPointAndCutsTheRestOnce) {
 
 }  // namespace
 }  // namespace kerf::test
+
+namespace kerf::test {
+namespace {
+
+TEST(ControllerFaults, HoldDuringTheRepierceStillResumesTheHeldPath) {
+  const control::Job job = two_paths();
+  FakeGpio gpio;
+  auto press = [&](double t, bool hal::GpioInputs::*button) {
+    gpio.at(t, [button](FakeGpio& g) { g.inputs.*button = true; });
+    gpio.at(t + 0.01, [button](FakeGpio& g) { g.inputs.*button = false; });
+  };
+  press(0.6, &hal::GpioInputs::hold);
+  press(1.5, &hal::GpioInputs::cycle_start);
+  press(1.54, &hal::GpioInputs::hold);  // during the re-pierce's delay
+  press(2.0, &hal::GpioInputs::cycle_start);
+  const auto r = control::run_sim_machine(job, fast_cut(), {}, gpio, nullptr, {});
+  EXPECT_EQ(r.run.state, State::done) << r.run.reason;
+  EXPECT_EQ(r.executed, (std::vector<std::int64_t>{0, 1, 2, 3}));
+  EXPECT_EQ(r.run.pierces, 4u);
+}
+
+}  // namespace
+}  // namespace kerf::test
