@@ -156,6 +156,33 @@ TEST(CanCsp, HoldBrakesOnThePathAndResumeFinishes) {
   EXPECT_EQ(st.last_executed, 4u);
 }
 
+// The clock thread, as fast as the job allows: it runs only while the queue
+// is full or finished, so the host's pace cannot starve the drives.
+TEST(CanCsp, ClockThreadRunsTheJobAsTheHostFeedsIt) {
+  CspRig rig;
+  rig.link->run_clock(false);
+  hal::BoardStatus st;
+  std::uint32_t seq = 0;
+  ASSERT_EQ(rig.link->command(hal::Command::start), LinkError::none);
+  while (seq < 100) {  // more segments than the queue holds: pushed on credit
+    ASSERT_TRUE(rig.link->wait_until([](const hal::BoardStatus& s) { return s.credit > 0; }, 30.0));
+    hal::SegmentCommand s;
+    s.seq = ++seq;
+    s.end = {1.0 * seq, seq % 2 == 0 ? 0.0 : 0.5};
+    s.feed = 100.0;
+    ASSERT_EQ(rig.link->push(s, st), LinkError::none) << rig.link->last_error();
+  }
+  ASSERT_EQ(rig.link->command(hal::Command::finish), LinkError::none);
+  ASSERT_TRUE(rig.link->wait_until([](const hal::BoardStatus& s) { return s.state == BoardState::done; }, 30.0))
+      << rig.link->last_error();
+  rig.link->stop_clock();
+  rig.link->status(st);
+  EXPECT_EQ(st.last_executed, 100u);
+  EXPECT_DOUBLE_EQ(st.position.x, 100.0);
+  EXPECT_EQ(st.faults, 0u);
+  expect_setpoint_every_sync(rig.bus.log(), 2);
+}
+
 TEST(CanCsp, ThreeAxesAtTwoMsTheThirdHoldsItsPosition) {
   CspRig rig(3, 2000, 500);
   push_lines(rig, 2);

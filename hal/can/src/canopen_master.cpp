@@ -351,6 +351,8 @@ AxisError CanOpenMaster::cycle() {
   AxisError err = pump(next_sync_us_, [] { return false; });
   if (err == AxisError::none) err = health();
   if (err == AxisError::bus_off) {
+    // Nothing goes out, but time does: the next SYNC slot is a period on.
+    next_sync_us_ += cfg_.sync_us;
     faulted_ = true;
     return err;
   }

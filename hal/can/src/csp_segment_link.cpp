@@ -1,5 +1,6 @@
 #include "kerf/hal/can/csp_segment_link.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 
@@ -286,6 +287,11 @@ void CspSegmentLink::stop_clock() {
     changed_.notify_all();
   }
   clock_.join();
+}
+
+bool CspSegmentLink::wait_until(const std::function<bool(const BoardStatus&)>& pred, double timeout_s) {
+  std::unique_lock<std::mutex> lock(mu_);
+  return changed_.wait_for(lock, std::chrono::duration<double>(timeout_s), [&] { return pred(status_locked()); });
 }
 
 const char* CspSegmentLink::last_error() const { return error_; }

@@ -61,6 +61,8 @@ class CspSegmentLink final : public SegmentLink {
   // The clock thread. paced: the AxisLink waits for each SYNC itself.
   void run_clock(bool paced);
   void stop_clock();
+  // Blocks until pred(status) holds or `timeout_s` of wall time pass.
+  bool wait_until(const std::function<bool(const BoardStatus&)>& pred, double timeout_s);
 
   std::vector<CspSample> trace() const;
   std::vector<std::uint32_t> executed() const;
