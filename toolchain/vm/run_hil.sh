@@ -15,7 +15,7 @@ command -v qemu-system-x86_64 >/dev/null || { echo "run_hil.sh: qemu-system-x86_
 "$here/fetch_kernel.sh" "$vm" >&2
 kernel=$(ls "$vm"/root/boot/vmlinuz-* | head -n1)
 initrd=$vm/initramfs.cpio.gz
-if [[ ! -f $initrd || $initrd -ot $here/init || $initrd -ot $here/build_initramfs.sh ]]; then
+if [[ ! -f $initrd || $initrd -ot $here/init || $initrd -ot $here/build_initramfs.sh || $initrd -ot $here/modules.txt ]]; then
   "$here/build_initramfs.sh" "$vm/root" "$initrd"
 fi
 mkdir -p "$out"
