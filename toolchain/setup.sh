@@ -23,6 +23,9 @@ PACKAGES=(
   # Cortex-M (bare metal): compiler, C/C++ runtime, nm/size, and qemu for a later run
   gcc-arm-none-eabi binutils-arm-none-eabi libnewlib-arm-none-eabi
   libstdc++-arm-none-eabi-newlib qemu-system-arm
+  # the CAN HIL bench (toolchain/vm): Debian's kernel under qemu with vcan, a busybox
+  # initramfs packed with cpio
+  qemu-system-x86 busybox-static cpio
 )
 
 missing=()

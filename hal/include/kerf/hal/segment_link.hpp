@@ -34,6 +34,12 @@ enum FaultBit : std::uint16_t {
   kFaultBadSegment = 1u << 2,    // a segment the executor refused (zero length, bad arc)
   kFaultStarved = 1u << 3,       // queue ran empty while running, before "finish"
   kFaultDrive = 1u << 4,         // a drive reported a fault (following error, overcurrent ...)
+  // Cyclic drives (CspSegmentLink over CANopen CiA 402; kFaultDrive above also
+  // covers a drive that left "operation enabled", refused enable or did not answer):
+  kFaultHeartbeat = 1u << 5,  // a drive's heartbeat stopped
+  kFaultEmcy = 1u << 6,       // a drive sent an emergency message
+  kFaultBusOff = 1u << 7,     // the CAN controller went bus-off
+  kFaultSend = 1u << 8,       // a cyclic frame could not be queued
 };
 
 struct BoardStatus {

@@ -1,0 +1,109 @@
+// hal::CspSegmentLink: hal::SegmentLink for drives that take cyclic
+// positions (CiA 402 CSP). The motion board's job runs on the host: the
+// segments queue in core/motion's interpolator, and each SYNC period its
+// setpoint goes out through a hal::AxisLink (axis 0 = x, 1 = y; further axes
+// hold their position). status() reports like the board: sequence numbers
+// are idempotent (a resend of an accepted one is dropped and counted),
+// credit is the free queue slots, last_executed / executing / position
+// (the drives' actual positions), and state idle/running/hold/done/fault.
+//
+// Time: cycle() runs one SYNC period. Tests call it by hand (virtual time);
+// run_clock() runs it on a thread, either as fast as the job allows (only
+// while the queue is full or finished, so host latency cannot starve it) or
+// paced by the AxisLink itself (SocketCAN: wall-clock SYNC).
+#pragma once
+
+#include <condition_variable>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "kerf/hal/axis_link.hpp"
+#include "kerf/hal/segment_link.hpp"
+#include "kerf/motion/interpolator.hpp"
+
+namespace kerf::hal {
+
+struct CspConfig {
+  Vec2<double> counts_per_mm{1000.0, 1000.0};  // x, y
+  double accel_mm_s2 = 2000.0;     // along the path
+  double corner_angle_rad = 0.05;  // tangent turns above this are corners
+  std::size_t queue_slots = 32;    // the credit the host sees
+  std::size_t trace_reserve = 0;
+};
+
+struct CspSample {
+  std::uint64_t cycle = 0;
+  std::uint32_t seq = 0;            // segment being executed, 0 when none
+  std::int64_t target[2]{};         // counts sent this SYNC
+  std::int32_t actual[2]{};         // counts the drives reported
+  bool torch = false;
+};
+
+class CspSegmentLink final : public SegmentLink {
+ public:
+  // `axes` must be enabled (bring_up + enable) and outlive the link.
+  static std::unique_ptr<CspSegmentLink> create(AxisLink& axes, const CspConfig& cfg, std::string& error);
+  ~CspSegmentLink() override;
+
+  LinkError push(const SegmentCommand& seg, BoardStatus& status) override;
+  LinkError status(BoardStatus& status) override;
+  LinkError command(Command c) override;
+  std::uint64_t resends() const override { return 0; }
+  const char* last_error() const override;
+
+  // One SYNC period (tests drive the virtual clock with it).
+  void cycle();
+  // The clock thread. paced: the AxisLink waits for each SYNC itself.
+  void run_clock(bool paced);
+  void stop_clock();
+  // Blocks until pred(status) holds or `timeout_s` of wall time pass.
+  bool wait_until(const std::function<bool(const BoardStatus&)>& pred, double timeout_s);
+
+  std::vector<CspSample> trace() const;
+  std::vector<std::uint32_t> executed() const;
+  AxisLink& axes() { return axes_; }
+
+ private:
+  CspSegmentLink(AxisLink& axes, const CspConfig& cfg);
+  bool configure(std::string& error);
+  bool has_work_locked() const;
+  void fault_locked(std::uint16_t bit, const char* why);
+  void reset_locked();
+  BoardStatus status_locked() const;
+  void clock_loop(bool paced);
+
+  AxisLink& axes_;
+  CspConfig cfg_;
+  std::vector<motion::QueuedSegment<double>> storage_;
+  motion::Interpolator<double> interp_;
+  std::vector<std::uint8_t> torch_of_;  // torch flag by sequence number, modulo its size
+
+  mutable std::mutex mu_;
+  std::condition_variable changed_;
+  BoardState state_ = BoardState::idle;
+  std::uint16_t faults_ = 0;
+  std::uint32_t last_accepted_ = 0, executing_ = 0, last_executed_ = 0;
+  std::uint32_t dropped_through_ = 0;  // numbers up to here were dropped by a fault
+  std::uint16_t duplicates_ = 0;
+  bool finish_ = false;
+  bool torch_ = false;
+  bool moving_ = false;  // the head travelled last period
+  bool settled_ = true;  // the drives' actual positions equal the last setpoint
+  bool reset_axes_ = false;  // fault reset: the drives are reset by the next cycle
+  Vec2<double> tail_end_{};
+  std::int64_t target_[2]{};
+  Vec2<double> position_{};
+  std::vector<CspSample> trace_;
+  std::vector<std::uint32_t> executed_;
+  char error_[240] = "";
+
+  std::thread clock_;
+  bool clock_stop_ = false;
+};
+
+}  // namespace kerf::hal
