@@ -13,6 +13,7 @@
 #include "cli/fit_paths.hpp"
 #include "cli/options.hpp"
 #include "config/config.hpp"
+#include "control/can_sim_machine.hpp"
 #include "control/machine_config.hpp"
 #include "control/sim_machine.hpp"
 #include "io/output_file.hpp"
@@ -30,18 +31,20 @@ const char* const kDemoJob =
     ;
 
 constexpr const char* kFaultKinds =
-    "estop, arc-lost, no-arc, limit, hold, cycle-start, drive-fault, link-drop, link-stall, modbus-exception "
-    "or crc-error";
+    "estop, arc-lost, no-arc, limit, hold, cycle-start, drive-fault, link-drop, link-stall, modbus-exception, "
+    "crc-error, heartbeat-loss, emcy, bus-off or enable-refused";
 
 // KIND@SECONDS[:DURATION]: a GPIO event for the scripted inputs, or a fault
 // on the board's side.
-bool parse_fault(const std::string& text, bool rtu, std::vector<sim::GpioEvent>& gpio,
-                 std::vector<control::BoardFault>& board, std::string& error) {
+bool parse_fault(const std::string& text, const std::string& link, std::vector<sim::GpioEvent>& gpio,
+                 std::vector<control::BoardFault>& board, std::vector<control::CanFault>& can, std::string& error) {
+  const bool rtu = link == "modbus-rtu", on_can = link == "can";
   const std::size_t at = text.find('@');
   const std::string kind = text.substr(0, at);
   sim::GpioEvent g;
   control::BoardFault b;
-  bool is_gpio = true;
+  control::CanFault c;
+  bool is_gpio = true, is_can = false;
   if (kind == "estop") g.kind = sim::GpioEvent::Kind::estop;
   else if (kind == "arc-lost") g.kind = sim::GpioEvent::Kind::arc_lost;
   else if (kind == "no-arc") g.kind = sim::GpioEvent::Kind::no_arc;
@@ -55,12 +58,25 @@ bool parse_fault(const std::string& text, bool rtu, std::vector<sim::GpioEvent>&
     else if (kind == "link-stall") b.kind = control::BoardFaultKind::link_stall;
     else if (kind == "modbus-exception") b.kind = control::BoardFaultKind::modbus_exception;
     else if (kind == "crc-error") b.kind = control::BoardFaultKind::crc_error;
+    else if (control::parse_can_fault(kind, c.kind)) is_can = true;
     else {
       error = "--fault: unknown kind " + quoted(kind) + " (expected " + kFaultKinds + ")";
       return false;
     }
   }
-  if (!is_gpio && b.kind == control::BoardFaultKind::crc_error && !rtu) {
+  if (on_can && !is_gpio && !is_can) {
+    if (b.kind != control::BoardFaultKind::drive_fault) {
+      error = "--fault: " + kind + " is a Modbus fault; on --link can: heartbeat-loss, emcy, bus-off, enable-refused";
+      return false;
+    }
+    is_can = true;  // a drive fault on CAN is the drive's EMCY
+    c.kind = control::CanFaultKind::emcy;
+  }
+  if (is_can && !on_can) {
+    error = "--fault: " + kind + " needs --link can";
+    return false;
+  }
+  if (!is_gpio && !is_can && b.kind == control::BoardFaultKind::crc_error && !rtu) {
     error = "--fault: crc-error needs --link modbus-rtu (TCP frames carry no CRC)";
     return false;
   }
@@ -78,6 +94,9 @@ bool parse_fault(const std::string& text, bool rtu, std::vector<sim::GpioEvent>&
     g.t_s = t;
     g.duration_s = duration;
     gpio.push_back(g);
+  } else if (is_can) {
+    c.at_s = t;
+    can.push_back(c);
   } else {
     b.at_s = t;
     if (colon != std::string::npos) b.duration_s = duration;
@@ -109,9 +128,12 @@ int run_sim(const SimOptions& given) {
     if (opts.report.empty()) opts.report = "kerf-sim.json";
   }
   std::string link = opts.link.empty() ? config::to_string(cfg.link.kind) : opts.link;
-  if (link != "modbus-tcp" && link != "modbus-rtu")
-    return usage_error("--link: unknown link " + quoted(link) + " (expected modbus-tcp or modbus-rtu)");
-  const bool rtu = link == "modbus-rtu";
+  if (link != "modbus-tcp" && link != "modbus-rtu" && link != "can")
+    return usage_error("--link: unknown link " + quoted(link) + " (expected modbus-tcp, modbus-rtu or can)");
+  const bool rtu = link == "modbus-rtu", can = link == "can";
+  if (!can && (!opts.axes.empty() || !opts.sync_ms.empty() || !opts.iface.empty()))
+    return usage_error(std::string(!opts.axes.empty() ? "--axes" : !opts.sync_ms.empty() ? "--sync-ms" : "--iface") +
+                       ": only with --link can");
   const std::string criterion = opts.criterion.empty() ? cfg.fit.criterion : opts.criterion;
   if (!criterion_supported(criterion))
     return usage_error("--criterion: unknown criterion " + quoted(criterion) + " (expected vertex or band)");
@@ -130,8 +152,27 @@ int run_sim(const SimOptions& given) {
   gopts.limit_count = cfg.gpio.limits.empty() ? 2 : cfg.gpio.limits.size();
   std::vector<sim::GpioEvent> events;
   std::vector<control::BoardFault> board_faults;
+  std::vector<control::CanFault> can_faults;
   for (const std::string& text : opts.faults)
-    if (!parse_fault(text, rtu, events, board_faults, error)) return usage_error(error);
+    if (!parse_fault(text, link, events, board_faults, can_faults, error)) return usage_error(error);
+  control::CanMachineConfig can_cfg = control::can_machine_config(cfg);
+  if (can) {
+    double axes = 0.0, sync_ms = 0.0;
+    if (!opts.axes.empty()) {
+      if (!parse_length("--axes", opts.axes, false, axes, error)) return usage_error(error);
+      if (axes != 2.0 && axes != 3.0) return usage_error("--axes: the CAN link drives 2 or 3 axes, got " + opts.axes);
+      can_cfg.can.axes = static_cast<std::size_t>(axes);
+      if (can_cfg.can.node_ids.size() != can_cfg.can.axes) can_cfg.can.node_ids.clear();  // 1..axes
+    }
+    if (!opts.sync_ms.empty()) {
+      if (!parse_length("--sync-ms", opts.sync_ms, false, sync_ms, error)) return usage_error(error);
+      if (sync_ms < 1.0 || sync_ms > 10.0 || sync_ms != std::floor(sync_ms))
+        return usage_error("--sync-ms: a whole number of ms in 1..10, got " + opts.sync_ms);
+      can_cfg.can.sync_ms = sync_ms;
+    }
+    can_cfg.can.iface = opts.iface;
+    can_cfg.faults = can_faults;
+  }
   if (!opts.gpio_script.empty() &&
       !sim::load_gpio_script(opts.gpio_script, gopts.limit_count, events, error)) {
     std::fprintf(stderr, "%s\n", error.c_str());
@@ -180,7 +221,18 @@ int run_sim(const SimOptions& given) {
   // resumed run starts there too and travels to its resume point.
   mcfg.start = fitted.job.paths.front().start;
 
-  const control::SimMachineResult res = control::run_sim_machine(fitted.job, ccfg, mcfg, gpio, journal.get(), from);
+  control::SimMachineResult res;
+  if (can) {
+    can_cfg.can.start = mcfg.start;
+    can_cfg.speed = speed;
+    can_cfg.max_sim_s = mcfg.max_sim_s;
+    // The controller cycles in whole SYNC periods.
+    const double sync_s = can_cfg.can.sync_ms / 1000.0;
+    can_cfg.cycle_s = std::max(sync_s, std::round(mcfg.cycle_s / sync_s) * sync_s);
+    res = control::run_can_sim_machine(fitted.job, ccfg, can_cfg, gpio, journal.get(), from);
+  } else {
+    res = control::run_sim_machine(fitted.job, ccfg, mcfg, gpio, journal.get(), from);
+  }
   if (!res.setup_error.empty()) {
     std::fprintf(stderr, "kerf: sim: %s\n", res.setup_error.c_str());
     return kExitFailure;

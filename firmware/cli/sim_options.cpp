@@ -13,13 +13,18 @@ CLI::App* add_sim_command(CLI::App& app, SimOptions& o) {
       "With no arguments: the built-in demo job, writing kerf-sim.csv, kerf-sim.svg and kerf-sim.json");
   s->add_option("--config", o.config, "Machine configuration (TOML); default: built-in defaults")
       ->type_name("FILE");
-  s->add_option("--link", o.link, "modbus-tcp or modbus-rtu (default: the config's)")->type_name("LINK");
+  s->add_option("--link", o.link, "modbus-tcp, modbus-rtu or can (default: the config's)")->type_name("LINK");
+  s->add_option("--axes", o.axes, "can: drives on the bus, 2 or 3 (default: the config's axes)")->type_name("N");
+  s->add_option("--sync-ms", o.sync_ms, "can: SYNC period in ms, 1..10 (default: the config's)")->type_name("P");
+  s->add_option("--iface", o.iface, "can: a SocketCAN interface such as vcan0 (default: the in-process bus)")
+      ->type_name("IFACE");
   s->add_option("--tol", o.tol, "Fit tolerance in mm (default: the config's)")->type_name("EPS");
   s->add_option("--criterion", o.criterion, "vertex or band (default: the config's)")->type_name("NAME");
   s->add_option("--feed", o.feed, "Cut feed in mm/min (default: the config's)")->type_name("MM_PER_MIN");
   s->add_option("--fault", o.faults,
-                "KIND@SECONDS[:DURATION]: estop, arc-lost, no-arc, limit, hold, cycle-start, drive-fault, "
-                "link-drop, link-stall, modbus-exception, crc-error")
+                "KIND@SECONDS[:DURATION]: estop, arc-lost, no-arc, limit, hold, cycle-start, drive-fault; "
+                "modbus: link-drop, link-stall, modbus-exception, crc-error; can: heartbeat-loss, emcy, bus-off, "
+                "enable-refused")
       ->type_name("FAULT");
   s->add_option("--gpio-script", o.gpio_script, "Timed GPIO events (see sim/README.md)")->type_name("FILE");
   s->add_option("--journal", o.journal, "Progress journal: every completed segment, synced")->type_name("FILE");

@@ -27,6 +27,9 @@ struct SimOptions {
   std::string plot;
   std::string speed = "0";          // 0: as fast as possible
   std::string link_timeout;         // s
+  std::string axes;                 // can: 2 or 3 (default: the config's axes)
+  std::string sync_ms;              // can: SYNC period, 1..10 ms (default: the config's)
+  std::string iface;                // can: a SocketCAN interface (vcan0); empty: the in-process bus
   std::string file;                 // empty: the built-in demo job
 };
 

@@ -123,7 +123,7 @@ void Controller::cycle(double now_s) {
     } else if (in.any_limit()) {
       for (std::uint8_t i = 0; i < in.limit_count; ++i)
         if (in.limit[i]) {
-          trip = "limit switch " + std::to_string(i) + " hit";
+          trip = format("limit switch %u hit", static_cast<unsigned>(i));
           break;
         }
     }

@@ -44,7 +44,8 @@ struct SimSummary {
 SimSummary summarise_run(const control::RunReport& r, std::size_t paths, const std::string& link, bool resumed,
                          const control::Journal* journal);
 
-// Largest distance of an executed sample (running job segment k + 1) from fitted piece k.
+// Largest distance of an executed sample (running job segment k + 1) from
+// fitted piece k or a piece next to it.
 double max_path_deviation(const std::vector<sim::TraceSample>& trace,
                           const std::vector<fit::Piece<double>>& pieces);
 
