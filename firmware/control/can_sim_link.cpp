@@ -69,6 +69,14 @@ hal::CanOpenConfig master_config(const CanSimOptions& o, bool wall_clock) {
   return c;
 }
 
+// What the master reads: the drives' EMCY, TPDO1, SDO replies and heartbeats.
+std::vector<hal::CanFilter> master_filters() {
+  return {{hal::canopen::kEmcy, 0x780},
+          {hal::canopen::kTpdo1, 0x780},
+          {hal::canopen::kSdoTx, 0x780},
+          {hal::canopen::kHeartbeat, 0x780}};
+}
+
 // Shared by both buses: the master, the CSP link, and the forwarding.
 class CanSimLinkBase : public CanSimLink {
  public:
@@ -151,11 +159,7 @@ class SocketCanSimLink final : public CanSimLinkBase {
     if (!drives_) return false;
     if (o.refuse_enable_axis >= 0)
       drives_->inject(node_of(o, static_cast<std::size_t>(o.refuse_enable_axis)), sim::DriveFault::enable_refused);
-    const std::vector<hal::CanFilter> filters = {{hal::canopen::kEmcy, 0x780},
-                                                 {hal::canopen::kTpdo1, 0x780},
-                                                 {hal::canopen::kSdoTx, 0x780},
-                                                 {hal::canopen::kHeartbeat, 0x780}};
-    bus_ = hal::SocketCanBus::open(o.iface, filters, error);
+    bus_ = hal::SocketCanBus::open(o.iface, master_filters(), error);
     if (!bus_) return false;
     first_ = node_of(o, 0);
     last_ = node_of(o, o.axes - 1);
@@ -197,6 +201,29 @@ class SocketCanSimLink final : public CanSimLinkBase {
   std::unique_ptr<hal::SocketCanBus> bus_;
 };
 
+// The machine's own drives on a SocketCAN interface (`kerf run`): no
+// simulated drives; the CSP clock runs on its own thread, paced by the SYNC
+// on the wall clock, so the controller's cycle only queues and polls.
+class MachineCanLink final : public CanSimLinkBase {
+ public:
+  ~MachineCanLink() override {
+    if (csp_) csp_->stop_clock();
+  }
+  bool open(const CanSimOptions& o, std::string& error) {
+    bus_ = hal::SocketCanBus::open(o.iface, master_filters(), error);
+    if (!bus_ || !start(*bus_, o, true, error)) return false;
+    csp_->run_clock(true);
+    return true;
+  }
+  void tick() override {}  // the clock thread runs the SYNC periods
+  void inject(CanFaultKind) override {}
+  double bus_load_bps() const override { return 0.0; }
+  bool finish_log(std::string&) override { return true; }
+
+ private:
+  std::unique_ptr<hal::SocketCanBus> bus_;
+};
+
 }  // namespace
 
 CanSimOptions can_sim_options(const config::Config& cfg) {
@@ -208,6 +235,16 @@ CanSimOptions can_sim_options(const config::Config& cfg) {
   if (cfg.machine.axes.size() > 1) o.counts_per_mm.y = cfg.machine.axes[1].counts_per_mm;
   o.accel_mm_s2 = cfg.machine.accel;
   return o;
+}
+
+std::unique_ptr<hal::SegmentLink> open_machine_can_link(const CanSimOptions& opts, std::string& error) {
+  if (opts.iface.empty()) {
+    error = "link.iface: kerf run needs a SocketCAN interface (can0, vcan0 ...)";
+    return nullptr;
+  }
+  auto link = std::make_unique<MachineCanLink>();
+  if (!link->open(opts, error)) return nullptr;
+  return link;
 }
 
 std::unique_ptr<CanSimLink> make_can_sim_link(const CanSimOptions& opts, std::string& error) {

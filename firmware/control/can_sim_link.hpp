@@ -69,4 +69,9 @@ CanSimOptions can_sim_options(const config::Config& cfg);
 // Null with a clear reason in `error` when anything fails.
 std::unique_ptr<CanSimLink> make_can_sim_link(const CanSimOptions& opts, std::string& error);
 
+// The machine's drives for `kerf run`: the CANopen master on the SocketCAN
+// interface opts.iface (brought up, enabled), the CSP link's clock on a
+// thread of its own. Null with the reason when anything fails.
+std::unique_ptr<hal::SegmentLink> open_machine_can_link(const CanSimOptions& opts, std::string& error);
+
 }  // namespace kerf::control

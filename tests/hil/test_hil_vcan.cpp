@@ -357,3 +357,50 @@ TEST(HilVcan, KerfSimLinkOverVcan0) {
 
 }  // namespace
 }  // namespace kerf::test
+
+namespace kerf::test {
+namespace {
+
+std::string slurp(const std::string& path) {
+  std::FILE* f = std::fopen(path.c_str(), "r");
+  std::string s;
+  if (f == nullptr) return s;
+  char buf[4096];
+  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) s.append(buf, n);
+  std::fclose(f);
+  return s;
+}
+
+// `kerf run` on the machine's side of the bus: the controller, the CANopen
+// master and the CSP clock in the kerf process, the drives in a
+// kerf-drive-sim process, the kernel's vcan0 between them.
+TEST(HilVcan, KerfRunCutsAJobOnDrivesInAnotherProcess) {
+  const std::string dir = out_dir();
+  DriveProcess drives({"--iface", "vcan0", "--nodes", "1,2", "--log", dir + "/hil_kerf_run.candump"});
+  ASSERT_GT(drives.pid, 0);
+  {
+    std::string err;
+    auto bus = hal::SocketCanBus::open("vcan0", kMasterFilters, err);
+    ASSERT_TRUE(bus) << err;
+    ASSERT_TRUE(wait_boot(*bus, {1, 2})) << "kerf-drive-sim did not come up";
+  }
+  const std::string cfg = dir + "/kerf_run_can.toml", report = dir + "/kerf_run_can.json";
+  std::FILE* f = std::fopen(cfg.c_str(), "w");
+  ASSERT_NE(f, nullptr);
+  std::fputs("[machine]\ncycle = 0.004\n[link]\nkind = \"can\"\niface = \"vcan0\"\nnode_ids = [1, 2]\nsync_ms = 2\n"
+             "timeout = 2.0\n[cut]\npierce_delay = 0.1\nfeed = 6000\n[fit]\ntol = 0.05\n",
+             f);
+  std::fclose(f);
+  std::remove(report.c_str());
+  const std::string cmd = std::string(KERF_BIN) + " run --config " + cfg + " --sim-gpio --report " + report + " " +
+                          KERF_EXAMPLES + "/parabola.txt > " + dir + "/kerf_run_can.out 2>&1";
+  const int rc = std::system(cmd.c_str());
+  const std::string rep = slurp(report);
+  ASSERT_EQ(rc, 0) << slurp(dir + "/kerf_run_can.out") << rep;
+  EXPECT_NE(rep.find("\"state\": \"done\""), std::string::npos) << rep;
+  EXPECT_NE(rep.find("\"link\": \"can\""), std::string::npos) << rep;
+  EXPECT_NE(rep.find("\"duplicates\": 0"), std::string::npos) << rep;
+}
+
+}  // namespace
+}  // namespace kerf::test
