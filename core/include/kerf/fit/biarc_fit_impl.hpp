@@ -1,0 +1,201 @@
+// Definitions behind fit/biarc_fit.hpp. Included by the one translation unit
+// per scalar type that instantiates them (src/biarc_double.cpp).
+#pragma once
+
+#include "kerf/fit/biarc_fit.hpp"
+#include "kerf/fit/biarc_valid.hpp"
+
+namespace kerf::fit {
+
+namespace biarc_detail {
+
+template <class S>
+struct Pair {
+  const BandRegion<S>& region;
+  Span<const Vec2<S>> tangents;
+  std::uint32_t samples;
+
+  S sample(std::uint32_t q) const { return S(2) * (S(q) + S(0.5)) / S(samples); }
+
+  // Some valid joint of p_i -> p_j; its s through `found`.
+  bool any(std::uint32_t i, std::uint32_t j, S& found) const {
+    const BiarcCheck<S> check(region, i, j);
+    if (!check.ends(tangents[i], tangents[j])) return false;
+    const JointCircle<S> jc(region.point(i), tangents[i], region.point(j), tangents[j]);
+    Biarc<S> b;
+    // Middle of each of J's two arcs first, then finer (bit-reversed).
+    std::uint32_t bits = 0;
+    while ((1u << bits) < samples) ++bits;
+    for (std::uint32_t t = 0; t < (1u << bits); ++t) {
+      std::uint32_t q = 0;
+      for (std::uint32_t c = 0; c < bits; ++c) q |= ((t >> c) & 1u) << (bits - 1 - c);
+      if (q >= samples) continue;
+      if (jc.biarc(sample(q), b) && check.valid(b)) {
+        found = b.s;
+        return true;
+      }
+    }
+    return false;
+  }
+};
+
+template <class S>
+S point_deviation(Span<const Vec2<S>> pts, std::uint32_t i, std::uint32_t j, Vec2<S> x) {
+  S best = distance(x, pts[i]);
+  for (std::uint32_t k = i; k < j; ++k) best = min_of(best, distance_to_line_segment(pts[k], pts[k + 1], x));
+  return best;
+}
+
+// The biarc at s if valid, and its deviation; a huge value when not.
+template <class S>
+S score(const Pair<S>& pr, Span<const Vec2<S>> pts, std::uint32_t i, std::uint32_t j, S s,
+        Biarc<S>& b) {
+  const BiarcCheck<S> check(pr.region, i, j);
+  const JointCircle<S> jc(pts[i], pr.tangents[i], pts[j], pr.tangents[j]);
+  if (!(s > S(0) && s < S(2)) || !jc.biarc(s, b) || !check.valid(b)) return S(1e300);
+  return biarc_deviation(pts, i, j, b);
+}
+
+// The joint of p_i -> p_j (known valid at s0) with the smallest deviation:
+// the best of the samples, then a golden-section search between its
+// neighbours (an invalid joint scores as infinite).
+template <class S>
+Biarc<S> best_joint(const Pair<S>& pr, Span<const Vec2<S>> pts, std::uint32_t i, std::uint32_t j,
+                    S s0) {
+  Biarc<S> b;
+  Biarc<S> best;
+  S best_dev = score(pr, pts, i, j, s0, best);
+  S best_s = s0;
+  for (std::uint32_t q = 0; q < pr.samples; ++q) {
+    const S dev = score(pr, pts, i, j, pr.sample(q), b);
+    if (dev < best_dev) {
+      best_dev = dev;
+      best_s = b.s;
+      best = b;
+    }
+  }
+  const S step = S(2) / S(pr.samples);
+  S lo = best_s - step;
+  S hi = best_s + step;
+  const S g = S(0.6180339887498949);
+  S x1 = hi - g * (hi - lo);
+  S x2 = lo + g * (hi - lo);
+  S f1 = score(pr, pts, i, j, x1, b);
+  S f2 = score(pr, pts, i, j, x2, b);
+  for (int it = 0; it < 30; ++it) {
+    if (f1 < f2) {
+      hi = x2;
+      x2 = x1;
+      f2 = f1;
+      x1 = hi - g * (hi - lo);
+      f1 = score(pr, pts, i, j, x1, b);
+    } else {
+      lo = x1;
+      x1 = x2;
+      f1 = f2;
+      x2 = lo + g * (hi - lo);
+      f2 = score(pr, pts, i, j, x2, b);
+    }
+  }
+  const S mid = f1 < f2 ? x1 : x2;
+  if (score(pr, pts, i, j, mid, b) < best_dev) best = b;
+  return best;
+}
+
+}  // namespace biarc_detail
+
+template <class S>
+S biarc_deviation(Span<const Vec2<S>> pts, std::uint32_t i, std::uint32_t j, const Biarc<S>& b) {
+  // Samples per arc grow with the span, so that each cell sees several.
+  const std::uint32_t m = 8 + 4 * (j - i);
+  S worst = S(0);
+  const ArcPart<S>* arcs[2] = {&b.first, &b.second};
+  for (const ArcPart<S>* arc : arcs) {
+    if (arc->empty()) continue;
+    for (std::uint32_t q = 0; q <= m; ++q)
+      worst = max_of(worst, biarc_detail::point_deviation(pts, i, j, arc->at(S(q) / S(m))));
+  }
+  return worst;
+}
+
+template <class S>
+Result<Fit<S>> fit_biarc_min_count(Span<const Vec2<S>> pts, Span<const Vec2<S>> tangents,
+                                   Span<const BandWidth<S>> widths, BiarcOptions opts,
+                                   BiarcWorkspace<S> ws, Span<BiarcPiece<S>> out) {
+  std::size_t where = 0;
+  if (const Status s = validate_points(pts, where); s != Status::ok) return s;
+  const std::size_t n = pts.size();
+  if (tangents.size() != n || widths.size() != n || opts.samples == 0) return Status::invalid_argument;
+  S widest = S(0);
+  for (std::size_t k = 0; k < n; ++k) {
+    const BandWidth<S>& w = widths[k];
+    if (!Scalar<S>::is_finite(w.left) || !Scalar<S>::is_finite(w.right) || !(w.left > S(0)) ||
+        !(w.right > S(0)))
+      return Status::invalid_argument;
+    widest = max_of(widest, max_of(w.left, w.right));
+    const Vec2<S> t = tangents[k];
+    if (!Scalar<S>::is_finite(t.x) || !Scalar<S>::is_finite(t.y) ||
+        Scalar<S>::abs(t.norm() - S(1)) > S(1e-9))
+      return Status::invalid_argument;
+  }
+  if (ws.words.size() < biarc_workspace_words(n) || ws.vertices.size() < n)
+    return Status::capacity_exceeded;
+  const auto count = static_cast<std::uint32_t>(n);
+  BandRegion<S> region(pts.data(), count, ws.vertices.data());
+  if (const Status s = region.build(widths.data(), S(1)); s != Status::ok) return s;
+
+  // Breadth-first over the DAG in index order: dist[j] the fewest biarcs to
+  // p_j, prev[j] the start of the last one.
+  constexpr std::uint32_t kNone = 0xffffffffu;
+  std::uint32_t* dist = ws.words.data();
+  std::uint32_t* prev = dist + n;
+  for (std::size_t k = 0; k < n; ++k) dist[k] = prev[k] = kNone;
+  dist[0] = 0;
+  const biarc_detail::Pair<S> pair{region, tangents, opts.samples};
+  for (std::uint32_t i = 0; i + 1 < count; ++i) {
+    if (dist[i] == kNone) continue;
+    std::uint32_t misses = 0;
+    for (std::uint32_t j = i + 1; j < count; ++j) {
+      const bool reached = dist[j] != kNone && dist[j] <= dist[i] + 1;
+      S s{};
+      if (reached) {
+      } else if (pair.any(i, j, s)) {
+        dist[j] = dist[i] + 1;
+        prev[j] = i;
+        misses = 0;
+      } else if (opts.give_up != 0 && ++misses >= opts.give_up) {
+        break;
+      }
+      if (region.vertex(j).barrier) break;  // nothing passes through it
+    }
+  }
+  if (dist[n - 1] == kNone) return Status::infeasible;
+  const std::uint32_t pieces = dist[n - 1];
+  if (out.size() < pieces) return Status::capacity_exceeded;
+
+  Fit<S> fit{};
+  fit.pieces = pieces;
+  fit.tol = widest;
+  std::uint32_t j = count - 1;
+  for (std::uint32_t p = pieces; p-- > 0;) {
+    const std::uint32_t i = prev[j];
+    S s{};
+    if (!pair.any(i, j, s)) return Status::infeasible;  // cannot happen: it was found valid
+    const Biarc<S> b = biarc_detail::best_joint(pair, pts, i, j, s);
+    BiarcPiece<S>& piece = out[p];
+    piece.first = i;
+    piece.last = j;
+    piece.arc[0] = b.first.segment();
+    piece.arc[1] = b.second.segment();
+    piece.joint = b.first.b;
+    piece.tangent[0] = tangents[i];
+    piece.tangent[1] = b.second.t;
+    piece.tangent[2] = b.second.end_tangent();
+    piece.error = biarc_deviation(pts, i, j, b);
+    fit.max_error = max_of(fit.max_error, piece.error);
+    j = i;
+  }
+  return fit;
+}
+
+}  // namespace kerf::fit
