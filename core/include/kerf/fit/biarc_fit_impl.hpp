@@ -17,26 +17,14 @@ struct Pair {
 
   S sample(std::uint32_t q) const { return S(2) * (S(q) + S(0.5)) / S(samples); }
 
-  // Some valid joint of p_i -> p_j; its s through `found`.
-  bool any(std::uint32_t i, std::uint32_t j, S& found) const {
-    const BiarcCheck<S> check(region, i, j);
-    if (!check.ends(tangents[i], tangents[j])) return false;
-    const JointCircle<S> jc(region.point(i), tangents[i], region.point(j), tangents[j]);
-    Biarc<S> b;
-    // Middle of each of J's two arcs first, then finer (bit-reversed).
-    std::uint32_t bits = 0;
-    while ((1u << bits) < samples) ++bits;
-    for (std::uint32_t t = 0; t < (1u << bits); ++t) {
-      std::uint32_t q = 0;
-      for (std::uint32_t c = 0; c < bits; ++c) q |= ((t >> c) & 1u) << (bits - 1 - c);
-      if (q >= samples) continue;
-      if (jc.biarc(sample(q), b) && check.valid(b)) {
-        found = b.s;
-        return true;
-      }
-    }
-    return false;
-  }
+  // Some valid joint of p_i -> p_j; its s through `found`. First the
+  // samples; when none is valid, the valid joints may still form an interval
+  // narrower than the samples' spacing (an S-curve fitted closely, J a line),
+  // so around the two samples whose biarcs come nearest the polyline (by
+  // a cheap measure: the joint and the arcs' middles) a scan 8 times finer
+  // and a golden-section search on that measure look for one, each probe
+  // tested exactly.
+  bool any(std::uint32_t i, std::uint32_t j, S& found) const;
 };
 
 template <class S>
@@ -45,6 +33,98 @@ S point_deviation(Span<const Vec2<S>> pts, std::uint32_t i, std::uint32_t j, Vec
   for (std::uint32_t k = i; k < j; ++k) best = min_of(best, distance_to_line_segment(pts[k], pts[k + 1], x));
   return best;
 }
+
+// The cheap measure of how far the biarc at s strays (huge when it is not
+// one).
+template <class S>
+S nearness(const JointCircle<S>& jc, Span<const Vec2<S>> pts, std::uint32_t i, std::uint32_t j, S s,
+           Biarc<S>& b) {
+  if (!(s > S(0) && s < S(2)) || !jc.biarc(s, b)) return S(1e300);
+  S d = point_deviation(pts, i, j, b.first.b);
+  d = max_of(d, point_deviation(pts, i, j, b.first.at(S(0.5))));
+  return max_of(d, point_deviation(pts, i, j, b.second.at(S(0.5))));
+}
+
+template <class S>
+bool Pair<S>::any(std::uint32_t i, std::uint32_t j, S& found) const {
+  const BiarcCheck<S> check(region, i, j);
+  if (!check.ends(tangents[i], tangents[j])) return false;
+  const JointCircle<S> jc(region.point(i), tangents[i], region.point(j), tangents[j]);
+  const Span<const Vec2<S>> pts(&region.point(0), region.size());
+  Biarc<S> b;
+  S near_s[2] = {S(-1), S(-1)};
+  S near_d[2] = {S(1e300), S(1e300)};
+  // Middle of each of J's two arcs first, then finer (bit-reversed).
+  std::uint32_t bits = 0;
+  while ((1u << bits) < samples) ++bits;
+  for (std::uint32_t t = 0; t < (1u << bits); ++t) {
+    std::uint32_t q = 0;
+    for (std::uint32_t c = 0; c < bits; ++c) q |= ((t >> c) & 1u) << (bits - 1 - c);
+    if (q >= samples) continue;
+    if (!jc.biarc(sample(q), b)) continue;
+    if (check.valid(b)) {
+      found = b.s;
+      return true;
+    }
+    const S d = nearness(jc, pts, i, j, b.s, b);
+    if (d < near_d[1]) {
+      const int at = d < near_d[0] ? 0 : 1;
+      if (at == 0) {
+        near_d[1] = near_d[0];
+        near_s[1] = near_s[0];
+      }
+      near_d[at] = d;
+      near_s[at] = sample(q);
+    }
+  }
+  // Only biarcs that come near are worth the search: within a few band
+  // widths, plus what one sample step can move the joint (about the chord
+  // times the step).
+  const S step = S(2) / S(samples);
+  const S reach = S(4) * max_of(region.vertex(i).gate_left, region.vertex(i).gate_right) +
+                  S(2) * step * (region.point(j) - region.point(i)).norm();
+  const S g = S(0.6180339887498949);
+  for (int c = 0; c < 2; ++c) {
+    if (!(near_d[c] < reach)) continue;
+    // A finer scan between the neighbouring samples, then the search.
+    for (int q = 1; q < 16; ++q) {
+      const S x = near_s[c] - step + step * S(q) / S(8);
+      if (jc.biarc(x, b) && check.valid(b)) {
+        found = x;
+        return true;
+      }
+    }
+    S lo = near_s[c] - step;
+    S hi = near_s[c] + step;
+    S x1 = hi - g * (hi - lo);
+    S x2 = lo + g * (hi - lo);
+    S f1 = nearness(jc, pts, i, j, x1, b);
+    S f2 = nearness(jc, pts, i, j, x2, b);
+    for (int it = 0; it < 40; ++it) {
+      const bool left = f1 < f2;
+      const S x = left ? x1 : x2;
+      if (jc.biarc(x, b) && check.valid(b)) {
+        found = x;
+        return true;
+      }
+      if (left) {
+        hi = x2;
+        x2 = x1;
+        f2 = f1;
+        x1 = hi - g * (hi - lo);
+        f1 = nearness(jc, pts, i, j, x1, b);
+      } else {
+        lo = x1;
+        x1 = x2;
+        f1 = f2;
+        x2 = lo + g * (hi - lo);
+        f2 = nearness(jc, pts, i, j, x2, b);
+      }
+    }
+  }
+  return false;
+}
+
 
 // The biarc at s if valid, and its deviation; a huge value when not.
 template <class S>
