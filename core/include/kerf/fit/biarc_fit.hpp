@@ -8,7 +8,8 @@
 // Per pair: the valid joints on the joint circle J (fit/biarc.hpp) are
 // searched by sampling J at `samples` points, each sample tested exactly by
 // fit/biarc_valid.hpp. The fewest biarcs are a shortest path over the valid
-// pairs (breadth-first over the DAG, O(n^2) pair tests, O(n) memory); each
+// pairs (breadth-first over the DAG, O(n^2) pair tests at most, O(n)
+// memory; see BiarcOptions::exact); each
 // biarc of the path then gets the joint that minimises its deviation from
 // the polyline, by golden-section refinement around the best valid sample.
 // Everything runs in caller-provided storage; see BiarcWorkspace.
@@ -35,11 +36,14 @@ struct BiarcPiece {
 };
 
 struct BiarcOptions {
-  std::uint32_t samples = 64;  // joints tried per pair on J
-  // 0: test every pair (exact over the samples). Otherwise a start gives up
-  // after this many failed ends in a row (faster on long inputs; the count
-  // may then exceed the minimum).
-  std::uint32_t give_up = 0;
+  std::uint32_t samples = 64;  // joints tried per pair on J (1..256), then the finer search
+  // Test every pair (exact over the search). Otherwise a start stops after
+  // `slack` + (its longest valid reach) failed ends in a row: far ends of
+  // a smooth path fail, and testing them all costs O(n^2) pair tests of
+  // O(span) each. The twin tests run exact; on the test curves both give
+  // the same counts.
+  bool exact = false;
+  std::uint32_t slack = 16;
 };
 
 constexpr std::size_t biarc_workspace_words(std::size_t n) { return 2 * n; }

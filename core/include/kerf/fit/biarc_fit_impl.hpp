@@ -20,11 +20,14 @@ struct Pair {
   // Some valid joint of p_i -> p_j; its s through `found`. First the
   // samples; when none is valid, the valid joints may still form an interval
   // narrower than the samples' spacing (an S-curve fitted closely, J a line),
-  // so around the two samples whose biarcs come nearest the polyline (by
-  // a cheap measure: the joint and the arcs' middles) a scan 8 times finer
-  // and a golden-section search on that measure look for one, each probe
-  // tested exactly.
+  // so around the two local minima of a cheap measure of how near the
+  // biarcs come to the polyline (the joint and the arcs' middles), when the
+  // measure could fall to about the band's width there, a scan 8 times
+  // finer and a golden-section search on the measure look for one, each
+  // probe tested exactly.
   bool any(std::uint32_t i, std::uint32_t j, S& found) const;
+  bool refine(const BiarcCheck<S>& check, const JointCircle<S>& jc, std::uint32_t i,
+              std::uint32_t j, S& found) const;
 };
 
 template <class S>
@@ -50,10 +53,7 @@ bool Pair<S>::any(std::uint32_t i, std::uint32_t j, S& found) const {
   const BiarcCheck<S> check(region, i, j);
   if (!check.ends(tangents[i], tangents[j])) return false;
   const JointCircle<S> jc(region.point(i), tangents[i], region.point(j), tangents[j]);
-  const Span<const Vec2<S>> pts(&region.point(0), region.size());
   Biarc<S> b;
-  S near_s[2] = {S(-1), S(-1)};
-  S near_d[2] = {S(1e300), S(1e300)};
   // Middle of each of J's two arcs first, then finer (bit-reversed).
   std::uint32_t bits = 0;
   while ((1u << bits) < samples) ++bits;
@@ -61,41 +61,58 @@ bool Pair<S>::any(std::uint32_t i, std::uint32_t j, S& found) const {
     std::uint32_t q = 0;
     for (std::uint32_t c = 0; c < bits; ++c) q |= ((t >> c) & 1u) << (bits - 1 - c);
     if (q >= samples) continue;
-    if (!jc.biarc(sample(q), b)) continue;
-    if (check.valid(b)) {
+    if (jc.biarc(sample(q), b) && check.valid(b)) {
       found = b.s;
       return true;
     }
-    const S d = nearness(jc, pts, i, j, b.s, b);
-    if (d < near_d[1]) {
-      const int at = d < near_d[0] ? 0 : 1;
-      if (at == 0) {
-        near_d[1] = near_d[0];
-        near_s[1] = near_s[0];
-      }
-      near_d[at] = d;
-      near_s[at] = sample(q);
+  }
+  return refine(check, jc, i, j, found);
+}
+
+template <class S>
+bool Pair<S>::refine(const BiarcCheck<S>& check, const JointCircle<S>& jc, std::uint32_t i,
+                     std::uint32_t j, S& found) const {
+  const Span<const Vec2<S>> pts(&region.point(0), region.size());
+  Biarc<S> b;
+  constexpr std::uint32_t kMax = 256;
+  const std::uint32_t m = samples < kMax ? samples : kMax;
+  S near[kMax];
+  for (std::uint32_t q = 0; q < m; ++q) near[q] = nearness(jc, pts, i, j, sample(q), b);
+  // The two local minima that come nearest.
+  std::uint32_t best[2] = {m, m};
+  for (std::uint32_t q = 0; q < m; ++q) {
+    const S l = near[q == 0 ? m - 1 : q - 1];
+    const S r = near[q + 1 == m ? 0 : q + 1];
+    if (near[q] > l || near[q] > r || !(near[q] < S(1e299))) continue;
+    if (best[0] == m || near[q] < near[best[0]]) {
+      best[1] = best[0];
+      best[0] = q;
+    } else if (best[1] == m || near[q] < near[best[1]]) {
+      best[1] = q;
     }
   }
-  // Only biarcs that come near are worth the search: within a few band
-  // widths, plus what one sample step can move the joint (about the chord
-  // times the step).
-  const S step = S(2) / S(samples);
-  const S reach = S(4) * max_of(region.vertex(i).gate_left, region.vertex(i).gate_right) +
-                  S(2) * step * (region.point(j) - region.point(i)).norm();
+  const S w = max_of(region.vertex(i).gate_left, region.vertex(i).gate_right);
+  const S step = S(2) / S(m);
   const S g = S(0.6180339887498949);
-  for (int c = 0; c < 2; ++c) {
-    if (!(near_d[c] < reach)) continue;
+  for (std::uint32_t c : best) {
+    if (c == m) continue;
+    // Worth a search only when the measure, falling at the rate it does
+    // towards a neighbour, could come down to about the band's width.
+    const S l = near[c == 0 ? m - 1 : c - 1];
+    const S r = near[c + 1 == m ? 0 : c + 1];
+    const S fall = max_of(Scalar<S>::abs(l - near[c]), Scalar<S>::abs(r - near[c]));
+    if (near[c] - fall > S(2) * w) continue;
+    const S s0 = sample(c);
     // A finer scan between the neighbouring samples, then the search.
     for (int q = 1; q < 16; ++q) {
-      const S x = near_s[c] - step + step * S(q) / S(8);
+      const S x = s0 - step + step * S(q) / S(8);
       if (jc.biarc(x, b) && check.valid(b)) {
         found = x;
         return true;
       }
     }
-    S lo = near_s[c] - step;
-    S hi = near_s[c] + step;
+    S lo = s0 - step;
+    S hi = s0 + step;
     S x1 = hi - g * (hi - lo);
     S x2 = lo + g * (hi - lo);
     S f1 = nearness(jc, pts, i, j, x1, b);
@@ -125,8 +142,6 @@ bool Pair<S>::any(std::uint32_t i, std::uint32_t j, S& found) const {
   return false;
 }
 
-
-// The biarc at s if valid, and its deviation; a huge value when not.
 template <class S>
 S score(const Pair<S>& pr, Span<const Vec2<S>> pts, std::uint32_t i, std::uint32_t j, S s,
         Biarc<S>& b) {
@@ -205,7 +220,8 @@ Result<Fit<S>> fit_biarc_min_count(Span<const Vec2<S>> pts, Span<const Vec2<S>> 
   std::size_t where = 0;
   if (const Status s = validate_points(pts, where); s != Status::ok) return s;
   const std::size_t n = pts.size();
-  if (tangents.size() != n || widths.size() != n || opts.samples == 0) return Status::invalid_argument;
+  if (tangents.size() != n || widths.size() != n || opts.samples == 0 || opts.samples > 256)
+    return Status::invalid_argument;
   S widest = S(0);
   for (std::size_t k = 0; k < n; ++k) {
     const BandWidth<S>& w = widths[k];
@@ -235,15 +251,18 @@ Result<Fit<S>> fit_biarc_min_count(Span<const Vec2<S>> pts, Span<const Vec2<S>> 
   for (std::uint32_t i = 0; i + 1 < count; ++i) {
     if (dist[i] == kNone) continue;
     std::uint32_t misses = 0;
+    std::uint32_t reach = 0;
     for (std::uint32_t j = i + 1; j < count; ++j) {
       const bool reached = dist[j] != kNone && dist[j] <= dist[i] + 1;
       S s{};
       if (reached) {
+        // (not tested: neither a hit nor a miss)
       } else if (pair.any(i, j, s)) {
         dist[j] = dist[i] + 1;
         prev[j] = i;
         misses = 0;
-      } else if (opts.give_up != 0 && ++misses >= opts.give_up) {
+        reach = j - i;
+      } else if (!opts.exact && ++misses >= opts.slack + reach) {
         break;
       }
       if (region.vertex(j).barrier) break;  // nothing passes through it
