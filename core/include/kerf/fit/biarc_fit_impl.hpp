@@ -14,6 +14,7 @@ struct Pair {
   const BandRegion<S>& region;
   Span<const Vec2<S>> tangents;
   std::uint32_t samples;
+  S widest;  // the largest width: R lies within it of the polyline
 
   S sample(std::uint32_t q) const { return S(2) * (S(q) + S(0.5)) / S(samples); }
 
@@ -27,7 +28,7 @@ struct Pair {
   // probe tested exactly.
   bool any(std::uint32_t i, std::uint32_t j, S& found) const;
   bool refine(const BiarcCheck<S>& check, const JointCircle<S>& jc, std::uint32_t i,
-              std::uint32_t j, S& found) const;
+              std::uint32_t j, S* near, S& found) const;
 };
 
 template <class S>
@@ -53,31 +54,50 @@ bool Pair<S>::any(std::uint32_t i, std::uint32_t j, S& found) const {
   const BiarcCheck<S> check(region, i, j);
   if (!check.ends(tangents[i], tangents[j])) return false;
   const JointCircle<S> jc(region.point(i), tangents[i], region.point(j), tangents[j]);
-  Biarc<S> b;
-  // Middle of each of J's two arcs first, then finer (bit-reversed).
+  // The samples in bit-reversed order (the middle of each of J's arcs
+  // first), tested in growing batches: a valid pair usually succeeds in
+  // the first, and within a batch fit/biarc_valid.hpp builds each cell's
+  // chains once for all.
+  constexpr std::uint32_t kMax = 256;
+  Biarc<S> b[kMax];
+  bool alive[kMax];
+  std::uint32_t order[kMax];
+  std::uint32_t m = 0;
   std::uint32_t bits = 0;
   while ((1u << bits) < samples) ++bits;
   for (std::uint32_t t = 0; t < (1u << bits); ++t) {
     std::uint32_t q = 0;
     for (std::uint32_t c = 0; c < bits; ++c) q |= ((t >> c) & 1u) << (bits - 1 - c);
-    if (q >= samples) continue;
-    if (jc.biarc(sample(q), b) && check.valid(b)) {
-      found = b.s;
-      return true;
+    if (q < samples) order[m++] = q;
+  }
+  // The cheap measure first: a biarc whose joint or middles lie farther than
+  // the widest width from the polyline is outside R (R lies in the band).
+  const Span<const Vec2<S>> pts(&region.point(0), region.size());
+  S near[kMax];
+  for (std::uint32_t from = 0, size = 4; from < m; from += size, size *= 4) {
+    const std::uint32_t count = from + size < m ? size : m - from;
+    for (std::uint32_t q = 0; q < count; ++q) {
+      const std::uint32_t at = order[from + q];
+      near[at] = nearness(jc, pts, i, j, sample(at), b[q]);
+      alive[q] = near[at] <= widest;
+    }
+    if (check.filter(b, alive, count) == 0) continue;
+    for (std::uint32_t q = 0; q < count; ++q) {
+      if (alive[q]) {
+        found = b[q].s;
+        return true;
+      }
     }
   }
-  return refine(check, jc, i, j, found);
+  return refine(check, jc, i, j, near, found);
 }
 
 template <class S>
 bool Pair<S>::refine(const BiarcCheck<S>& check, const JointCircle<S>& jc, std::uint32_t i,
-                     std::uint32_t j, S& found) const {
+                     std::uint32_t j, S* near, S& found) const {
   const Span<const Vec2<S>> pts(&region.point(0), region.size());
   Biarc<S> b;
-  constexpr std::uint32_t kMax = 256;
-  const std::uint32_t m = samples < kMax ? samples : kMax;
-  S near[kMax];
-  for (std::uint32_t q = 0; q < m; ++q) near[q] = nearness(jc, pts, i, j, sample(q), b);
+  const std::uint32_t m = samples;
   // The two local minima that come nearest.
   std::uint32_t best[2] = {m, m};
   for (std::uint32_t q = 0; q < m; ++q) {
@@ -91,7 +111,7 @@ bool Pair<S>::refine(const BiarcCheck<S>& check, const JointCircle<S>& jc, std::
       best[1] = q;
     }
   }
-  const S w = max_of(region.vertex(i).gate_left, region.vertex(i).gate_right);
+  const S w = widest;
   const S step = S(2) / S(m);
   const S g = S(0.6180339887498949);
   for (std::uint32_t c : best) {
@@ -101,12 +121,12 @@ bool Pair<S>::refine(const BiarcCheck<S>& check, const JointCircle<S>& jc, std::
     const S l = near[c == 0 ? m - 1 : c - 1];
     const S r = near[c + 1 == m ? 0 : c + 1];
     const S fall = max_of(Scalar<S>::abs(l - near[c]), Scalar<S>::abs(r - near[c]));
-    if (near[c] - fall > S(2) * w) continue;
+    if (near[c] - fall > w) continue;
     const S s0 = sample(c);
     // A finer scan between the neighbouring samples, then the search.
     for (int q = 1; q < 16; ++q) {
       const S x = s0 - step + step * S(q) / S(8);
-      if (jc.biarc(x, b) && check.valid(b)) {
+      if (nearness(jc, pts, i, j, x, b) <= w && check.valid(b)) {
         found = x;
         return true;
       }
@@ -120,7 +140,7 @@ bool Pair<S>::refine(const BiarcCheck<S>& check, const JointCircle<S>& jc, std::
     for (int it = 0; it < 40; ++it) {
       const bool left = f1 < f2;
       const S x = left ? x1 : x2;
-      if (jc.biarc(x, b) && check.valid(b)) {
+      if ((left ? f1 : f2) <= w && jc.biarc(x, b) && check.valid(b)) {
         found = x;
         return true;
       }
@@ -247,7 +267,7 @@ Result<Fit<S>> fit_biarc_min_count(Span<const Vec2<S>> pts, Span<const Vec2<S>> 
   std::uint32_t* prev = dist + n;
   for (std::size_t k = 0; k < n; ++k) dist[k] = prev[k] = kNone;
   dist[0] = 0;
-  const biarc_detail::Pair<S> pair{region, tangents, opts.samples};
+  const biarc_detail::Pair<S> pair{region, tangents, opts.samples, widest};
   for (std::uint32_t i = 0; i + 1 < count; ++i) {
     if (dist[i] == kNone) continue;
     std::uint32_t misses = 0;

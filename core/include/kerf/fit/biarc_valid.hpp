@@ -45,22 +45,42 @@ class BiarcCheck {
   }
 
   bool valid(const Biarc<S>& b) const {
-    if (crosses_gate(b, i_) || crosses_gate(b, j_)) return false;
+    bool alive = true;
+    return filter(&b, &alive, 1) == 1;
+  }
+
+  // Many biarcs of the pair at once: clears alive[q] for each b[q] that is
+  // not valid and returns how many stay. Each cell's chains are built once
+  // for all of them, and the test stops when none is left.
+  std::uint32_t filter(const Biarc<S>* b, bool* alive, std::uint32_t m) const {
+    std::uint32_t left = 0;
+    for (std::uint32_t q = 0; q < m; ++q) {
+      if (alive[q] && (crosses_gate(b[q], i_) || crosses_gate(b[q], j_))) alive[q] = false;
+      if (alive[q]) ++left;
+    }
     const std::uint32_t len = j_ - i_;
     std::uint32_t bits = 0;
     while ((1u << bits) < len) ++bits;
     BandChain<S> c;
-    for (std::uint32_t t = 0; t < (1u << bits); ++t) {
+    for (std::uint32_t t = 0; t < (1u << bits) && left > 0; ++t) {
       std::uint32_t rev = 0;
       for (std::uint32_t q = 0; q < bits; ++q) rev |= ((t >> q) & 1u) << (bits - 1 - q);
       if (rev >= len) continue;
-      for (int side = -1; side <= 1; side += 2) {
+      for (int side = -1; side <= 1 && left > 0; side += 2) {
         r_.chain(i_ + rev, side, c);
-        for (int q = 0; q + 1 < c.size; ++q)
-          if (meets(b, c.pt[q], c.pt[q + 1])) return false;
+        for (std::uint32_t q = 0; q < m; ++q) {
+          if (!alive[q]) continue;
+          for (int e = 0; e + 1 < c.size; ++e) {
+            if (meets(b[q], c.pt[e], c.pt[e + 1])) {
+              alive[q] = false;
+              --left;
+              break;
+            }
+          }
+        }
       }
     }
-    return true;
+    return left;
   }
 
  private:
