@@ -33,9 +33,25 @@ struct Pair {
 
 template <class S>
 S point_deviation(Span<const Vec2<S>> pts, std::uint32_t i, std::uint32_t j, Vec2<S> x) {
-  S best = distance(x, pts[i]);
-  for (std::uint32_t k = i; k < j; ++k) best = min_of(best, distance_to_line_segment(pts[k], pts[k + 1], x));
-  return best;
+  // Squared distances, one square root at the end.
+  S best = (x - pts[i]).norm2();
+  for (std::uint32_t k = i; k < j; ++k) {
+    const Vec2<S> d = pts[k + 1] - pts[k];
+    const Vec2<S> v = x - pts[k];
+    const S t = d.dot(v);
+    const S len2 = d.norm2();
+    S d2;
+    if (t <= S(0)) {
+      d2 = v.norm2();
+    } else if (t >= len2) {
+      d2 = (x - pts[k + 1]).norm2();
+    } else {
+      const S c = d.cross(v);
+      d2 = c * c / len2;
+    }
+    best = min_of(best, d2);
+  }
+  return Scalar<S>::sqrt(best);
 }
 
 // The cheap measure of how far the biarc at s strays (huge when it is not
