@@ -88,13 +88,32 @@ bool Pair<S>::any(std::uint32_t i, std::uint32_t j, S& found) const {
   }
   // The cheap measure first: a biarc whose joint or middles lie farther than
   // the widest width from the polyline is outside R (R lies in the band).
+  // Cheaper still: a point farther than that from the box around p_i..p_j
+  // (the measure then takes that distance, plus the width so it fails).
   const Span<const Vec2<S>> pts(&region.point(0), region.size());
+  Vec2<S> lo = pts[i];
+  Vec2<S> hi = pts[i];
+  for (std::uint32_t k = i + 1; k <= j; ++k) {
+    lo = {min_of(lo.x, pts[k].x), min_of(lo.y, pts[k].y)};
+    hi = {max_of(hi.x, pts[k].x), max_of(hi.y, pts[k].y)};
+  }
+  auto outside = [&](Vec2<S> x) {
+    const S dx = max_of(max_of(lo.x - x.x, x.x - hi.x), S(0));
+    const S dy = max_of(max_of(lo.y - x.y, x.y - hi.y), S(0));
+    return max_of(dx, dy);
+  };
   S near[kMax];
   for (std::uint32_t from = 0, size = 4; from < m; from += size, size *= 4) {
     const std::uint32_t count = from + size < m ? size : m - from;
     for (std::uint32_t q = 0; q < count; ++q) {
       const std::uint32_t at = order[from + q];
-      near[at] = nearness(jc, pts, i, j, sample(at), b[q]);
+      if (!jc.biarc(sample(at), b[q])) {
+        near[at] = S(1e300);
+      } else {
+        const S off = max_of(outside(b[q].first.b),
+                             max_of(outside(b[q].first.at(S(0.5))), outside(b[q].second.at(S(0.5)))));
+        near[at] = off > widest ? off + widest : nearness(jc, pts, i, j, sample(at), b[q]);
+      }
       alive[q] = near[at] <= widest;
     }
     if (check.filter(b, alive, count) == 0) continue;
