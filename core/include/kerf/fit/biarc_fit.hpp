@@ -35,8 +35,11 @@ struct BiarcPiece {
   S error{};                // largest sampled distance from the polyline p_first..p_last
 };
 
+// The most joints tried per pair (their biarcs are kept on the stack).
+inline constexpr std::uint32_t kBiarcMaxSamples = 64;
+
 struct BiarcOptions {
-  std::uint32_t samples = 64;  // joints tried per pair on J (1..256), then the finer search
+  std::uint32_t samples = 64;  // joints tried per pair on J (1..64), then the finer search
   // Test every pair (exact over the search). Otherwise a start stops after
   // `slack` + (its longest valid reach) failed ends in a row: far ends of
   // a smooth path fail, and testing them all costs O(n^2) pair tests of

@@ -74,7 +74,7 @@ bool Pair<S>::any(std::uint32_t i, std::uint32_t j, S& found) const {
   // first), tested in growing batches: a valid pair usually succeeds in
   // the first, and within a batch fit/biarc_valid.hpp builds each cell's
   // chains once for all.
-  constexpr std::uint32_t kMax = 256;
+  constexpr std::uint32_t kMax = kBiarcMaxSamples;  // (on the stack: ~7 KiB for doubles)
   Biarc<S> b[kMax];
   bool alive[kMax];
   std::uint32_t order[kMax];
@@ -203,12 +203,22 @@ S score(const Pair<S>& pr, Span<const Vec2<S>> pts, std::uint32_t i, std::uint32
   const BiarcCheck<S> check(pr.region, i, j);
   const JointCircle<S> jc(pts[i], pr.tangents[i], pts[j], pr.tangents[j]);
   if (!(s > S(0) && s < S(2)) || !jc.biarc(s, b) || !check.valid(b)) return S(1e300);
-  return biarc_deviation(pts, i, j, b);
+  // An arc of a radius far below the band's width is a corner to the
+  // machine (and may be shorter than its resolution): where the band lets
+  // the joint move, radii below the width cost more than any deviation.
+  S tight = S(0);
+  const ArcPart<S>* arcs[2] = {&b.first, &b.second};
+  for (const ArcPart<S>* arc : arcs) {
+    const S k = Scalar<S>::abs(arc->curvature());
+    if (!arc->empty() && k * pr.widest > S(1)) tight = max_of(tight, pr.widest - S(1) / k);
+  }
+  return biarc_deviation(pts, i, j, b) + S(1000) * tight;
 }
 
-// The joint of p_i -> p_j (known valid at s0) with the smallest deviation:
-// the best of the samples, then a golden-section search between its
-// neighbours (an invalid joint scores as infinite).
+// The joint of p_i -> p_j (known valid at s0) with the smallest deviation
+// (arcs tighter than the band's width penalised, see score()): the best of
+// the samples, then a golden-section search between its neighbours (an
+// invalid joint scores as infinite).
 template <class S>
 Biarc<S> best_joint(const Pair<S>& pr, Span<const Vec2<S>> pts, std::uint32_t i, std::uint32_t j,
                     S s0) {
@@ -275,7 +285,8 @@ Result<Fit<S>> fit_biarc_min_count(Span<const Vec2<S>> pts, Span<const Vec2<S>> 
   std::size_t where = 0;
   if (const Status s = validate_points(pts, where); s != Status::ok) return s;
   const std::size_t n = pts.size();
-  if (tangents.size() != n || widths.size() != n || opts.samples == 0 || opts.samples > 256)
+  if (tangents.size() != n || widths.size() != n || opts.samples == 0 ||
+      opts.samples > kBiarcMaxSamples)
     return Status::invalid_argument;
   S widest = S(0);
   for (std::size_t k = 0; k < n; ++k) {
