@@ -62,14 +62,23 @@ CLI::App* add_fit_command(CLI::App& app, FitOptions& opts) {
                   "band: the band's width right of the path (>= 0; default --tol)")
       ->type_name("B");
   fit->add_option("--criterion", opts.criterion,
-                  "vertex (points within tol of their arc) or band (the whole arc within the "
-                  "tolerance band of the polyline)")
+                  "vertex (points within tol of their arc), band (the whole arc within the "
+                  "tolerance band of the polyline) or biarc (the fewest tangent-continuous "
+                  "biarcs within the band)")
       ->type_name("NAME")
       ->capture_default_str();
   fit->add_option("--method", opts.method, "optimal, esgi-max or esgi-mean")
       ->type_name("NAME")
       ->capture_default_str();
   fit->add_option("--format", opts.format, "Output format: esgi or json")
+      ->type_name("NAME")
+      ->capture_default_str();
+  fit->add_option("--tangents", opts.tangents,
+                  "biarc: given (from the file's tangent columns) or estimate (circle through "
+                  "each point and its neighbours); default: given when the file has them")
+      ->type_name("given|estimate");
+  fit->add_option("--tangent-format", opts.tangent_format,
+                  "biarc: vector (x y tx ty) or angle (x y degrees)")
       ->type_name("NAME")
       ->capture_default_str();
   fit->add_option("file", opts.file, "Point file, one \"x y\" per line; - for stdin")
@@ -86,7 +95,7 @@ int check_options(const FitOptions& opts, bool band, fit::Method& method, std::u
   std::string error;
   if (!band && opts.criterion != "vertex")
     return usage_error("--criterion: unknown criterion " + quoted(opts.criterion) +
-                       " (expected vertex or band)");
+                       " (expected vertex, band or biarc)");
   if (!parse_method(opts.method, method))
     return usage_error("--method: unknown method " + quoted(opts.method) +
                        " (expected optimal, esgi-max or esgi-mean)");
@@ -117,6 +126,9 @@ int check_options(const FitOptions& opts, bool band, fit::Method& method, std::u
 }  // namespace
 
 int run_fit(const FitOptions& opts) {
+  if (opts.criterion == "biarc") return run_fit_biarc(opts);
+  if (!opts.tangents.empty() || opts.tangent_format != "vector")
+    return usage_error("--tangents and --tangent-format need --criterion biarc");
   const bool band = opts.criterion == "band";
   const bool by_pieces = !opts.pieces.empty();
   fit::Method method{};

@@ -25,8 +25,14 @@ struct FitOptions {
   std::string criterion = "vertex";
   std::string method = "optimal";
   std::string format = "esgi";
+  std::string tangents;                  // biarc: given | estimate (default: given when
+                                         // the file has them)
+  std::string tangent_format = "vector";  // biarc: vector (x y tx ty) | angle (x y deg)
   std::string file;
 };
+
+// `kerf fit --criterion biarc` (cli/fit_biarc_command.cpp).
+int run_fit_biarc(const FitOptions& opts);
 
 // Adds the `fit` subcommand to app, storing into opts.
 CLI::App* add_fit_command(CLI::App& app, FitOptions& opts);

@@ -1,5 +1,6 @@
 #include "cli/fit_job.hpp"
 
+#include "cli/biarc_job.hpp"
 #include "cli/check_fit.hpp"
 
 #include <cstdio>
@@ -10,14 +11,22 @@
 namespace kerf::cli {
 
 bool criterion_supported(const std::string& criterion) {
-  return criterion == "vertex" || criterion == "band";
+  return criterion == "vertex" || criterion == "band" || criterion == "biarc";
 }
 
-bool read_job(const std::string& file, const std::string& criterion, io::PointFile& out) {
-  out = io::read_points(file);
+bool read_job(const std::string& file, const std::string& criterion, io::PointFile& out,
+              const JobColumns& columns) {
+  out = io::read_points(file, columns.angles);
   if (out.ok && !out.tols.empty() && criterion != "band") {
     out.line = out.point_lines.empty() ? 0 : out.point_lines[0];
     out.reason = "a third column (per-point tol) needs --criterion band";
+    out.ok = false;
+  }
+  if (out.ok && !out.tangents.empty() && (criterion != "biarc" || !columns.tangents)) {
+    out.line = out.point_lines.empty() ? 0 : out.point_lines[0];
+    out.reason = criterion != "biarc"
+                     ? "tangent columns (x y tx ty) need --criterion biarc"
+                     : "tangent columns are read by kerf fit only (this command estimates them)";
     out.ok = false;
   }
   if (!out.ok) std::fprintf(stderr, "%s\n", io::describe_error(out).c_str());
@@ -29,8 +38,22 @@ bool fit_job(const std::vector<Vec2<double>>& pts, const std::vector<double>& to
              std::string& error, Status& status) {
   status = Status::invalid_argument;
   if (!criterion_supported(criterion)) {
-    error = "--criterion: unknown criterion \"" + criterion + "\" (expected vertex or band)";
+    error = "--criterion: unknown criterion \"" + criterion + "\" (expected vertex, band or biarc)";
     return false;
+  }
+  if (criterion == "biarc") {
+    if (!tols.empty()) {
+      error = "a third column (per-point tol) needs --criterion band";
+      return false;
+    }
+    std::vector<fit::BiarcPiece<double>> biarcs;
+    fit::Fit<double> fit{};
+    if (!fit_biarc_path(pts, {}, tol, biarcs, fit, error, status)) return false;
+    // Each biarc runs as its two arcs; both keep the biarc's point range.
+    out.clear();
+    for (const fit::BiarcPiece<double>& b : biarcs)
+      for (const Segment<double>& g : b.arc) out.push_back({b.first, b.last, g, b.error});
+    return true;
   }
   const bool band = criterion == "band";
   if (!band && !tols.empty()) {

@@ -1,7 +1,8 @@
 // Fitting a job's points with a named criterion, for the commands that run
 // the result (`kerf plan`, `kerf sim`): "vertex" (the minimal vertex fit) or
 // "band" (the whole cut inside the band: --tol on both sides, or the point
-// file's per-point tol column).
+// file's per-point tol column) or "biarc" (the fewest G1 biarcs inside the
+// band of --tol, on estimated tangents; cli/biarc_job.hpp).
 #pragma once
 
 #include <string>
@@ -16,10 +17,18 @@ namespace kerf::cli {
 // The criteria fit_job knows. Checked before the input is read.
 bool criterion_supported(const std::string& criterion);
 
+// Which extra columns the caller reads: tangents (x y tx ty, or x y angle
+// with `angles`) only `kerf fit --criterion biarc` does.
+struct JobColumns {
+  bool tangents = false;
+  bool angles = false;
+};
+
 // Reads a job's point file ("-": stdin). When it cannot be used (unreadable,
-// bad points, or a per-point tol column the criterion cannot use) prints
-// "FILE:LINE: reason" on stderr and returns false.
-bool read_job(const std::string& file, const std::string& criterion, io::PointFile& out);
+// bad points, or a per-point tol or tangent column the criterion or command
+// cannot use) prints "FILE:LINE: reason" on stderr and returns false.
+bool read_job(const std::string& file, const std::string& criterion, io::PointFile& out,
+              const JobColumns& columns = {});
 
 // Fits pts (tols: one per point, or empty) at tol. On failure returns false
 // with `error` (no "kerf: " prefix) and `status` set.

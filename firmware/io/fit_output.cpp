@@ -81,11 +81,24 @@ std::string format_esgi(const FitReport& r) {
   out += format_number(r.fit.tol);  // as given, however small
   out += "\n# max error ";
   out += format_number(r.fit.max_error, z);
+  if (r.biarcs) {
+    out += "\n# Number of biarcs is ";
+    out += std::to_string(r.fit.pieces / 2);
+  }
   out += "\nNumber of arcs is Narc = ";
   out += std::to_string(r.fit.pieces);
   out += '\n';
   for (std::uint32_t k = 0; k < r.fit.pieces; ++k) {
     const Segment<double>& s = r.pieces[k].segment;
+    if (r.biarcs && k % 2 == 0) {
+      out += "# biarc ";
+      out += std::to_string(k / 2 + 1);
+      out += ": points ";
+      out += std::to_string(r.pieces[k].first);
+      out += "..";
+      out += std::to_string(r.pieces[k].last);
+      out += '\n';
+    }
     out += s.is_arc() ? "A " : "L ";
     add_point(out, s.start, z);
     out += ' ';
@@ -115,6 +128,11 @@ std::string format_json(const FitReport& r) {
   add_key(out, "max_error");
   add_json_number(out, r.fit.max_error, z);
   out += ",\n  ";
+  if (r.biarcs) {
+    add_key(out, "biarcs");
+    out += std::to_string(r.fit.pieces / 2);
+    out += ",\n  ";
+  }
   add_key(out, "pieces");
   out += '[';
   for (std::uint32_t k = 0; k < r.fit.pieces; ++k) {
@@ -130,6 +148,14 @@ std::string format_json(const FitReport& r) {
     add_key(out, "last");
     out += std::to_string(p.last);
     out += ", ";
+    if (r.biarcs) {
+      add_key(out, "biarc");
+      out += std::to_string(k / 2);
+      out += ", ";
+      add_key(out, "part");
+      out += k % 2 == 0 ? "1" : "2";
+      out += ", ";
+    }
     add_key(out, "start");
     add_json_point(out, s.start, z);
     out += ", ";

@@ -16,6 +16,9 @@ struct FitReport {
   fit::Fit<double> fit{};
   Span<const fit::Piece<double>> pieces{};  // fit.pieces of them
   double zero_below = 0.0;  // numbers smaller than this print as 0: see resolution()
+  // Biarcs: pieces 2k and 2k+1 are biarc k's two arcs (fit.pieces counts the
+  // arcs, biarcs = fit.pieces / 2).
+  bool biarcs = false;
 };
 
 // Every number is printed with this many significant digits: enough to
@@ -32,10 +35,13 @@ double resolution(Span<const Vec2<double>> pts);
 // "# ..." comment lines, "Number of arcs is Narc = N", then one line per piece:
 //   A (x1,y1) (x2,y2) (xc,yc) E     an arc, E = 1 counter-clockwise, -1 clockwise
 //   L (x1,y1) (x2,y2)               a line
+// Biarcs: "# Number of biarcs is K", and "# biarc k: points i..j" before each
+// biarc's two lines (the first ends where the second starts: the joint).
 std::string format_esgi(const FitReport& r);
 
 // {"criterion", "method", "tol", "max_error", "pieces": [{"type", "first",
-// "last", "start", "end", "centre" and "dir" (arcs only), "error"}]}
+// "last", "start", "end", "centre" and "dir" (arcs only), "error"}]}; with
+// biarcs also "biarcs": K and per piece "biarc": k (0-based) and "part": 1|2.
 std::string format_json(const FitReport& r);
 
 // One number as both formats print it: kDigits significant digits ("%.10g"),

@@ -77,6 +77,7 @@ PointFile fail(PointFile f, std::size_t line, std::string reason) {
   f.points.clear();
   f.point_lines.clear();
   f.tols.clear();
+  f.tangents.clear();
   f.path_begin.clear();
   return f;
 }
@@ -91,11 +92,11 @@ PointFile fail_short_path(PointFile f) {
 
 }  // namespace
 
-PointFile parse_points(std::string_view text, std::string display_name) {
+PointFile parse_points(std::string_view text, std::string display_name, bool third_is_angle) {
   PointFile f;
   f.file = std::move(display_name);
   std::vector<std::string_view> fields;
-  std::size_t columns = 0;       // 2 or 3, fixed by the first point's line
+  std::size_t columns = 0;       // 2, 3 or 4, fixed by the first point's line
   std::size_t columns_line = 0;
   bool path_break = false;       // a blank line since the last point
   std::size_t line_no = 0;
@@ -114,9 +115,9 @@ PointFile parse_points(std::string_view text, std::string display_name) {
       if (hash == std::string_view::npos && !f.points.empty()) path_break = true;
       continue;
     }
-    if (fields.size() != 2 && fields.size() != 3)
+    if (fields.size() < 2 || fields.size() > 4)
       return fail(std::move(f), line_no,
-                  "expected 2 or 3 columns, got " + std::to_string(fields.size()));
+                  "expected 2, 3 or 4 columns, got " + std::to_string(fields.size()));
     if (columns == 0) {
       columns = fields.size();
       columns_line = line_no;
@@ -130,9 +131,25 @@ PointFile parse_points(std::string_view text, std::string display_name) {
     if (!parse_number(fields[0], p.x, reason) || !parse_number(fields[1], p.y, reason))
       return fail(std::move(f), line_no, reason);
     double tol = 0.0;
-    if (columns == 3) {
+    Vec2<double> tangent{};
+    const bool has_tol = columns == 3 && !third_is_angle;
+    const bool has_tangent = columns == 4 || (columns == 3 && third_is_angle);
+    if (has_tol) {
       if (!parse_number(fields[2], tol, reason)) return fail(std::move(f), line_no, "tol: " + reason);
       if (!(tol > 0.0)) return fail(std::move(f), line_no, "tol must be > 0, got " + quote(fields[2]));
+    } else if (columns == 3) {
+      double deg = 0.0;
+      if (!parse_number(fields[2], deg, reason))
+        return fail(std::move(f), line_no, "tangent angle: " + reason);
+      const double rad = std::fmod(deg, 360.0) * (3.14159265358979323846 / 180.0);
+      tangent = {std::cos(rad), std::sin(rad)};
+    } else if (columns == 4) {
+      if (!parse_number(fields[2], tangent.x, reason) || !parse_number(fields[3], tangent.y, reason))
+        return fail(std::move(f), line_no, "tangent: " + reason);
+      const double len = std::hypot(tangent.x, tangent.y);
+      if (!(len > 0.0) || !std::isfinite(len))
+        return fail(std::move(f), line_no, "tangent must not be zero");
+      tangent = tangent * (1.0 / len);
     }
     if (path_break) {
       path_break = false;
@@ -140,14 +157,15 @@ PointFile parse_points(std::string_view text, std::string display_name) {
       f.path_begin.push_back(f.points.size());
     } else if (!f.points.empty() && f.points.back() == p) {
       ++f.duplicates_dropped;
-      if (columns == 3) f.tols.back() = std::fmin(f.tols.back(), tol);  // the stricter one
-      continue;
+      if (has_tol) f.tols.back() = std::fmin(f.tols.back(), tol);  // the stricter one
+      continue;  // (a duplicate keeps the first one's tangent)
     }
     if (f.points.size() >= kMaxPoints) return fail(std::move(f), line_no, "too many points");
     if (f.points.empty()) f.path_begin.push_back(0);
     f.points.push_back(p);
     f.point_lines.push_back(line_no);
-    if (columns == 3) f.tols.push_back(tol);
+    if (has_tol) f.tols.push_back(tol);
+    if (has_tangent) f.tangents.push_back(tangent);
   }
   if (f.points.size() < 2) {
     // (the reason first: arguments are evaluated in no fixed order, and fail() empties f)
@@ -159,7 +177,7 @@ PointFile parse_points(std::string_view text, std::string display_name) {
   return f;
 }
 
-PointFile read_points(const std::string& path) {
+PointFile read_points(const std::string& path, bool third_is_angle) {
   const bool use_stdin = path == "-";
   std::string name = use_stdin ? "<stdin>" : path;
   std::FILE* in = use_stdin ? stdin : std::fopen(path.c_str(), "rb");
@@ -181,7 +199,7 @@ PointFile read_points(const std::string& path) {
     f.file = std::move(name);
     return fail(std::move(f), 0, std::string("cannot read: ") + std::strerror(err));
   }
-  return parse_points(text, std::move(name));
+  return parse_points(text, std::move(name), third_is_angle);
 }
 
 std::string describe_error(const PointFile& f) {

@@ -2,7 +2,10 @@
 //
 // One "x y" pair per line, the two numbers separated by spaces, tabs or one
 // comma (with optional blanks around it). A third column, on every line or
-// none, is that point's own tolerance (> 0), for the band criterion. '#' starts a comment that runs to
+// none, is that point's own tolerance (> 0), for the band criterion; or,
+// when the caller asks for angles, the point's tangent direction in degrees
+// (the biarc criterion's `--tangent-format angle`). Four columns `x y tx ty`
+// give the tangent as a vector (not zero; it is normalised). '#' starts a comment that runs to
 // the end of the line; CRLF line ends are accepted.
 //
 // A job may hold several cut paths: one or more blank lines (empty or only
@@ -38,15 +41,19 @@ struct PointFile {
   std::vector<Vec2<double>> points;       // after dropping consecutive duplicates
   std::vector<std::size_t> point_lines;   // the source line of each kept point
   std::vector<double> tols;               // each kept point's tol: empty unless 3 columns
+  std::vector<Vec2<double>> tangents;     // each kept point's unit tangent: empty unless
+                                          // 4 columns, or 3 read as angles
   std::vector<std::size_t> path_begin;    // index in points of each path's first point
   std::size_t duplicates_dropped = 0;
 };
 
-// Reads `path`, or stdin when path is "-".
-PointFile read_points(const std::string& path);
+// Reads `path`, or stdin when path is "-". third_is_angle: a third column is
+// a tangent angle in degrees, not a tol.
+PointFile read_points(const std::string& path, bool third_is_angle = false);
 
 // Parses the text of a point file; `display_name` only labels errors.
-PointFile parse_points(std::string_view text, std::string display_name);
+PointFile parse_points(std::string_view text, std::string display_name,
+                       bool third_is_angle = false);
 
 // "FILE:LINE: reason", or "FILE: reason" for an error about the whole file.
 std::string describe_error(const PointFile& f);

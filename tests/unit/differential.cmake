@@ -25,3 +25,13 @@ target_compile_definitions(kerf_band_tests PRIVATE
   KERF_TEST_DATA_DIR="${CMAKE_CURRENT_SOURCE_DIR}/../data")
 kerf_warnings(kerf_band_tests)
 gtest_discover_tests(kerf_band_tests DISCOVERY_MODE PRE_TEST)
+
+# The biarc fitter against its referee (biarc checker and twin) in tests/support.
+add_executable(kerf_biarc_tests
+  assert_handler.cpp
+  test_biarc_fit.cpp
+)
+target_link_libraries(kerf_biarc_tests PRIVATE kerf_io kerf_test_support GTest::gtest_main)
+target_include_directories(kerf_biarc_tests PRIVATE ${PROJECT_SOURCE_DIR}/tests/support)
+kerf_warnings(kerf_biarc_tests)
+gtest_discover_tests(kerf_biarc_tests DISCOVERY_MODE PRE_TEST)

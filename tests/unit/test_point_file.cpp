@@ -1,6 +1,7 @@
 // Point files with several cut paths: blank lines separate paths.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -102,6 +103,46 @@ TEST(PointFilePaths, WholeFileOfOnePointKeepsItsOldMessage) {
   const PointFile f = parse("5 5\n\n");
   ASSERT_FALSE(f.ok);
   EXPECT_EQ(kerf::io::describe_error(f), "job.txt: fewer than two distinct points (got 1)");
+}
+
+// Tangent columns, for the biarc criterion.
+TEST(PointFileTangents, FourColumnsAreUnitTangents) {
+  const PointFile f = parse("0 0 3 4\n1 0 0 2\n1 0 5 5\n2 1 -1 0\n");
+  ASSERT_TRUE(f.ok) << kerf::io::describe_error(f);
+  ASSERT_EQ(f.points.size(), 3u);  // the duplicate keeps the first tangent
+  ASSERT_EQ(f.tangents.size(), 3u);
+  EXPECT_TRUE(f.tols.empty());
+  EXPECT_NEAR(f.tangents[0].x, 0.6, 1e-15);
+  EXPECT_NEAR(f.tangents[0].y, 0.8, 1e-15);
+  EXPECT_EQ(f.tangents[1], (V{0, 1}));
+  EXPECT_EQ(f.tangents[2], (V{-1, 0}));
+}
+
+TEST(PointFileTangents, ThirdColumnAsAngleInDegrees) {
+  const PointFile f = parse_points("0 0 90\n1 1 -45\n2 0 360\n", "job.txt", true);
+  ASSERT_TRUE(f.ok) << kerf::io::describe_error(f);
+  ASSERT_EQ(f.tangents.size(), 3u);
+  EXPECT_TRUE(f.tols.empty());
+  EXPECT_NEAR(f.tangents[0].x, 0.0, 1e-15);
+  EXPECT_NEAR(f.tangents[0].y, 1.0, 1e-15);
+  EXPECT_NEAR(f.tangents[1].x, std::sqrt(0.5), 1e-15);
+  EXPECT_NEAR(f.tangents[1].y, -std::sqrt(0.5), 1e-15);
+  EXPECT_NEAR(f.tangents[2].x, 1.0, 1e-15);
+}
+
+TEST(PointFileTangents, BadTangentsAreRefusedWithTheirLine) {
+  PointFile f = parse("0 0 1 0\n1 0 0 0\n");
+  EXPECT_FALSE(f.ok);
+  EXPECT_EQ(kerf::io::describe_error(f), "job.txt:2: tangent must not be zero");
+  f = parse_points("0 0 abc\n1 0 0\n", "job.txt", true);
+  EXPECT_FALSE(f.ok);
+  EXPECT_EQ(f.line, 1u);
+  f = parse("0 0 1 0\n1 0\n");
+  EXPECT_FALSE(f.ok);
+  EXPECT_EQ(kerf::io::describe_error(f), "job.txt:2: expected 4 columns like line 1, got 2");
+  // Without the angle reading a third column is still a tol (> 0).
+  f = parse("0 0 -45\n1 1 -45\n");
+  EXPECT_FALSE(f.ok);
 }
 
 }  // namespace

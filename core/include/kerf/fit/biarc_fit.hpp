@@ -1,0 +1,75 @@
+// kerf's biarc fitter: the fewest G1-continuous biarcs from input point to
+// input point, each inside the tolerance region R (Drysdale, Rote, Sturm,
+// section 3). A biarc p_i -> p_j starts with the tangent t_i and ends with
+// t_j, so consecutive biarcs share their tangent at the input points used,
+// and the two arcs of a biarc share theirs at the joint: the cut has no
+// corner anywhere. Tangents are given or estimated (fit/tangent.hpp).
+//
+// Per pair: the valid joints on the joint circle J (fit/biarc.hpp) are
+// searched by sampling J at `samples` points, each sample tested exactly by
+// fit/biarc_valid.hpp. The fewest biarcs are a shortest path over the valid
+// pairs (breadth-first over the DAG, O(n^2) pair tests at most, O(n)
+// memory; see BiarcOptions::exact); each
+// biarc of the path then gets the joint that minimises its deviation from
+// the polyline, by golden-section refinement around the best valid sample.
+// Everything runs in caller-provided storage; see BiarcWorkspace.
+#pragma once
+
+#include <cstdint>
+
+#include "kerf/core/span.hpp"
+#include "kerf/core/status.hpp"
+#include "kerf/fit/band_region.hpp"
+#include "kerf/fit/biarc.hpp"
+#include "kerf/fit/fit.hpp"
+
+namespace kerf::fit {
+
+template <class S>
+struct BiarcPiece {
+  std::uint32_t first = 0;  // index of the start point
+  std::uint32_t last = 0;   // index of the end point
+  Segment<S> arc[2]{};      // p_first -> joint, joint -> p_last
+  Vec2<S> joint{};
+  Vec2<S> tangent[3]{};     // unit tangents at p_first, the joint, p_last
+  S error{};                // largest sampled distance from the polyline p_first..p_last
+};
+
+// The most joints tried per pair (their biarcs are kept on the stack).
+inline constexpr std::uint32_t kBiarcMaxSamples = 64;
+
+struct BiarcOptions {
+  std::uint32_t samples = 64;  // joints tried per pair on J (1..64), then the finer search
+  // Test every pair (exact over the search). Otherwise a start stops after
+  // `slack` + (its longest valid reach) failed ends in a row: far ends of
+  // a smooth path fail, and testing them all costs O(n^2) pair tests of
+  // O(span) each. The twin tests run exact; on the test curves both give
+  // the same counts.
+  bool exact = false;
+  std::uint32_t slack = 16;
+};
+
+constexpr std::size_t biarc_workspace_words(std::size_t n) { return 2 * n; }
+
+template <class S>
+struct BiarcWorkspace {
+  Span<std::uint32_t> words;        // >= biarc_workspace_words(n)
+  Span<BandVertex<S>> vertices;     // >= n: the region
+};
+
+// Fewest biarcs inside the region R of `widths` (one per point, both sides
+// > 0; fit/band_region.hpp), with unit tangents (one per point). Needs
+// out.size() >= the count (n - 1 suffices). fit.max_error is the largest
+// BiarcPiece::error, fit.tol the largest width.
+template <class S>
+Result<Fit<S>> fit_biarc_min_count(Span<const Vec2<S>> pts, Span<const Vec2<S>> tangents,
+                                   Span<const BandWidth<S>> widths,
+                                   BiarcOptions opts, BiarcWorkspace<S> ws,
+                                   Span<BiarcPiece<S>> out);
+
+// The largest sampled distance of biarc b (from p_i to p_j) from the
+// polyline p_i..p_j.
+template <class S>
+S biarc_deviation(Span<const Vec2<S>> pts, std::uint32_t i, std::uint32_t j, const Biarc<S>& b);
+
+}  // namespace kerf::fit

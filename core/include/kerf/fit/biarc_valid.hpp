@@ -1,0 +1,140 @@
+// Is a biarc from p_i to p_j valid in the region R (Definition 3.2 of
+// Drysdale, Rote, Sturm)? Both arcs inside R, gates g_i and g_j touched
+// only at p_i and p_j, the tangents through g_i and g_j forwards (the
+// paper's assumption (C')). Intermediate gates may be crossed any number of
+// times: section 3.3 relaxes the gate rule for biarcs.
+//
+// The test. Between g_i and g_j, R is the polygon bounded by g_i, the left
+// chains of cells i..j-1, g_j and the right chains (fit/band_region.hpp).
+// The biarc starts at p_i on its boundary, leaving forwards into it, and ends
+// at p_j; it lies inside iff it meets the boundary nowhere else. So each
+// arc is intersected with every boundary segment (a quadratic along the
+// segment, with the centre-free circle equation of fit/biarc.hpp), ignoring
+// only the touch at p_i (first arc) and at p_j (second arc). A touch of the
+// boundary counts as leaving: a joint or an arc grazing R's edge is refused,
+// which loses only boundary cases of measure zero. Cells are visited middle
+// first (bit-reversed order), so a biarc that strays fails after a few.
+//
+// The region must have a positive width on both sides of p_i and p_j (the
+// CLI's biarc criterion takes a symmetric --tol), so that the boundary
+// passes nowhere near the ends except through the gates.
+#pragma once
+
+#include <cstdint>
+
+#include "kerf/fit/band_region.hpp"
+#include "kerf/fit/biarc.hpp"
+
+namespace kerf::fit {
+
+template <class S>
+class BiarcCheck {
+ public:
+  BiarcCheck(const BandRegion<S>& r, std::uint32_t i, std::uint32_t j) : r_(r), i_(i), j_(j) {
+    scale_ = (r.point(j) - r.point(i)).norm();
+    const BandVertex<S>& vi = r.vertex(i);
+    const BandVertex<S>& vj = r.vertex(j);
+    scale_ = max_of(scale_, max_of(max_of(vi.gate_left, vi.gate_right), max_of(vj.gate_left, vj.gate_right)));
+  }
+
+  // The tangents cross their gates forwards and no barrier lies between.
+  bool ends(Vec2<S> ti, Vec2<S> tj) const {
+    for (std::uint32_t k = i_ + 1; k < j_; ++k)
+      if (r_.vertex(k).barrier) return false;
+    return ti.dot(r_.forward(i_, false)) > S(0) && tj.dot(r_.forward(j_, true)) > S(0);
+  }
+
+  bool valid(const Biarc<S>& b) const {
+    bool alive = true;
+    return filter(&b, &alive, 1) == 1;
+  }
+
+  // Many biarcs of the pair at once: clears alive[q] for each b[q] that is
+  // not valid and returns how many stay. Each cell's chains are built once
+  // for all of them, and the test stops when none is left.
+  std::uint32_t filter(const Biarc<S>* b, bool* alive, std::uint32_t m) const {
+    std::uint32_t left = 0;
+    for (std::uint32_t q = 0; q < m; ++q) {
+      if (alive[q] && (crosses_gate(b[q], i_) || crosses_gate(b[q], j_))) alive[q] = false;
+      if (alive[q]) ++left;
+    }
+    const std::uint32_t len = j_ - i_;
+    std::uint32_t bits = 0;
+    while ((1u << bits) < len) ++bits;
+    BandChain<S> c;
+    for (std::uint32_t t = 0; t < (1u << bits) && left > 0; ++t) {
+      std::uint32_t rev = 0;
+      for (std::uint32_t q = 0; q < bits; ++q) rev |= ((t >> q) & 1u) << (bits - 1 - q);
+      if (rev >= len) continue;
+      for (int side = -1; side <= 1 && left > 0; side += 2) {
+        r_.chain(i_ + rev, side, c);
+        for (std::uint32_t q = 0; q < m; ++q) {
+          if (!alive[q]) continue;
+          for (int e = 0; e + 1 < c.size; ++e) {
+            if (meets(b[q], c.pt[e], c.pt[e + 1])) {
+              alive[q] = false;
+              --left;
+              break;
+            }
+          }
+        }
+      }
+    }
+    return left;
+  }
+
+ private:
+  bool crosses_gate(const Biarc<S>& b, std::uint32_t k) const {
+    return meets(b, r_.gate_end(k, -1), r_.gate_end(k, 1));
+  }
+
+  bool meets(const Biarc<S>& b, Vec2<S> q1, Vec2<S> q2) const {
+    return hits(b.first, r_.point(i_), q1, q2) || hits(b.second, r_.point(j_), q1, q2);
+  }
+
+  // Does arc meet the segment q1 q2 anywhere but at `skip`?
+  bool hits(const ArcPart<S>& arc, Vec2<S> skip, Vec2<S> q1, Vec2<S> q2) const {
+    if (arc.empty()) return false;
+    const S k = arc.curvature();
+    const Vec2<S> d = q2 - q1;
+    const Vec2<S> e = q1 - arc.a;
+    // kappa |e + s d|^2 - 2 t x (e + s d) = qa s^2 + qb s + qc
+    const S qa = k * d.norm2();
+    const S qb = S(2) * (k * e.dot(d) - arc.t.cross(d));
+    const S qc = k * e.norm2() - S(2) * arc.t.cross(e);
+    S roots[2];
+    int m = 0;
+    if (qa == S(0)) {
+      if (qb == S(0)) return false;
+      roots[m++] = -qc / qb;
+    } else {
+      const S disc = qb * qb - S(4) * qa * qc;
+      if (disc < S(0)) return false;
+      const S sq = Scalar<S>::sqrt(disc);
+      const S q = -(qb + (qb < S(0) ? -sq : sq)) / S(2);
+      if (q == S(0)) {
+        roots[m++] = S(0);
+      } else {
+        roots[m++] = q / qa;
+        roots[m++] = qc / q;
+      }
+    }
+    const S slack = S(1e-12);
+    const S end = arc.position(arc.b);
+    for (int t = 0; t < m; ++t) {
+      if (!(roots[t] >= -slack && roots[t] <= S(1) + slack)) continue;
+      const Vec2<S> x = q1 + d * roots[t];
+      if ((x - skip).norm() <= scale_ * S(1e-9)) continue;
+      const S pos = arc.position(x);
+      if (pos >= S(0) - slack && pos <= end + slack * (S(1) + Scalar<S>::abs(end))) return true;
+    }
+    return false;
+  }
+
+  const BandRegion<S>& r_;
+  std::uint32_t i_;
+  std::uint32_t j_;
+  S scale_{};
+};
+
+}  // namespace kerf::fit

@@ -1,0 +1,31 @@
+// The biarc criterion for the commands (`kerf fit --criterion biarc`, and
+// `kerf plan` / `kerf sim` through fit_job): core's fewest G1 biarcs
+// (kerf/fit/biarc_fit.hpp) within a symmetric --tol, on given or estimated
+// tangents, each biarc checked before it is used.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "kerf/core/status.hpp"
+#include "kerf/fit/biarc_fit.hpp"
+
+namespace kerf::cli {
+
+// Fits one path. tangents: one unit vector per point, or empty to estimate
+// them (fit/tangent.hpp). On failure returns false with `error` (no "kerf: "
+// prefix) and `status` set.
+bool fit_biarc_path(const std::vector<Vec2<double>>& pts, const std::vector<Vec2<double>>& tangents,
+                    double tol, std::vector<fit::BiarcPiece<double>>& out, fit::Fit<double>& fit,
+                    std::string& error, Status& status);
+
+// What a fitted path must satisfy (a check of the output, not a proof): each
+// biarc starts on p_first with the point's tangent, its arcs meet at the
+// joint with one tangent (1e-9 rad), it ends on p_last with that point's
+// tangent, and every point p_first..p_last lies within tol of the biarc.
+// Empty when fine, else what is wrong.
+std::string check_biarcs(const std::vector<Vec2<double>>& pts,
+                         const std::vector<Vec2<double>>& tangents, double tol,
+                         const std::vector<fit::BiarcPiece<double>>& pieces);
+
+}  // namespace kerf::cli
