@@ -58,7 +58,7 @@ int run_plan(const PlanOptions& opts) {
   if (!parse_length("--tol", opts.tol, false, tol, error)) return usage_error(error);
   if (!criterion_supported(opts.criterion))
     return usage_error("--criterion: unknown criterion \"" + opts.criterion +
-                       "\" (expected vertex or band)");
+                       "\" (expected vertex, band or biarc)");
   if (!parse_length("--feed", opts.feed, false, feed, error) ||
       !parse_length("--period", opts.period, false, period, error) ||
       !parse_length("--accel", opts.accel, false, accel, error) ||

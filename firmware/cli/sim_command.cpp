@@ -136,7 +136,7 @@ int run_sim(const SimOptions& given) {
                        ": only with --link can");
   const std::string criterion = opts.criterion.empty() ? cfg.fit.criterion : opts.criterion;
   if (!criterion_supported(criterion))
-    return usage_error("--criterion: unknown criterion " + quoted(criterion) + " (expected vertex or band)");
+    return usage_error("--criterion: unknown criterion " + quoted(criterion) + " (expected vertex, band or biarc)");
   double tol = cfg.fit.tol, feed = cfg.cut.feed, speed = 0.0, link_timeout = cfg.link.timeout;
   if ((!opts.tol.empty() && !parse_length("--tol", opts.tol, false, tol, error)) ||
       (!opts.feed.empty() && !parse_length("--feed", opts.feed, false, feed, error)) ||

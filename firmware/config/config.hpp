@@ -43,7 +43,7 @@ struct Link {
 };
 
 struct Fit {
-  std::string criterion = "band";  // vertex | band
+  std::string criterion = "band";  // vertex | band | biarc
   double tol = 0.025;              // mm, > 0
 };
 

@@ -218,10 +218,10 @@ const char* to_string(Link::Kind k) {
 void read_fit(TableReader& r, Fit& fit) {
   std::string criterion;
   if (r.string("criterion", criterion)) {
-    if (criterion == "vertex" || criterion == "band")
+    if (criterion == "vertex" || criterion == "band" || criterion == "biarc")
       fit.criterion = criterion;
     else
-      r.problem("criterion", "unknown criterion " + quote(criterion) + " (expected vertex or band)");
+      r.problem("criterion", "unknown criterion " + quote(criterion) + " (expected vertex, band or biarc)");
   }
   r.positive("tol", fit.tol);
   r.finish();

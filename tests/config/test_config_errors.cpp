@@ -121,8 +121,8 @@ const BadCase kCases[] = {
      "kerf.toml:5: gpio.limit[0].actve_low: unknown key"},
 
     // [fit]
-    {"fit_criterion_unknown", TCP "[fit]\ncriterion = \"biarc\"\n",
-     "kerf.toml:4: fit.criterion: unknown criterion \"biarc\" (expected vertex or band)"},
+    {"fit_criterion_unknown", TCP "[fit]\ncriterion = \"spline\"\n",
+     "kerf.toml:4: fit.criterion: unknown criterion \"spline\" (expected vertex, band or biarc)"},
     {"fit_tol_zero", TCP "[fit]\ntol = 0\n", "kerf.toml:4: fit.tol: must be > 0, got 0"},
     {"fit_tol_inf", TCP "[fit]\ntol = inf\n", "kerf.toml:4: fit.tol: must be a finite number, got inf"},
 
