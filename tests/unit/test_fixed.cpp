@@ -142,4 +142,32 @@ TEST(Fixed, NormaliserBringsValuesIntoHalfToOne) {
   }
 }
 
+// The portable 32-bit-limb routines (what Cortex-M runs) against the host's
+// 128-bit arithmetic, which the host build uses for speed.
+TEST(FixedPortable, LimbRoutinesMatchTheHostsWideArithmetic) {
+  namespace fd = kerf::fixed_detail;
+  using U = fd::Wide;
+  std::mt19937_64 rng(17);
+  for (int k = 0; k < 200000; ++k) {
+    const std::uint64_t a = rng() >> (rng() % 64), b = rng() >> (rng() % 64);
+    const fd::U128 p = fd::mul_64x64(a, b);
+    const U w = static_cast<U>(a) * b;
+    ASSERT_EQ(p.hi, static_cast<std::uint64_t>(w >> 64));
+    ASSERT_EQ(p.lo, static_cast<std::uint64_t>(w));
+    if (b != 0) {
+      std::uint64_t quot = 0;
+      const U n = static_cast<U>(a) << 32;
+      const bool fits = fd::div_128_64({a >> 32, a << 32}, b, quot);
+      ASSERT_EQ(fits, (n / b) >> 64 == 0);
+      if (fits) {
+        ASSERT_EQ(quot, static_cast<std::uint64_t>(n / b));
+      }
+    }
+    const std::uint64_t r = a >> 1;  // raw values are non-negative int64
+    ASSERT_EQ(fd::isqrt_128({r >> 32, r << 32}), fd::isqrt_newton(r)) << r;
+  }
+  EXPECT_EQ(fd::isqrt_128({0, 0}), 0u);
+  EXPECT_EQ(fd::isqrt_newton(1), 65536u);
+}
+
 }  // namespace
