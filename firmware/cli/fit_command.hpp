@@ -25,6 +25,7 @@ struct FitOptions {
   std::string criterion = "vertex";
   std::string method = "optimal";
   std::string format = "esgi";
+  std::string numeric = "double";  // vertex criterion: double or fixed (kerf::Fixed)
   std::string file;
 };
 
