@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "kerf/geom/circle.hpp"
@@ -107,6 +108,9 @@ TYPED_TEST(TypedCore, VertexFitCountsMatchDoubleAndVerifyInDouble) {
   using S = TypeParam;
   for (const Method m : {Method::optimal, Method::esgi_max, Method::esgi_mean}) {
     for (const FitCase& c : fit_cases) {
+      // The ESGI rules try every inner point of every pair: on the parabola
+      // only, so the suite stays quick under the sanitizers.
+      if (m != Method::optimal && std::string(c.curve) != "parabola.txt") continue;
       const std::vector<VD> pd = kerf::test::load_curve(c.curve);
       ASSERT_GT(pd.size(), 2u) << c.curve;
       kerf::test::FitBuffers<double> ref(pd.size());
