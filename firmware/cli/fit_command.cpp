@@ -14,6 +14,7 @@
 
 #include "cli/band_widths.hpp"
 #include "cli/check_fit.hpp"
+#include "cli/fit_fixed.hpp"
 #include "cli/fit_job.hpp"
 #include "cli/options.hpp"
 #include "io/band_storage.hpp"
@@ -81,6 +82,11 @@ CLI::App* add_fit_command(CLI::App& app, FitOptions& opts) {
                   "biarc: vector (x y tx ty) or angle (x y degrees)")
       ->type_name("NAME")
       ->capture_default_str();
+  fit->add_option("--numeric", opts.numeric,
+                  "Scalar type of the fit: double, or fixed (Q31.32, what a core without an FPU "
+                  "runs; vertex criterion only)")
+      ->type_name("TYPE")
+      ->capture_default_str();
   fit->add_option("file", opts.file, "Point file, one \"x y\" per line; - for stdin")
       ->type_name("FILE|-")
       ->required();
@@ -104,6 +110,12 @@ int check_options(const FitOptions& opts, bool band, fit::Method& method, std::u
                        " is a vertex-criterion rule; --criterion band is always optimal");
   if (!band && (!opts.tol_left.empty() || !opts.tol_right.empty()))
     return usage_error("--tol-left and --tol-right need --criterion band");
+  if (opts.numeric != "double" && opts.numeric != "fixed")
+    return usage_error("--numeric: unknown type " + quoted(opts.numeric) +
+                       " (expected double or fixed)");
+  if (band && opts.numeric == "fixed")
+    return usage_error("--numeric fixed: the band fitter runs in double only (vertex criterion "
+                       "has fixed point)");
   if (opts.format != "esgi" && opts.format != "json")
     return usage_error("--format: unknown format " + quoted(opts.format) +
                        " (expected esgi or json)");
@@ -126,7 +138,12 @@ int check_options(const FitOptions& opts, bool band, fit::Method& method, std::u
 }  // namespace
 
 int run_fit(const FitOptions& opts) {
-  if (opts.criterion == "biarc") return run_fit_biarc(opts);
+  if (opts.criterion == "biarc") {
+    if (opts.numeric != "double")
+      return usage_error("--numeric " + opts.numeric + ": the biarc fitter runs in double only (vertex criterion "
+                         "has fixed point)");
+    return run_fit_biarc(opts);
+  }
   if (!opts.tangents.empty() || opts.tangent_format != "vector")
     return usage_error("--tangents and --tangent-format need --criterion biarc");
   const bool band = opts.criterion == "band";
@@ -169,6 +186,8 @@ int run_fit(const FitOptions& opts) {
       const Span<const fit::BandWidth<double>> ws_widths(widths.data() + b, m);
       r = by_pieces ? fit::fit_band_min_error(path, ws_widths, pieces, storage.workspace(), dst)
                     : fit::fit_band_min_count(path, ws_widths, storage.workspace(), dst);
+    } else if (opts.numeric == "fixed") {
+      r = fit_vertex_fixed(path, tol, by_pieces ? pieces : 0, method, dst);
     } else {
       io::FitStorage storage(m);
       r = by_pieces ? fit::fit_min_error(path, pieces, method, storage.workspace(), dst)
@@ -194,7 +213,9 @@ int run_fit(const FitOptions& opts) {
     const Span<const fit::Piece<double>> fitted(dst.data(), r.value().pieces);
     // A band piece crosses each inner point's gate, so it passes within the
     // widest width of every inner point: the vertex check applies to it too.
-    if (const std::string bad = check_fit(path, fitted, r.value().tol); !bad.empty()) {
+    // Fixed-point pieces may exceed tol by the documented quantization.
+    const double allowance = opts.numeric == "fixed" ? fixed_fit_slack(path) : 0.0;
+    if (const std::string bad = check_fit(path, fitted, r.value().tol + allowance); !bad.empty()) {
       std::fprintf(stderr,
                    "kerf: %s%s: internal error: the fit fails its own check (%s); nothing written\n",
                    in.file.c_str(), where.c_str(), bad.c_str());
