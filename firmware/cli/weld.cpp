@@ -1,0 +1,268 @@
+#include "cli/weld.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <vector>
+
+#include "cli/fit_job.hpp"
+#include "kerf/geom/segment.hpp"
+
+namespace kerf::cli {
+
+namespace {
+
+using P = Vec2<double>;
+
+std::string format_number(double v, int decimals) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  std::string s = buf;
+  if (s.find('.') != std::string::npos) {
+    while (s.back() == '0') s.pop_back();
+    if (s.back() == '.') s.pop_back();
+  }
+  if (s == "-0") s = "0";
+  return s;
+}
+
+double rounded(double v, int decimals) { return std::strtod(format_number(v, decimals).c_str(), nullptr); }
+
+double distance_to_polyline(const std::vector<P>& pts, std::size_t a, std::size_t b, P q) {
+  double best = distance(pts[a], q);
+  for (std::size_t k = a; k < b; ++k) best = std::min(best, distance_to_line_segment(pts[k], pts[k + 1], q));
+  return best;
+}
+
+// A piece as written: its rounded end and centre, the text after the G word.
+struct Written {
+  std::string text;
+  P end{};
+  double deviation = 0;
+};
+
+// Writes piece `s` from the rounded start `from` with `decimals`, and
+// measures it against pts[a..b] (see weld.hpp).
+Written write_piece(const Segment<double>& s, P from, const std::vector<P>& pts, std::size_t a,
+                    std::size_t b, int decimals, double tol) {
+  Written w;
+  w.end = {rounded(s.end.x, decimals), rounded(s.end.y, decimals)};
+  const bool arc = s.is_arc();
+  P c{};
+  if (arc) {
+    const P off{rounded(s.centre.x - from.x, decimals), rounded(s.centre.y - from.y, decimals)};
+    c = from + off;
+    w.text = (s.dir < 0 ? "G2 X" : "G3 X") + format_number(w.end.x, decimals) + " Y" +
+             format_number(w.end.y, decimals) + " I" + format_number(off.x, decimals) + " J" +
+             format_number(off.y, decimals);
+  } else {
+    w.text = "G1 X" + format_number(w.end.x, decimals) + " Y" + format_number(w.end.y, decimals);
+  }
+  const Segment<double> drawn = arc ? Segment<double>::arc(from, w.end, c, s.dir) : Segment<double>::line(from, w.end);
+  const double widen = arc ? std::fabs((from - c).norm() - (w.end - c).norm()) : 0.0;
+  double dev = std::max(distance(w.end, pts[b]), distance(from, pts[a]));
+  for (std::size_t k = a + 1; k < b; ++k) dev = std::max(dev, distance_to_segment(drawn, pts[k]) + widen);
+  // Samples of the drawn piece against the polyline: the band side.
+  double sweep = 0, r = 0, a0 = 0;
+  double length = distance(from, w.end);
+  if (arc) {
+    r = (from - c).norm();
+    a0 = std::atan2(from.y - c.y, from.x - c.x);
+    const double a1 = std::atan2(w.end.y - c.y, w.end.x - c.x);
+    sweep = s.dir > 0 ? a1 - a0 : a0 - a1;
+    if (sweep <= 0) sweep += 2 * 3.14159265358979323846;
+    length = r * sweep;
+  }
+  const std::size_t n = std::clamp<std::size_t>(static_cast<std::size_t>(std::ceil(length / tol)), 8, 128);
+  for (std::size_t k = 1; k < n; ++k) {
+    const double t = static_cast<double>(k) / static_cast<double>(n);
+    P q;
+    if (arc) {
+      const double ang = a0 + (s.dir > 0 ? 1 : -1) * sweep * t;
+      q = {c.x + r * std::cos(ang), c.y + r * std::sin(ang)};
+    } else {
+      q = from + (w.end - from) * t;
+    }
+    dev = std::max(dev, distance_to_polyline(pts, a, b, q) + widen);
+  }
+  w.deviation = dev;
+  return w;
+}
+
+// Inserts "G1 " after a leading N word (or at the start): a line that relied
+// on the modal G1 which a written arc has replaced.
+std::string with_g1(const io::GBlock& b) {
+  if (!b.words.empty() && b.words.front().letter == 'N') {
+    const std::size_t at = b.words.front().pos + b.words.front().len;
+    return b.text.substr(0, at) + " G1" + b.text.substr(at);
+  }
+  const std::size_t at = b.text.find_first_not_of(" \t");
+  return b.text.substr(0, at) + "G1 " + b.text.substr(at);
+}
+
+std::string word_text(const io::GBlock& b, char letter) {
+  for (const io::GWord& w : b.words)
+    if (w.letter == letter) return b.text.substr(w.pos, w.len);
+  return {};
+}
+
+class Emitter {
+ public:
+  explicit Emitter(std::string& out) : out_(out) {}
+
+  void verbatim(const io::GBlock& b) {
+    if (b.moves && b.motion_word) arc_modal_ = false;
+    if (b.moves && !b.motion_word && arc_modal_) out_ += with_g1(b);
+    else out_ += b.text;
+    out_ += b.end;
+  }
+  void written(const std::string& text, bool arc, const std::string& end) {
+    out_ += text;
+    out_ += end;
+    arc_modal_ = arc;
+  }
+
+ private:
+  std::string& out_;
+  bool arc_modal_ = false;  // the last move written was a G2/G3 that replaced G1 lines
+};
+
+struct Welder {
+  const io::GcodeFile& g;
+  const WeldOptions& opts;
+  WeldStats& stats;
+  Emitter emit;
+  std::string error;
+
+  // Fits pts and returns the pieces over pts' indices; splits at sharp turns.
+  bool fit(const std::vector<P>& pts, double tol, std::vector<fit::Piece<double>>& pieces) {
+    std::size_t begin = 0;
+    for (std::size_t k = 1; k <= pts.size() - 1; ++k) {
+      const bool last = k == pts.size() - 1;
+      const bool turn = !last && opts.split_turns && (pts[k] - pts[k - 1]).dot(pts[k + 1] - pts[k]) < 0;
+      if (!last && !turn) continue;
+      const std::vector<P> part(pts.begin() + static_cast<std::ptrdiff_t>(begin),
+                                pts.begin() + static_cast<std::ptrdiff_t>(k) + 1);
+      std::vector<fit::Piece<double>> got;
+      Status status = Status::ok;
+      if (!fit_job(part, {}, tol, opts.criterion, got, error, status)) return false;
+      for (fit::Piece<double> p : got) {
+        p.first += static_cast<std::uint32_t>(begin);
+        p.last += static_cast<std::uint32_t>(begin);
+        pieces.push_back(p);
+      }
+      begin = k;
+    }
+    return true;
+  }
+
+  bool weld(const io::GPolyline& pl) {
+    const double unit = pl.inches ? 25.4 : 1.0;
+    const double tol = opts.tol_mm / unit;
+    // Distinct consecutive points, each with the polyline index it came from.
+    std::vector<P> pts;
+    std::vector<std::size_t> from_index;
+    for (std::size_t k = 0; k < pl.points.size(); ++k) {
+      if (!pts.empty() && pts.back() == pl.points[k]) continue;
+      pts.push_back(pl.points[k]);
+      from_index.push_back(k);
+    }
+    if (pl.relative || pts.size() < 2) {  // G91 polylines are not welded (see README)
+      for (std::size_t i = pl.first_block; i <= pl.last_block; ++i) {
+        emit.verbatim(g.blocks[i]);
+        if (g.blocks[i].moves) ++stats.output_moves;
+      }
+      return true;
+    }
+    const int d0 = stats.decimals;
+    const double budget = 2 * std::pow(10.0, -d0);
+    const double fit_tol = tol > 2 * budget ? tol - budget : tol / 2;
+    std::vector<fit::Piece<double>> pieces;
+    if (!fit(pts, fit_tol, pieces)) return false;
+    ++stats.polylines;
+    P from = pts.front();
+    std::size_t next_block = pl.first_block;
+    for (std::size_t k = 0; k < pieces.size(); ++k) {
+      const fit::Piece<double>& pc = pieces[k];
+      const bool last_piece = k + 1 == pieces.size();
+      const std::size_t end_block = last_piece ? pl.last_block : pl.point_block[from_index[pc.last]];
+      Written w;
+      bool ok = false;
+      for (int d = d0; d <= d0 + 2 && !ok; ++d) {
+        w = write_piece(pc.segment, from, pts, pc.first, pc.last, d, tol);
+        ok = w.deviation <= tol;
+      }
+      if (!ok || pc.last - pc.first < 2) {  // keep the input lines (a single segment is already best)
+        if (!ok) ++stats.kept_pieces;
+        for (std::size_t i = next_block; i <= end_block; ++i) {
+          emit.verbatim(g.blocks[i]);
+          if (g.blocks[i].moves) ++stats.output_moves;
+        }
+        from = pts[pc.last];
+        next_block = end_block + 1;
+        continue;
+      }
+      stats.max_deviation_mm = std::max(stats.max_deviation_mm, w.deviation * unit);
+      const io::GBlock& eb = g.blocks[pl.point_block[from_index[pc.last]]];
+      std::string line;
+      if (const std::string n = word_text(eb, 'N'); !n.empty()) line = n + " ";
+      line += w.text;
+      if (k == 0)
+        if (const std::string f = word_text(g.blocks[pl.first_block], 'F'); !f.empty()) line += " " + f;
+      for (const std::string& c : eb.comments) line += " " + c;
+      const bool arc = pc.segment.is_arc();
+      emit.written(line, arc, eb.end);
+      ++stats.output_moves;
+      if (arc) ++stats.arcs;
+      // The comments of the replaced lines stay, in order, after the piece.
+      for (std::size_t i = next_block; i <= end_block; ++i) {
+        const io::GBlock& b = g.blocks[i];
+        if (&b == &eb) continue;
+        if (b.only_comment()) {
+          emit.verbatim(b);
+        } else if (!b.comments.empty()) {
+          std::string c;
+          for (const std::string& t : b.comments) c += (c.empty() ? "" : " ") + t;
+          emit.written(c, arc, b.end);
+        }
+      }
+      from = w.end;
+      next_block = end_block + 1;
+    }
+    return true;
+  }
+};
+
+}  // namespace
+
+bool weld_gcode(const io::GcodeFile& g, const WeldOptions& opts, std::string& out,
+                WeldStats& stats, std::string& error) {
+  stats = WeldStats{};
+  stats.decimals = opts.decimals >= 0 ? opts.decimals : std::max<int>(3, static_cast<int>(g.decimals));
+  out.clear();
+  out.reserve(g.blocks.size() * 24);
+  Welder w{g, opts, stats, Emitter(out), {}};
+  std::size_t next = 0;
+  for (std::size_t p = 0; p < g.polylines.size(); ++p) {
+    const io::GPolyline& pl = g.polylines[p];
+    for (; next < pl.first_block; ++next) {
+      w.emit.verbatim(g.blocks[next]);
+      if (g.blocks[next].moves) ++stats.output_moves;
+    }
+    if (!w.weld(pl)) {
+      error = g.file + ":" + std::to_string(g.blocks[pl.first_block].line) + ": " + w.error;
+      return false;
+    }
+    next = pl.last_block + 1;
+    if (opts.progress) opts.progress(p + 1, g.polylines.size());
+  }
+  for (; next < g.blocks.size(); ++next) {
+    w.emit.verbatim(g.blocks[next]);
+    if (g.blocks[next].moves) ++stats.output_moves;
+  }
+  for (const io::GBlock& b : g.blocks) stats.input_moves += b.moves ? 1 : 0;
+  return true;
+}
+
+}  // namespace kerf::cli
