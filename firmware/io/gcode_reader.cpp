@@ -79,6 +79,10 @@ bool split_words(GBlock& b, std::string& reason) {
         ++j;
       }
       if (digits == 0) {
+        const std::size_t next = s.find_first_not_of(" \t", i + 1);
+        if (next != std::string::npos && s[next] == '#') return reason = "parameters (#n) are not supported", false;
+        if (next != std::string::npos && s[next] == '[')
+          return reason = "expressions ([...]) are not supported", false;
         std::string word(1, c);
         if (j < s.size() && std::isalpha(static_cast<unsigned char>(s[j])) != 0)
           return reason = "not a word: \"" + s.substr(i, s.find_first_of(" \t;(", i) - i) +
