@@ -181,25 +181,20 @@ struct Welder {
     std::vector<fit::Piece<double>> pieces;
     if (!fit(pts, fit_tol, pieces)) return false;
     ++stats.polylines;
+    std::vector<Planned> plan;
     P from = pts.front();
+    if (!resolve(pts, pieces, fit_tol, tol, 0, from, plan)) return false;
     std::size_t next_block = pl.first_block;
-    for (std::size_t k = 0; k < pieces.size(); ++k) {
-      const fit::Piece<double>& pc = pieces[k];
-      const bool last_piece = k + 1 == pieces.size();
+    for (std::size_t k = 0; k < plan.size(); ++k) {
+      const fit::Piece<double>& pc = plan[k].piece;
+      const Written& w = plan[k].written;
+      const bool last_piece = k + 1 == plan.size();
       const std::size_t end_block = last_piece ? pl.last_block : pl.point_block[from_index[pc.last]];
-      Written w;
-      bool ok = false;
-      for (int d = d0; d <= d0 + 2 && !ok; ++d) {
-        w = write_piece(pc.segment, from, pts, pc.first, pc.last, d, tol);
-        ok = w.deviation <= tol;
-      }
-      if (!ok || pc.last - pc.first < 2) {  // keep the input lines (a single segment is already best)
-        if (!ok) ++stats.kept_pieces;
+      if (plan[k].keep) {
         for (std::size_t i = next_block; i <= end_block; ++i) {
           emit.verbatim(g.blocks[i]);
           if (g.blocks[i].moves) ++stats.output_moves;
         }
-        from = pts[pc.last];
         next_block = end_block + 1;
         continue;
       }
@@ -227,8 +222,58 @@ struct Welder {
           emit.written(c, arc, b.end);
         }
       }
-      from = w.end;
       next_block = end_block + 1;
+    }
+    return true;
+  }
+
+  struct Planned {
+    fit::Piece<double> piece;
+    bool keep = false;  // write its input lines
+    Written written;
+  };
+
+  // Writes each piece from the rounded end of the one before, with more
+  // decimals when rounding costs too much; a piece still over tol (or whose
+  // drawn arc leaves the band, which the vertex criterion allows) is fitted
+  // again with the band criterion at half the tol, once, before its input
+  // lines are kept.
+  bool resolve(const std::vector<P>& pts, const std::vector<fit::Piece<double>>& pieces, double fit_tol,
+               double tol, int depth, P& from, std::vector<Planned>& plan) {
+    for (const fit::Piece<double>& pc : pieces) {
+      Planned pl{pc, false, {}};
+      if (pc.last - pc.first < 2) {  // a single segment: its input line is already the best
+        pl.keep = true;
+        plan.push_back(pl);
+        from = pts[pc.last];
+        continue;
+      }
+      bool ok = false;
+      for (int d = stats.decimals; d <= stats.decimals + 2 && !ok; ++d) {
+        pl.written = write_piece(pc.segment, from, pts, pc.first, pc.last, d, tol);
+        ok = pl.written.deviation <= tol;
+      }
+      if (ok) {
+        plan.push_back(pl);
+        from = pl.written.end;
+        continue;
+      }
+      if (depth == 0) {
+        const std::vector<P> part(pts.begin() + pc.first, pts.begin() + pc.last + 1);
+        std::vector<fit::Piece<double>> again;
+        Status status = Status::ok;
+        if (!fit_job(part, {}, fit_tol / 2, "band", again, error, status)) return false;
+        for (fit::Piece<double>& p : again) {
+          p.first += pc.first;
+          p.last += pc.first;
+        }
+        if (!resolve(pts, again, fit_tol / 2, tol, 1, from, plan)) return false;
+        continue;
+      }
+      ++stats.kept_pieces;
+      pl.keep = true;
+      plan.push_back(pl);
+      from = pts[pc.last];
     }
     return true;
   }
