@@ -134,6 +134,19 @@ struct Welder {
   WeldStats& stats;
   Emitter emit;
   std::string error;
+  // Where the machine is minus where the input says, after the moves written
+  // so far: nonzero only when --decimals rounds the input's own end points.
+  P offset{};
+
+  // Writes an input line as it is.
+  void pass(const io::GBlock& b) {
+    emit.verbatim(b);
+    if (!b.moves && b.unknown.empty() && word_text(b, 'X').empty() && word_text(b, 'Y').empty()) return;
+    if (b.moves) ++stats.output_moves;
+    if (!word_text(b, 'X').empty() && !b.relative) offset.x = 0;
+    if (!word_text(b, 'Y').empty() && !b.relative) offset.y = 0;
+    if (!b.unknown.empty()) offset = {};  // homing, offsets: the input's own coordinates again
+  }
 
   // Fits pts and returns the pieces over pts' indices; splits at sharp turns.
   bool fit(const std::vector<P>& pts, double tol, std::vector<fit::Piece<double>>& pieces) {
@@ -169,10 +182,7 @@ struct Welder {
       from_index.push_back(k);
     }
     if (pl.relative || pts.size() < 2) {  // G91 polylines are not welded (see README)
-      for (std::size_t i = pl.first_block; i <= pl.last_block; ++i) {
-        emit.verbatim(g.blocks[i]);
-        if (g.blocks[i].moves) ++stats.output_moves;
-      }
+      for (std::size_t i = pl.first_block; i <= pl.last_block; ++i) pass(g.blocks[i]);
       return true;
     }
     const int d0 = stats.decimals;
@@ -182,8 +192,9 @@ struct Welder {
     if (!fit(pts, fit_tol, pieces)) return false;
     ++stats.polylines;
     std::vector<Planned> plan;
-    P from = pts.front();
+    P from = pts.front() + offset;
     if (!resolve(pts, pieces, fit_tol, tol, 0, from, plan)) return false;
+    offset = from - pts.back();
     std::size_t next_block = pl.first_block;
     for (std::size_t k = 0; k < plan.size(); ++k) {
       const fit::Piece<double>& pc = plan[k].piece;
@@ -194,7 +205,7 @@ struct Welder {
         for (std::size_t i = next_block; i <= end_block; ++i) {
           emit.verbatim(g.blocks[i]);
           if (g.blocks[i].moves) ++stats.output_moves;
-        }
+        }  // its X/Y words are the input's: offset is zero after it (resolve)
         next_block = end_block + 1;
         continue;
       }
@@ -291,10 +302,7 @@ bool weld_gcode(const io::GcodeFile& g, const WeldOptions& opts, std::string& ou
   std::size_t next = 0;
   for (std::size_t p = 0; p < g.polylines.size(); ++p) {
     const io::GPolyline& pl = g.polylines[p];
-    for (; next < pl.first_block; ++next) {
-      w.emit.verbatim(g.blocks[next]);
-      if (g.blocks[next].moves) ++stats.output_moves;
-    }
+    for (; next < pl.first_block; ++next) w.pass(g.blocks[next]);
     if (!w.weld(pl)) {
       error = g.file + ":" + std::to_string(g.blocks[pl.first_block].line) + ": " + w.error;
       return false;
@@ -302,10 +310,7 @@ bool weld_gcode(const io::GcodeFile& g, const WeldOptions& opts, std::string& ou
     next = pl.last_block + 1;
     if (opts.progress) opts.progress(p + 1, g.polylines.size());
   }
-  for (; next < g.blocks.size(); ++next) {
-    w.emit.verbatim(g.blocks[next]);
-    if (g.blocks[next].moves) ++stats.output_moves;
-  }
+  for (; next < g.blocks.size(); ++next) w.pass(g.blocks[next]);
   for (const io::GBlock& b : g.blocks) stats.input_moves += b.moves ? 1 : 0;
   return true;
 }

@@ -217,7 +217,10 @@ TEST(Weld, ModalLineAfterAnArcGetsItsG1) {
 }
 
 TEST(Weld, CoarseDecimalsStayWithinTol) {
-  const std::string in = "G21 G90\nG0 X10 Y0\n" + circle_lines(0, 0, 10, 200, 0.9, 5);
+  // Two runs (the F word starts the second): the second starts where the
+  // rounded first one ended, not where the input says.
+  const std::string in = "G21 G90\nG0 X10 Y0\n" + circle_lines(0, 0, 10, 200, 0.9, 5) + "G1 X3 Y-3 F300\n" +
+                         circle_lines(3, 0, 3, 100, 0.7, 5);
   for (int decimals : {1, 2, 3}) {
     SCOPED_TRACE(decimals);
     kerf::cli::WeldStats stats;
@@ -226,6 +229,13 @@ TEST(Weld, CoarseDecimalsStayWithinTol) {
     EXPECT_TRUE(chk.ok) << chk.why;
     EXPECT_LE(chk.max_deviation, 0.02);
   }
+}
+
+TEST(Weld, RelativeRunsAreKept) {
+  const std::string in = "G21 G91\nG1 X1 Y0 F100\nX1 Y0.1\nX1 Y0.2\nX1 Y0.3\nX1 Y0.4\nG90\n";
+  kerf::cli::WeldStats stats;
+  EXPECT_EQ(weld(in, 0.1, "band", stats), in);
+  EXPECT_EQ(stats.output_moves, 5u);
 }
 
 TEST(Weld, CheckerCatchesABadArc) {
