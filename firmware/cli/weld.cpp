@@ -74,7 +74,7 @@ Written write_piece(const Segment<double>& s, P from, const std::vector<P>& pts,
     if (sweep <= 0) sweep += 2 * 3.14159265358979323846;
     length = r * sweep;
   }
-  const std::size_t n = std::clamp<std::size_t>(static_cast<std::size_t>(std::ceil(length / tol)), 8, 128);
+  const std::size_t n = std::clamp<std::size_t>(static_cast<std::size_t>(std::ceil(4 * length / tol)), 8, 512);
   for (std::size_t k = 1; k < n; ++k) {
     const double t = static_cast<double>(k) / static_cast<double>(n);
     P q;
@@ -137,6 +137,7 @@ struct Welder {
   // Where the machine is minus where the input says, after the moves written
   // so far: nonzero only when --decimals rounds the input's own end points.
   P offset{};
+  const io::GPolyline* current = nullptr;  // for progress
 
   // Writes an input line as it is.
   void pass(const io::GBlock& b) {
@@ -166,11 +167,13 @@ struct Welder {
         pieces.push_back(p);
       }
       begin = k;
+      if (opts.progress) opts.progress(current->point_block[k], g.blocks.size());
     }
     return true;
   }
 
   bool weld(const io::GPolyline& pl) {
+    current = &pl;
     const double unit = pl.inches ? 25.4 : 1.0;
     const double tol = opts.tol_mm / unit;
     // Distinct consecutive points, each with the polyline index it came from.
@@ -308,7 +311,6 @@ bool weld_gcode(const io::GcodeFile& g, const WeldOptions& opts, std::string& ou
       return false;
     }
     next = pl.last_block + 1;
-    if (opts.progress) opts.progress(p + 1, g.polylines.size());
   }
   for (; next < g.blocks.size(); ++next) w.pass(g.blocks[next]);
   for (const io::GBlock& b : g.blocks) stats.input_moves += b.moves ? 1 : 0;

@@ -7,9 +7,10 @@
 // rounded start), then measured as a controller will run it: the drawn arc
 // around the rounded centre, widened by the difference between its start
 // and end radius. The measure is the largest of: each input point inside the
-// piece to the drawn arc, sample points of the arc (spaced at most tol apart,
-// at most 128 of them) to the input polyline, and the moved end point to its
-// input point. Over tol, the piece is written again with D+1 and D+2
+// piece to the drawn arc, sample points of the arc (tol/4 apart, at most 512
+// of them) to the input polyline, and the moved end point to its input point.
+// The band criterion's arcs are inside the band by construction (the fitter
+// certifies it); for the vertex criterion, the samples are the band check. Over tol, the piece is written again with D+1 and D+2
 // decimals; still over tol, its input lines are kept as they were.
 #pragma once
 
@@ -26,7 +27,7 @@ struct WeldOptions {
   std::string criterion = "band";  // "vertex" or "band"
   int decimals = -1;               // < 0: as many as the file's X/Y words use (at least 3)
   bool split_turns = true;         // fit separately at turns sharper than 90 degrees
-  std::function<void(std::size_t done, std::size_t total)> progress;  // per polyline; may be empty
+  std::function<void(std::size_t line, std::size_t lines)> progress;  // as runs are fitted; may be empty
 };
 
 struct WeldStats {

@@ -63,15 +63,24 @@ int run_weld(const WeldCommandOptions& opts) {
     std::fprintf(stderr, "kerf: %s\n", io::describe_error(g).c_str());
     return kExitUsage;
   }
+  // Progress on a terminal only, at most five times a second.
+  bool shown = false;
+  auto last = std::chrono::steady_clock::now();
   if (::isatty(STDERR_FILENO) == 1 && g.blocks.size() > 20000) {
-    w.progress = [](std::size_t done, std::size_t total) {
-      if (done % 64 == 0 || done == total)
-        std::fprintf(stderr, "\rkerf weld: %zu/%zu polylines%s", done, total, done == total ? "\n" : "");
+    w.progress = [&](std::size_t line, std::size_t lines) {
+      const auto now = std::chrono::steady_clock::now();
+      if (now - last < std::chrono::milliseconds(200)) return;
+      last = now;
+      shown = true;
+      std::fprintf(stderr, "\rkerf weld: line %zu of %zu (%.0f%%)", line, lines,
+                   100.0 * static_cast<double>(line) / static_cast<double>(lines));
     };
   }
   std::string text;
   WeldStats stats;
-  if (!weld_gcode(g, w, text, stats, error)) {
+  const bool welded = weld_gcode(g, w, text, stats, error);
+  if (shown) std::fprintf(stderr, "\r\033[K");  // clear the progress line
+  if (!welded) {
     std::fprintf(stderr, "kerf: %s\n", error.c_str());
     return kExitFailure;
   }
