@@ -155,6 +155,18 @@ TEST(Weld, CorpusFilesPassTheChecker) {
   }
 }
 
+TEST(Weld, CliGoldenPassesTheChecker) {
+  // tests/cli/cases/weld_jsdc_laser holds `kerf weld`'s output byte for byte;
+  // the referee checks it against the corpus file it came from.
+  std::ifstream in(std::string(KERF_TEST_DATA_DIR) + "/../cli/cases/weld_jsdc_laser/expected.stdout", std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  ASSERT_FALSE(s.str().empty());
+  const kerf_test::WeldCheck chk = kerf_test::check_weld(corpus("cncjs_jsdc-laser.gcode"), s.str(), 0.025);
+  EXPECT_TRUE(chk.ok) << chk.why;
+  EXPECT_LT(chk.output_moves * 20, chk.input_moves);  // G1 XY feed moves, as the referee counts them
+}
+
 TEST(Weld, PocketBandAndVertex) {
   const std::string in = corpus("cncjs_tball-pocket.gcode");
   for (const char* criterion : {"band", "vertex"}) {
