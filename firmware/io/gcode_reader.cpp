@@ -403,7 +403,11 @@ bool gcode_job_from(const GcodeFile& g, PointFile& out, std::string& error) {
     }
     if (!b.xy_plane && (b.motion == Motion::cw || b.motion == Motion::ccw))
       return refuse(b.line, "an arc outside the XY plane (G18/G19) cannot be cut");
-    if (!b.known_start) return refuse(b.line, "a cut from an unknown position (no absolute X and Y yet)");
+    if (!b.known_start) {
+      const bool xy_still = b.motion == Motion::linear && b.start[0] == b.end_pos[0] && b.start[1] == b.end_pos[1];
+      if (xy_still) continue;  // a Z move before any X Y: no point of a path
+      return refuse(b.line, "a cut from an unknown position (no absolute X and Y yet)");
+    }
     const double scale = b.inches ? kMmPerInch : 1.0;
     const Vec2<double> from{b.start[0], b.start[1]};
     const Vec2<double> to{b.end_pos[0], b.end_pos[1]};
@@ -441,6 +445,16 @@ bool read_gcode_job(const std::string& path, PointFile& out, std::string& error)
     return false;
   }
   return gcode_job_from(g, out, error);
+}
+
+bool is_gcode_path(const std::string& path) {
+  const std::size_t dot = path.find_last_of('.');
+  if (dot == std::string::npos || path.find('/', dot) != std::string::npos) return false;
+  std::string ext;
+  for (char c : path.substr(dot + 1)) ext += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  for (const char* e : {"nc", "ngc", "gcode", "gco", "gc", "tap", "cnc"})
+    if (ext == e) return true;
+  return false;
 }
 
 }  // namespace kerf::io

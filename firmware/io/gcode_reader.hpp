@@ -95,6 +95,10 @@ std::string describe_error(const GcodeFile& f);
 // (chord error below 0.001 mm). Coordinates in mm. Unknown words are refused.
 // False with "FILE:LINE: reason" in error.
 bool read_gcode_job(const std::string& path, PointFile& out, std::string& error);
+
+// True for the usual G-code extensions (.nc .ngc .gcode .gco .gc .tap .cnc),
+// in any case: how `kerf sim`/`kerf run` can tell a G-code job from a point file.
+bool is_gcode_path(const std::string& path);
 bool gcode_job_from(const GcodeFile& g, PointFile& out, std::string& error);
 
 }  // namespace kerf::io

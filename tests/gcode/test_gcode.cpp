@@ -114,6 +114,26 @@ TEST(GcodeReader, UnknownWordsPassWeldButNotRun) {
   EXPECT_EQ(weld(text, 0.01, "band", stats), text);  // nothing to weld, every line kept
 }
 
+TEST(GcodeJob, TellsGcodeFilesByName) {
+  EXPECT_TRUE(kerf::io::is_gcode_path("part.NC"));
+  EXPECT_TRUE(kerf::io::is_gcode_path("dir.v2/part.gcode"));
+  EXPECT_FALSE(kerf::io::is_gcode_path("dir.nc/points.txt"));
+  EXPECT_FALSE(kerf::io::is_gcode_path("points"));
+}
+
+TEST(GcodeJob, ReadsAFileAndNamesItsErrors) {
+  kerf::io::PointFile job;
+  std::string error;
+  EXPECT_TRUE(kerf::io::read_gcode_job(std::string(KERF_TEST_DATA_DIR) + "/gcode/cncjs_jsdc-laser.gcode", job, error));
+  EXPECT_EQ(job.path_begin.size(), 5u);
+  EXPECT_EQ(job.point_lines.front(), 22u);  // the first cut move (it starts where line 18 left the head)
+  EXPECT_FALSE(kerf::io::read_gcode_job("no/such.nc", job, error));
+  EXPECT_EQ(error, "no/such.nc: No such file or directory");
+  // An FDM print: E words are not a cutting machine's.
+  EXPECT_FALSE(kerf::io::read_gcode_job(std::string(KERF_TEST_DATA_DIR) + "/gcode/cncjs_octocat.gcode", job, error));
+  EXPECT_NE(error.find("cncjs_octocat.gcode:2: unsupported word \"E0\""), std::string::npos) << error;
+}
+
 TEST(GcodeJob, SplitsAtRapidsAndTorchOff) {
   const std::string text =
       "G21 G90\nG0 X0 Y0\nM3\nG1 X10 Y0\nG1 X10 Y10\nM5\nM3\nG1 X0 Y10\nG0 X20 Y20\nG1 X30 Y20\n"
