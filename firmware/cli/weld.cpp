@@ -263,6 +263,19 @@ struct Welder {
         continue;
       }
       bool ok = false;
+      if (pc.segment.is_arc()) {  // a nearly straight arc (huge radius) is written as a line when one fits
+        const double r = pc.segment.radius();
+        const double half = distance(pc.segment.start, pc.segment.end) / 2;
+        if (half < r && r - std::sqrt(r * r - half * half) < tol) {
+          const Written line = write_piece(Segment<double>::line(pc.segment.start, pc.segment.end), from, pts,
+                                           pc.first, pc.last, stats.decimals, tol);
+          if (line.deviation <= tol) {
+            pl.written = line;
+            pl.piece.segment = Segment<double>::line(pc.segment.start, pc.segment.end);
+            ok = true;
+          }
+        }
+      }
       for (int d = stats.decimals; d <= stats.decimals + 2 && !ok; ++d) {
         pl.written = write_piece(pc.segment, from, pts, pc.first, pc.last, d, tol);
         ok = pl.written.deviation <= tol;
