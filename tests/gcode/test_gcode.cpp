@@ -188,7 +188,13 @@ TEST(Weld, CliGoldenPassesTheChecker) {
 }
 
 TEST(Weld, PocketBandAndVertex) {
-  const std::string in = corpus("cncjs_tball-pocket.gcode");
+  // The first 4000 lines (part of the first pocket path, cut at a line end):
+  // the whole file takes the band fit seconds, too long under the sanitizers
+  // and qemu. The benchmark runs the whole file.
+  const std::string all = corpus("cncjs_tball-pocket.gcode");
+  std::size_t cut = 0;
+  for (int k = 0; k < 4000; ++k) cut = all.find('\n', cut) + 1;
+  const std::string in = all.substr(0, cut);
   for (const char* criterion : {"band", "vertex"}) {
     SCOPED_TRACE(criterion);
     kerf::cli::WeldStats stats;
