@@ -128,6 +128,38 @@ class Emitter {
   bool arc_modal_ = false;  // the last move written was a G2/G3 that replaced G1 lines
 };
 
+// pts without its jitter: a point that lies, with the points skipped before
+// it (at most 32 in a row), within `e` of the chord from the last kept point
+// to the next point.
+// kept_index maps each kept point to its index in pts; `moved` is the largest
+// distance of a skipped point from its chord.
+std::vector<P> without_jitter(const std::vector<P>& pts, double e, std::vector<std::size_t>& kept_index,
+                              double& moved) {
+  kept_index.clear();
+  kept_index.push_back(0);
+  moved = 0;
+  std::size_t a = 0;
+  for (std::size_t k = 1; k + 1 < pts.size(); ++k) {
+    bool drop = e > 0 && k - a <= 32;
+    double worst = 0;
+    for (std::size_t m = a + 1; m <= k && drop; ++m) {
+      worst = std::max(worst, distance_to_line_segment(pts[a], pts[k + 1], pts[m]));
+      drop = worst <= e;
+    }
+    if (drop) {
+      moved = std::max(moved, worst);
+      continue;
+    }
+    kept_index.push_back(k);
+    a = k;
+  }
+  kept_index.push_back(pts.size() - 1);
+  std::vector<P> out;
+  out.reserve(kept_index.size());
+  for (std::size_t k : kept_index) out.push_back(pts[k]);
+  return out;
+}
+
 struct Welder {
   const io::GcodeFile& g;
   const WeldOptions& opts;
@@ -191,8 +223,19 @@ struct Welder {
     const int d0 = stats.decimals;
     const double budget = 2 * std::pow(10.0, -d0);
     const double fit_tol = tol > 2 * budget ? tol - budget : tol / 2;
+    // The fit sees the run without its jitter (CAM output is full of 0.0003
+    // mm back-and-forths, each a cusp the fitters must stop at), at a tol
+    // less by how far the skipped points lie from their chords; every piece
+    // is then measured against all the input points (resolve).
+    std::vector<std::size_t> kept_index;
+    double moved = 0;
+    const std::vector<P> simple = without_jitter(pts, tol * opts.jitter, kept_index, moved);
     std::vector<fit::Piece<double>> pieces;
-    if (!fit(pts, fit_tol, pieces)) return false;
+    if (!fit(simple, fit_tol - moved, pieces)) return false;
+    for (fit::Piece<double>& pc : pieces) {
+      pc.first = static_cast<std::uint32_t>(kept_index[pc.first]);
+      pc.last = static_cast<std::uint32_t>(kept_index[pc.last]);
+    }
     ++stats.polylines;
     std::vector<Planned> plan;
     P from = pts.front() + offset;

@@ -27,6 +27,7 @@ struct WeldOptions {
   std::string criterion = "band";  // "vertex" or "band"
   int decimals = -1;               // < 0: as many as the file's X/Y words use (at least 3)
   bool split_turns = true;         // fit separately at turns sharper than 90 degrees
+  double jitter = 0.02;            // fit without points within jitter * tol of their chord (0: keep all)
   std::function<void(std::size_t line, std::size_t lines)> progress;  // as runs are fitted; may be empty
 };
 

@@ -4,7 +4,7 @@
 // welder measured here (greedy_moves) for comparison.
 // Prints figures measured in this run; it asserts nothing about speed.
 //
-// usage: kerf_bench_weld [--criterion band|vertex|both] [--tol MM] [--no-split] [FILE...]
+// usage: kerf_bench_weld [--criterion band|vertex|both] [--tol MM] [--no-split] [--jitter F] [FILE...]
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -28,7 +28,8 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 // each piece's start, extend the piece one point at a time while the circle
 // through its first, middle and last point (or the line, when no circle
 // fits) keeps every inner point within tol and, at samples tol/4 apart, stays
-// within tol of the polyline; stop at the first point that fails. Returns the
+// within tol of the polyline (at most 256 samples); stop at the first
+// point that fails. Returns the
 // pieces (moves) for one run.
 using P = kerf::Vec2<double>;
 
@@ -64,7 +65,7 @@ bool fits(const std::vector<P>& p, std::size_t i, std::size_t j, double tol) {
   };
   double length = 0;
   for (int k = 1; k <= 8; ++k) length += (on_piece(k / 8.0) - on_piece((k - 1) / 8.0)).norm();
-  const int n = std::max(8, static_cast<int>(std::ceil(4 * length / tol)));
+  const int n = std::clamp(static_cast<int>(std::ceil(4 * length / tol)), 8, 256);  // as kerf weld's cap
   // The piece near the polyline, and every inner point near the piece.
   for (int k = 1; k < n; ++k) {
     const P q = on_piece(static_cast<double>(k) / n);
@@ -124,6 +125,7 @@ int main(int argc, char** argv) {
   double tol = 0.025;
   std::vector<std::string> criteria{"band", "vertex"};
   bool split = true;
+  double jitter = kerf::cli::WeldOptions{}.jitter;
   std::vector<std::string> files;
   for (int k = 1; k < argc; ++k) {
     if (std::strcmp(argv[k], "--tol") == 0 && k + 1 < argc) tol = std::atof(argv[++k]);
@@ -131,6 +133,7 @@ int main(int argc, char** argv) {
       const std::string c = argv[++k];
       criteria = c == "both" ? std::vector<std::string>{"band", "vertex"} : std::vector<std::string>{c};
     } else if (std::strcmp(argv[k], "--no-split") == 0) split = false;
+    else if (std::strcmp(argv[k], "--jitter") == 0 && k + 1 < argc) jitter = std::atof(argv[++k]);
     else files.emplace_back(argv[k]);
   }
   if (files.empty())
@@ -138,7 +141,7 @@ int main(int argc, char** argv) {
                           "cncjs_Circle_Diamond_Square_Calibration.gcode", "cncjs_sample_slic3r.gcode",
                           "cncjs_octocat.gcode"})
       files.push_back(std::string(KERF_GCODE_DIR) + "/" + f);
-  std::printf("tol %.4g mm, split at sharp turns: %s\n", tol, split ? "yes" : "no");
+  std::printf("tol %.4g mm, split at sharp turns: %s, jitter %.3g tol\n", tol, split ? "yes" : "no", jitter);
   std::printf("%-46s %-7s %8s %8s %7s %9s %8s %12s %12s\n", "file", "crit", "in", "out", "ratio",
               "arcwelder", "greedy", "read lines/s", "weld lines/s");
   for (const std::string& path : files) {
@@ -159,6 +162,7 @@ int main(int argc, char** argv) {
       o.tol_mm = tol;
       o.criterion = c;
       o.split_turns = split;
+      o.jitter = jitter;
       std::string out, error;
       kerf::cli::WeldStats st;
       t0 = std::chrono::steady_clock::now();
