@@ -9,6 +9,7 @@
 #include "cli/plan_command.hpp"
 #include "cli/run_options.hpp"
 #include "cli/sim_options.hpp"
+#include "cli/weld_command.hpp"
 #if KERF_HAVE_MODBUS
 #include "cli/run_command.hpp"
 #include "cli/sim_command.hpp"
@@ -32,6 +33,8 @@ int main(int argc, char** argv) {
     CLI::App* sim = add_sim_command(app, sim_opts);
     RunOptions run_opts;
     CLI::App* run = add_run_command(app, run_opts);
+    WeldCommandOptions weld_opts;
+    CLI::App* weld = add_weld_command(app, weld_opts);
     try {
       app.parse(argc, argv);
     } catch (const CLI::Success& e) {  // --help, --version
@@ -42,6 +45,7 @@ int main(int argc, char** argv) {
     }
     if (fit->parsed()) return run_fit(fit_opts);
     if (plan->parsed()) return run_plan(plan_opts);
+    if (weld->parsed()) return run_weld(weld_opts);
 #if KERF_HAVE_MODBUS
     if (sim->parsed()) return run_sim(sim_opts);
     if (run->parsed()) return run_run(run_opts);

@@ -1,0 +1,376 @@
+#include "cli/weld.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <vector>
+
+#include "cli/fit_job.hpp"
+#include "kerf/geom/segment.hpp"
+
+namespace kerf::cli {
+
+namespace {
+
+using P = Vec2<double>;
+
+std::string format_number(double v, int decimals) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  std::string s = buf;
+  if (s.find('.') != std::string::npos) {
+    while (s.back() == '0') s.pop_back();
+    if (s.back() == '.') s.pop_back();
+  }
+  if (s == "-0") s = "0";
+  return s;
+}
+
+double rounded(double v, int decimals) { return std::strtod(format_number(v, decimals).c_str(), nullptr); }
+
+double distance_to_polyline(const std::vector<P>& pts, std::size_t a, std::size_t b, P q) {
+  double best = distance(pts[a], q);
+  for (std::size_t k = a; k < b; ++k) best = std::min(best, distance_to_line_segment(pts[k], pts[k + 1], q));
+  return best;
+}
+
+// A piece as written: its rounded end and centre, the text after the G word.
+struct Written {
+  std::string text;
+  P end{};
+  double deviation = 0;
+};
+
+// Writes piece `s` from the rounded start `from` with `decimals`, and
+// measures it against pts[a..b] (see weld.hpp).
+Written write_piece(const Segment<double>& s, P from, const std::vector<P>& pts, std::size_t a,
+                    std::size_t b, int decimals, double tol) {
+  Written w;
+  w.end = {rounded(s.end.x, decimals), rounded(s.end.y, decimals)};
+  const bool arc = s.is_arc();
+  P c{};
+  if (arc) {
+    const P off{rounded(s.centre.x - from.x, decimals), rounded(s.centre.y - from.y, decimals)};
+    c = from + off;
+    w.text = (s.dir < 0 ? "G2 X" : "G3 X") + format_number(w.end.x, decimals) + " Y" +
+             format_number(w.end.y, decimals) + " I" + format_number(off.x, decimals) + " J" +
+             format_number(off.y, decimals);
+  } else {
+    w.text = "G1 X" + format_number(w.end.x, decimals) + " Y" + format_number(w.end.y, decimals);
+  }
+  const Segment<double> drawn = arc ? Segment<double>::arc(from, w.end, c, s.dir) : Segment<double>::line(from, w.end);
+  const double widen = arc ? std::fabs((from - c).norm() - (w.end - c).norm()) : 0.0;
+  double dev = std::max(distance(w.end, pts[b]), distance(from, pts[a]));
+  for (std::size_t k = a + 1; k < b; ++k) dev = std::max(dev, distance_to_segment(drawn, pts[k]) + widen);
+  // Samples of the drawn piece against the polyline: the band side.
+  double sweep = 0, r = 0, a0 = 0;
+  double length = distance(from, w.end);
+  if (arc) {
+    r = (from - c).norm();
+    a0 = std::atan2(from.y - c.y, from.x - c.x);
+    const double a1 = std::atan2(w.end.y - c.y, w.end.x - c.x);
+    sweep = s.dir > 0 ? a1 - a0 : a0 - a1;
+    if (sweep <= 0) sweep += 2 * 3.14159265358979323846;
+    length = r * sweep;
+  }
+  const std::size_t n = std::clamp<std::size_t>(static_cast<std::size_t>(std::ceil(4 * length / tol)), 8, 512);
+  for (std::size_t k = 1; k < n; ++k) {
+    const double t = static_cast<double>(k) / static_cast<double>(n);
+    P q;
+    if (arc) {
+      const double ang = a0 + (s.dir > 0 ? 1 : -1) * sweep * t;
+      q = {c.x + r * std::cos(ang), c.y + r * std::sin(ang)};
+    } else {
+      q = from + (w.end - from) * t;
+    }
+    dev = std::max(dev, distance_to_polyline(pts, a, b, q) + widen);
+  }
+  w.deviation = dev;
+  return w;
+}
+
+// Inserts "G1 " after a leading N word (or at the start): a line that relied
+// on the modal G1 which a written arc has replaced.
+std::string with_g1(const io::GBlock& b) {
+  if (!b.words.empty() && b.words.front().letter == 'N') {
+    const std::size_t at = b.words.front().pos + b.words.front().len;
+    return b.text.substr(0, at) + " G1" + b.text.substr(at);
+  }
+  const std::size_t at = b.text.find_first_not_of(" \t");
+  return b.text.substr(0, at) + "G1 " + b.text.substr(at);
+}
+
+std::string word_text(const io::GBlock& b, char letter) {
+  for (const io::GWord& w : b.words)
+    if (w.letter == letter) return b.text.substr(w.pos, w.len);
+  return {};
+}
+
+class Emitter {
+ public:
+  explicit Emitter(std::string& out) : out_(out) {}
+
+  void verbatim(const io::GBlock& b) {
+    if (b.moves && b.motion_word) arc_modal_ = false;
+    if (b.moves && !b.motion_word && arc_modal_) out_ += with_g1(b);
+    else out_ += b.text;
+    out_ += b.end;
+  }
+  void written(const std::string& text, bool arc, const std::string& end) {
+    out_ += text;
+    out_ += end;
+    arc_modal_ = arc;
+  }
+
+ private:
+  std::string& out_;
+  bool arc_modal_ = false;  // the last move written was a G2/G3 that replaced G1 lines
+};
+
+// pts without its jitter: a point that lies, with the points skipped before
+// it (at most 32 in a row), within `e` of the chord from the last kept point
+// to the next point.
+// kept_index maps each kept point to its index in pts; `moved` is the largest
+// distance of a skipped point from its chord.
+std::vector<P> without_jitter(const std::vector<P>& pts, double e, std::vector<std::size_t>& kept_index,
+                              double& moved) {
+  kept_index.clear();
+  kept_index.push_back(0);
+  moved = 0;
+  std::size_t a = 0;
+  for (std::size_t k = 1; k + 1 < pts.size(); ++k) {
+    bool drop = e > 0 && k - a <= 32;
+    double worst = 0;
+    for (std::size_t m = a + 1; m <= k && drop; ++m) {
+      worst = std::max(worst, distance_to_line_segment(pts[a], pts[k + 1], pts[m]));
+      drop = worst <= e;
+    }
+    if (drop) {
+      moved = std::max(moved, worst);
+      continue;
+    }
+    kept_index.push_back(k);
+    a = k;
+  }
+  kept_index.push_back(pts.size() - 1);
+  std::vector<P> out;
+  out.reserve(kept_index.size());
+  for (std::size_t k : kept_index) out.push_back(pts[k]);
+  return out;
+}
+
+struct Welder {
+  const io::GcodeFile& g;
+  const WeldOptions& opts;
+  WeldStats& stats;
+  Emitter emit;
+  std::string error;
+  // Where the machine is minus where the input says, after the moves written
+  // so far: nonzero only when --decimals rounds the input's own end points.
+  P offset{};
+  const io::GPolyline* current = nullptr;  // for progress
+
+  // Writes an input line as it is.
+  void pass(const io::GBlock& b) {
+    emit.verbatim(b);
+    if (!b.moves && b.unknown.empty() && word_text(b, 'X').empty() && word_text(b, 'Y').empty()) return;
+    if (b.moves) ++stats.output_moves;
+    if (!word_text(b, 'X').empty() && !b.relative) offset.x = 0;
+    if (!word_text(b, 'Y').empty() && !b.relative) offset.y = 0;
+    if (!b.unknown.empty()) offset = {};  // homing, offsets: the input's own coordinates again
+  }
+
+  // Fits pts and returns the pieces over pts' indices; splits at sharp turns.
+  bool fit(const std::vector<P>& pts, double tol, std::vector<fit::Piece<double>>& pieces) {
+    std::size_t begin = 0;
+    for (std::size_t k = 1; k <= pts.size() - 1; ++k) {
+      const bool last = k == pts.size() - 1;
+      const bool turn = !last && opts.split_turns && (pts[k] - pts[k - 1]).dot(pts[k + 1] - pts[k]) < 0;
+      if (!last && !turn) continue;
+      const std::vector<P> part(pts.begin() + static_cast<std::ptrdiff_t>(begin),
+                                pts.begin() + static_cast<std::ptrdiff_t>(k) + 1);
+      std::vector<fit::Piece<double>> got;
+      Status status = Status::ok;
+      if (!fit_job(part, {}, tol, opts.criterion, got, error, status)) return false;
+      for (fit::Piece<double> p : got) {
+        p.first += static_cast<std::uint32_t>(begin);
+        p.last += static_cast<std::uint32_t>(begin);
+        pieces.push_back(p);
+      }
+      begin = k;
+      if (opts.progress) opts.progress(current->point_block[k], g.blocks.size());
+    }
+    return true;
+  }
+
+  bool weld(const io::GPolyline& pl) {
+    current = &pl;
+    const double unit = pl.inches ? 25.4 : 1.0;
+    const double tol = opts.tol_mm / unit;
+    // Distinct consecutive points, each with the polyline index it came from.
+    std::vector<P> pts;
+    std::vector<std::size_t> from_index;
+    for (std::size_t k = 0; k < pl.points.size(); ++k) {
+      if (!pts.empty() && pts.back() == pl.points[k]) continue;
+      pts.push_back(pl.points[k]);
+      from_index.push_back(k);
+    }
+    if (pl.relative || pts.size() < 2) {  // G91 polylines are not welded (see README)
+      for (std::size_t i = pl.first_block; i <= pl.last_block; ++i) pass(g.blocks[i]);
+      return true;
+    }
+    const int d0 = stats.decimals;
+    const double budget = 2 * std::pow(10.0, -d0);
+    const double fit_tol = tol > 2 * budget ? tol - budget : tol / 2;
+    // The fit sees the run without its jitter (CAM output is full of 0.0003
+    // mm back-and-forths, each a cusp the fitters must stop at), at a tol
+    // less by how far the skipped points lie from their chords; every piece
+    // is then measured against all the input points (resolve).
+    std::vector<std::size_t> kept_index;
+    double moved = 0;
+    const std::vector<P> simple = without_jitter(pts, tol * opts.jitter, kept_index, moved);
+    std::vector<fit::Piece<double>> pieces;
+    if (!fit(simple, fit_tol - moved, pieces)) return false;
+    for (fit::Piece<double>& pc : pieces) {
+      pc.first = static_cast<std::uint32_t>(kept_index[pc.first]);
+      pc.last = static_cast<std::uint32_t>(kept_index[pc.last]);
+    }
+    ++stats.polylines;
+    std::vector<Planned> plan;
+    P from = pts.front() + offset;
+    if (!resolve(pts, pieces, fit_tol, tol, 0, from, plan)) return false;
+    offset = from - pts.back();
+    std::size_t next_block = pl.first_block;
+    for (std::size_t k = 0; k < plan.size(); ++k) {
+      const fit::Piece<double>& pc = plan[k].piece;
+      const Written& w = plan[k].written;
+      const bool last_piece = k + 1 == plan.size();
+      const std::size_t end_block = last_piece ? pl.last_block : pl.point_block[from_index[pc.last]];
+      if (plan[k].keep) {
+        for (std::size_t i = next_block; i <= end_block; ++i) {
+          emit.verbatim(g.blocks[i]);
+          if (g.blocks[i].moves) ++stats.output_moves;
+        }  // its X/Y words are the input's: offset is zero after it (resolve)
+        next_block = end_block + 1;
+        continue;
+      }
+      stats.max_deviation_mm = std::max(stats.max_deviation_mm, w.deviation * unit);
+      const io::GBlock& eb = g.blocks[pl.point_block[from_index[pc.last]]];
+      std::string line;
+      if (const std::string n = word_text(eb, 'N'); !n.empty()) line = n + " ";
+      line += w.text;
+      if (k == 0)
+        if (const std::string f = word_text(g.blocks[pl.first_block], 'F'); !f.empty()) line += " " + f;
+      for (const std::string& c : eb.comments) line += " " + c;
+      const bool arc = pc.segment.is_arc();
+      emit.written(line, arc, eb.end);
+      ++stats.output_moves;
+      if (arc) ++stats.arcs;
+      // The comments of the replaced lines stay, in order, after the piece.
+      for (std::size_t i = next_block; i <= end_block; ++i) {
+        const io::GBlock& b = g.blocks[i];
+        if (&b == &eb) continue;
+        if (b.only_comment()) {
+          emit.verbatim(b);
+        } else if (!b.comments.empty()) {
+          std::string c;
+          for (const std::string& t : b.comments) c += (c.empty() ? "" : " ") + t;
+          emit.written(c, arc, b.end);
+        }
+      }
+      next_block = end_block + 1;
+    }
+    return true;
+  }
+
+  struct Planned {
+    fit::Piece<double> piece;
+    bool keep = false;  // write its input lines
+    Written written;
+  };
+
+  // Writes each piece from the rounded end of the one before, with more
+  // decimals when rounding costs too much; a piece still over tol (or whose
+  // drawn arc leaves the band, which the vertex criterion allows) is fitted
+  // again with the band criterion at half the tol, once, before its input
+  // lines are kept.
+  bool resolve(const std::vector<P>& pts, const std::vector<fit::Piece<double>>& pieces, double fit_tol,
+               double tol, int depth, P& from, std::vector<Planned>& plan) {
+    for (const fit::Piece<double>& pc : pieces) {
+      Planned pl{pc, false, {}};
+      if (pc.last - pc.first < 2) {  // a single segment: its input line is already the best
+        pl.keep = true;
+        plan.push_back(pl);
+        from = pts[pc.last];
+        continue;
+      }
+      bool ok = false;
+      if (pc.segment.is_arc()) {  // a nearly straight arc (huge radius) is written as a line when one fits
+        const double r = pc.segment.radius();
+        const double half = distance(pc.segment.start, pc.segment.end) / 2;
+        if (half < r && r - std::sqrt(r * r - half * half) < tol) {
+          const Written line = write_piece(Segment<double>::line(pc.segment.start, pc.segment.end), from, pts,
+                                           pc.first, pc.last, stats.decimals, tol);
+          if (line.deviation <= tol) {
+            pl.written = line;
+            pl.piece.segment = Segment<double>::line(pc.segment.start, pc.segment.end);
+            ok = true;
+          }
+        }
+      }
+      for (int d = stats.decimals; d <= stats.decimals + 2 && !ok; ++d) {
+        pl.written = write_piece(pc.segment, from, pts, pc.first, pc.last, d, tol);
+        ok = pl.written.deviation <= tol;
+      }
+      if (ok) {
+        plan.push_back(pl);
+        from = pl.written.end;
+        continue;
+      }
+      if (depth == 0) {
+        const std::vector<P> part(pts.begin() + pc.first, pts.begin() + pc.last + 1);
+        std::vector<fit::Piece<double>> again;
+        Status status = Status::ok;
+        if (!fit_job(part, {}, fit_tol / 2, "band", again, error, status)) return false;
+        for (fit::Piece<double>& p : again) {
+          p.first += pc.first;
+          p.last += pc.first;
+        }
+        if (!resolve(pts, again, fit_tol / 2, tol, 1, from, plan)) return false;
+        continue;
+      }
+      ++stats.kept_pieces;
+      pl.keep = true;
+      plan.push_back(pl);
+      from = pts[pc.last];
+    }
+    return true;
+  }
+};
+
+}  // namespace
+
+bool weld_gcode(const io::GcodeFile& g, const WeldOptions& opts, std::string& out,
+                WeldStats& stats, std::string& error) {
+  stats = WeldStats{};
+  stats.decimals = opts.decimals >= 0 ? opts.decimals : std::max<int>(3, static_cast<int>(g.decimals));
+  out.clear();
+  out.reserve(g.blocks.size() * 24);
+  Welder w{g, opts, stats, Emitter(out), {}};
+  std::size_t next = 0;
+  for (std::size_t p = 0; p < g.polylines.size(); ++p) {
+    const io::GPolyline& pl = g.polylines[p];
+    for (; next < pl.first_block; ++next) w.pass(g.blocks[next]);
+    if (!w.weld(pl)) {
+      error = g.file + ":" + std::to_string(g.blocks[pl.first_block].line) + ": " + w.error;
+      return false;
+    }
+    next = pl.last_block + 1;
+  }
+  for (; next < g.blocks.size(); ++next) w.pass(g.blocks[next]);
+  for (const io::GBlock& b : g.blocks) stats.input_moves += b.moves ? 1 : 0;
+  return true;
+}
+
+}  // namespace kerf::cli

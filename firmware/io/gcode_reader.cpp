@@ -1,0 +1,460 @@
+#include "io/gcode_reader.hpp"
+
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+
+namespace kerf::io {
+
+namespace {
+
+constexpr double kMmPerInch = 25.4;
+
+struct State {
+  Motion motion = Motion::none;
+  bool xy_plane = true;
+  bool inches = false;
+  bool relative = false;
+  bool torch = false;
+  double pos[3] = {0, 0, 0};
+  bool known[3] = {false, false, false};
+};
+
+bool fail(GcodeFile& f, std::size_t line, std::string reason) {
+  f.ok = false;
+  f.line = line;
+  f.reason = std::move(reason);
+  return false;
+}
+
+// Splits the words and comments of one line; false with a reason on a form
+// kerf refuses to guess at.
+bool split_words(GBlock& b, std::string& reason) {
+  const std::string& s = b.text;
+  std::size_t i = 0;
+  while (i < s.size() && (s[i] == ' ' || s[i] == '\t')) ++i;
+  if (i < s.size() && s[i] == '/') return reason = "block delete (/) is not supported", false;
+  if (s.find_first_not_of(" \t", i) != std::string::npos && s[i] == '%' &&
+      s.find_first_not_of(" \t", i + 1) == std::string::npos)
+    return true;  // the tape mark
+  while (i < s.size()) {
+    const char c = s[i];
+    if (c == ' ' || c == '\t') {
+      ++i;
+    } else if (c == ';') {
+      b.comments.push_back(s.substr(i));
+      break;
+    } else if (c == '(') {
+      const std::size_t close = s.find(')', i);
+      if (close == std::string::npos) return reason = "unclosed ( comment", false;
+      b.comments.push_back(s.substr(i, close + 1 - i));
+      i = close + 1;
+    } else if (c == '#') {
+      return reason = "parameters (#n) are not supported", false;
+    } else if (c == '[') {
+      return reason = "expressions ([...]) are not supported", false;
+    } else if (std::isalpha(static_cast<unsigned char>(c)) != 0) {
+      const char letter = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+      if (letter == 'O') return reason = "O-words (subroutines, program numbers) are not supported", false;
+      std::size_t j = i + 1;
+      std::string number;
+      while (j < s.size() && (s[j] == ' ' || s[j] == '\t')) ++j;
+      if (j < s.size() && (s[j] == '+' || s[j] == '-')) number += s[j++];
+      std::size_t digits = 0, after_point = 0;
+      bool point = false;
+      while (j < s.size()) {
+        if (std::isdigit(static_cast<unsigned char>(s[j])) != 0) {
+          number += s[j];
+          ++digits;
+          if (point) ++after_point;
+        } else if (s[j] == '.' && !point) {
+          number += '.';
+          point = true;
+        } else if (s[j] != ' ' && s[j] != '\t') {
+          break;
+        }
+        ++j;
+      }
+      if (digits == 0) {
+        const std::size_t next = s.find_first_not_of(" \t", i + 1);
+        if (next != std::string::npos && s[next] == '#') return reason = "parameters (#n) are not supported", false;
+        if (next != std::string::npos && s[next] == '[')
+          return reason = "expressions ([...]) are not supported", false;
+        std::string word(1, c);
+        if (j < s.size() && std::isalpha(static_cast<unsigned char>(s[j])) != 0)
+          return reason = "not a word: \"" + s.substr(i, s.find_first_of(" \t;(", i) - i) +
+                          "\" (macros and named functions are not supported)", false;
+        return reason = "word " + word + " has no number", false;
+      }
+      std::size_t end = j;
+      while (end > i && (s[end - 1] == ' ' || s[end - 1] == '\t')) --end;
+      GWord w;
+      w.letter = letter;
+      w.value = std::strtod(number.c_str(), nullptr);
+      w.pos = i;
+      w.len = end - i;
+      if (!std::isfinite(w.value) || std::fabs(w.value) > kMaxCoordinate)
+        return reason = "number out of range: \"" + s.substr(i, end - i) + "\"", false;
+      if ((letter == 'X' || letter == 'Y') && after_point > b.decimals) b.decimals = after_point;
+      b.words.push_back(w);
+      i = j;
+    } else {
+      return reason = std::string("unexpected character '") + c + "'", false;
+    }
+  }
+  return true;
+}
+
+int code10(double v) { return static_cast<int>(std::lround(v * 10.0)); }
+
+std::string word_text(const GBlock& b, const GWord& w) { return b.text.substr(w.pos, w.len); }
+
+// Applies one block to the modal state; false with a reason on a block kerf
+// cannot follow.
+bool apply_block(GBlock& b, State& st, std::string& reason) {
+  double axis[3] = {0, 0, 0};
+  bool has_axis[3] = {false, false, false};
+  double ij[2] = {0, 0};
+  bool has_ij = false, has_r = false, has_k = false;
+  double r = 0;
+  bool sets_origin = false, loses_position = false, other_words = false;
+  int torch_change = 0;
+  bool seen[26] = {};
+  for (const GWord& w : b.words) {
+    const char L = w.letter;
+    if (L != 'G' && L != 'M') {
+      if (seen[L - 'A']) return reason = std::string("word ") + L + " appears twice", false;
+      seen[L - 'A'] = true;
+    }
+    switch (L) {
+      case 'G': {
+        const int g = code10(w.value);
+        if (g == 0 || g == 10 || g == 20 || g == 30) {
+          st.motion = g == 0 ? Motion::rapid : g == 10 ? Motion::linear : g == 20 ? Motion::cw : Motion::ccw;
+          b.motion_word = true;
+        } else if (g == 170 || g == 180 || g == 190) {
+          st.xy_plane = g == 170;
+          other_words = true;
+        } else if (g == 200 || g == 210) {
+          const bool inches = g == 200;
+          if (inches != st.inches)
+            for (double& p : st.pos) p = inches ? p / kMmPerInch : p * kMmPerInch;
+          st.inches = inches;
+          other_words = true;
+        } else if (g == 900 || g == 910) {
+          st.relative = g == 910;
+          other_words = true;
+        } else if (g == 920) {
+          sets_origin = true;
+          other_words = true;
+        } else if (g == 40 || g == 400 || g == 490 || g == 610 || g == 640 || g == 800 || g == 940) {
+          other_words = true;  // dwell, no compensation, exact/blend, cancel, feed mode: no XY change
+        } else {
+          b.unknown.push_back(word_text(b, w));
+          loses_position = true;  // homing, work offsets, ...: kerf no longer knows where it is
+          other_words = true;
+        }
+        break;
+      }
+      case 'M': {
+        const int m = code10(w.value);
+        if (m == 30 || m == 40) torch_change = 1;
+        else if (m == 50) torch_change = -1;
+        else if (m == 70 || m == 80 || m == 90 || m == 0 || m == 10 || m == 20 || m == 300) {
+        } else b.unknown.push_back(word_text(b, w));
+        other_words = true;
+        break;
+      }
+      case 'X': case 'Y': case 'Z': {
+        const int k = L - 'X';
+        axis[k] = w.value;
+        has_axis[k] = true;
+        break;
+      }
+      case 'I': ij[0] = w.value; has_ij = true; break;
+      case 'J': ij[1] = w.value; has_ij = true; break;
+      case 'K': has_k = true; break;
+      case 'R': r = w.value; has_r = true; break;
+      case 'F': b.has_f = true; break;
+      case 'N': break;
+      case 'S': case 'T': case 'P': other_words = true; break;
+      default: b.unknown.push_back(word_text(b, w)); other_words = true; break;
+    }
+  }
+  if (torch_change != 0) st.torch = torch_change > 0;
+  for (int k = 0; k < 3; ++k) b.start[k] = st.pos[k];
+  b.known_start = st.known[0] && st.known[1];
+  const bool any_axis = has_axis[0] || has_axis[1] || has_axis[2];
+  if (sets_origin) {  // G92: the current point gets the given coordinates
+    for (int k = 0; k < 3; ++k)
+      if (has_axis[k]) st.pos[k] = axis[k], st.known[k] = true;
+  } else if (loses_position) {
+    for (bool& k : st.known) k = false;
+  } else if (any_axis || has_ij || has_r) {
+    if (st.motion == Motion::none) return reason = "axis words with no motion mode (G0, G1, G2 or G3)", false;
+    for (int k = 0; k < 3; ++k) {
+      if (!has_axis[k]) continue;
+      if (st.relative) st.pos[k] += axis[k];
+      else st.pos[k] = axis[k], st.known[k] = true;
+    }
+    b.moves = true;
+    const bool arc = st.motion == Motion::cw || st.motion == Motion::ccw;
+    if (arc && st.xy_plane) {
+      if (has_ij == has_r) return reason = has_r ? "an arc with both R and I/J" : "an arc without I J or R", false;
+      if (has_k) return reason = "K on an arc in the XY plane (G17)", false;
+      if (has_ij) {
+        b.centre[0] = b.start[0] + ij[0];
+        b.centre[1] = b.start[1] + ij[1];
+      } else {
+        const double dx = st.pos[0] - b.start[0], dy = st.pos[1] - b.start[1];
+        const double d = std::hypot(dx, dy);
+        if (d == 0) return reason = "an R arc needs an end point away from its start", false;
+        double h2 = r * r - d * d / 4;
+        if (h2 < 0) {
+          if (d / 2 - std::fabs(r) > 1e-6 * (1 + std::fabs(r)))
+            return reason = "R is smaller than half the distance to the end point", false;
+          h2 = 0;
+        }
+        // Centre left of the chord for a CCW arc under 180 degrees (R > 0).
+        double h = std::sqrt(h2) / d;
+        if ((st.motion == Motion::cw) != (r < 0)) h = -h;
+        b.centre[0] = b.start[0] + dx / 2 - h * dy;
+        b.centre[1] = b.start[1] + dy / 2 + h * dx;
+      }
+    } else if (!arc && (has_ij || has_r)) {
+      return reason = "I, J or R on a move that is not an arc", false;
+    }
+    (void)other_words;
+    b.xy_line = st.motion == Motion::linear && st.xy_plane && !has_axis[2] && b.known_start &&
+                b.unknown.empty() && !other_words;
+  }
+  for (int k = 0; k < 3; ++k) b.end_pos[k] = st.pos[k];
+  b.motion = st.motion;
+  b.xy_plane = st.xy_plane;
+  b.inches = st.inches;
+  b.relative = st.relative;
+  b.torch = st.torch;
+  return true;
+}
+
+void collect_polylines(GcodeFile& f) {
+  GPolyline cur;
+  bool open = false;
+  auto close = [&] {
+    if (open && cur.points.size() >= 2) f.polylines.push_back(std::move(cur));
+    cur = GPolyline{};
+    open = false;
+  };
+  for (std::size_t i = 0; i < f.blocks.size(); ++i) {
+    const GBlock& b = f.blocks[i];
+    if (b.only_comment()) continue;  // comments and blank lines do not break a run
+    if (!b.xy_line || (open && b.has_f)) close();
+    if (!b.xy_line) continue;
+    if (!open) {
+      open = true;
+      cur.first_block = i;
+      cur.points.push_back({b.start[0], b.start[1]});
+      cur.point_block.push_back(i);
+      cur.inches = b.inches;
+      cur.relative = b.relative;
+    }
+    cur.points.push_back({b.end_pos[0], b.end_pos[1]});
+    cur.point_block.push_back(i);
+    cur.last_block = i;
+  }
+  close();
+}
+
+}  // namespace
+
+GcodeFile parse_gcode(std::string_view text, std::string display_name) {
+  GcodeFile f;
+  f.file = std::move(display_name);
+  State st;
+  std::size_t i = 0, line = 0;
+  while (i < text.size()) {
+    ++line;
+    std::size_t j = i;
+    while (j < text.size() && text[j] != '\n' && text[j] != '\r') ++j;
+    GBlock b;
+    b.line = line;
+    b.text.assign(text.substr(i, j - i));
+    if (j < text.size()) {
+      const bool crlf = text[j] == '\r' && j + 1 < text.size() && text[j + 1] == '\n';
+      b.end.assign(text.substr(j, crlf ? 2 : 1));
+      j += crlf ? 2 : 1;
+    }
+    i = j;
+    std::string reason;
+    if (b.text.find('\0') != std::string::npos) reason = "a NUL byte (not a text file?)";
+    if (!reason.empty() || !split_words(b, reason) || !apply_block(b, st, reason)) {
+      fail(f, line, reason);
+      return f;
+    }
+    if (b.decimals > f.decimals) f.decimals = b.decimals;
+    f.blocks.push_back(std::move(b));
+  }
+  collect_polylines(f);
+  f.ok = true;
+  return f;
+}
+
+GcodeFile read_gcode(const std::string& path) {
+  const bool use_stdin = path == "-";
+  std::FILE* in = use_stdin ? stdin : std::fopen(path.c_str(), "rb");
+  GcodeFile f;
+  f.file = use_stdin ? "<stdin>" : path;
+  if (in == nullptr) {
+    f.reason = std::strerror(errno);
+    return f;
+  }
+  std::string text;
+  char buf[65536];
+  std::size_t n = 0;
+  while ((n = std::fread(buf, 1, sizeof buf, in)) > 0) text.append(buf, n);
+  const bool bad = std::ferror(in) != 0;
+  if (!use_stdin) std::fclose(in);
+  if (bad) {
+    f.reason = "read error";
+    return f;
+  }
+  return parse_gcode(text, f.file);
+}
+
+std::string describe_error(const GcodeFile& f) {
+  return f.line == 0 ? f.file + ": " + f.reason : f.file + ":" + std::to_string(f.line) + ": " + f.reason;
+}
+
+namespace {
+
+// Points along an arc from `from` (exclusive) to `to` (inclusive), chord error
+// below `chord`.
+void sample_arc(Vec2<double> from, Vec2<double> to, Vec2<double> c, bool ccw, double chord,
+                std::vector<Vec2<double>>& out) {
+  const double r = (from - c).norm();
+  const double a0 = std::atan2(from.y - c.y, from.x - c.x);
+  const double a1 = std::atan2(to.y - c.y, to.x - c.x);
+  const double two_pi = 2 * 3.14159265358979323846;
+  double sweep = ccw ? a1 - a0 : a0 - a1;
+  while (sweep <= 1e-12) sweep += two_pi;  // equal ends: a full circle
+  const double step = r > chord ? 2 * std::acos(1 - chord / r) : sweep;
+  std::size_t n = static_cast<std::size_t>(std::ceil(sweep / step));
+  if (n < 1) n = 1;
+  if (n > 100000) n = 100000;
+  for (std::size_t k = 1; k < n; ++k) {
+    const double a = a0 + (ccw ? 1 : -1) * sweep * static_cast<double>(k) / static_cast<double>(n);
+    out.push_back({c.x + r * std::cos(a), c.y + r * std::sin(a)});
+  }
+  out.push_back(to);
+}
+
+}  // namespace
+
+bool gcode_job_from(const GcodeFile& g, PointFile& out, std::string& error) {
+  out = PointFile{};
+  out.file = g.file;
+  auto refuse = [&](std::size_t line, const std::string& why) {
+    out.ok = false;
+    out.line = line;
+    out.reason = why;
+    error = g.file + ":" + std::to_string(line) + ": " + why;
+    return false;
+  };
+  if (!g.ok) return refuse(g.line, g.reason);
+  bool uses_torch = false;
+  for (const GBlock& b : g.blocks)
+    for (const GWord& w : b.words)
+      if (w.letter == 'M' && (code10(w.value) == 30 || code10(w.value) == 40)) uses_torch = true;
+  bool open = false;
+  bool torch = false;
+  std::size_t path_start = 0;
+  auto close = [&] {
+    if (open && out.points.size() - path_start < 2) {  // a lone point (a plunge): no path
+      out.points.resize(path_start);
+      out.point_lines.resize(path_start);
+    } else if (open) {
+      out.path_begin.push_back(path_start);
+    }
+    open = false;
+  };
+  auto add = [&](Vec2<double> p, std::size_t line, double scale) {
+    p = {p.x * scale, p.y * scale};
+    if (out.points.size() > path_start && out.points.back() == p) {
+      ++out.duplicates_dropped;
+      return;
+    }
+    out.points.push_back(p);
+    out.point_lines.push_back(line);
+  };
+  std::vector<Vec2<double>> arc;
+  for (const GBlock& b : g.blocks) {
+    if (!b.unknown.empty()) return refuse(b.line, "unsupported word \"" + b.unknown.front() + "\"");
+    if (b.torch != torch) close();
+    torch = b.torch;
+    if (!b.moves) continue;
+    const bool feed = b.motion != Motion::rapid;
+    const bool cutting = feed && (!uses_torch || b.torch);
+    if (!cutting) {
+      close();
+      continue;
+    }
+    if (!b.xy_plane && (b.motion == Motion::cw || b.motion == Motion::ccw))
+      return refuse(b.line, "an arc outside the XY plane (G18/G19) cannot be cut");
+    if (!b.known_start) {
+      const bool xy_still = b.motion == Motion::linear && b.start[0] == b.end_pos[0] && b.start[1] == b.end_pos[1];
+      if (xy_still) continue;  // a Z move before any X Y: no point of a path
+      return refuse(b.line, "a cut from an unknown position (no absolute X and Y yet)");
+    }
+    const double scale = b.inches ? kMmPerInch : 1.0;
+    const Vec2<double> from{b.start[0], b.start[1]};
+    const Vec2<double> to{b.end_pos[0], b.end_pos[1]};
+    if (!open) {
+      open = true;
+      path_start = out.points.size();
+      add(from, b.line, scale);
+    }
+    if (b.motion == Motion::linear) {
+      add(to, b.line, scale);
+    } else {
+      arc.clear();
+      sample_arc(from, to, {b.centre[0], b.centre[1]}, b.motion == Motion::ccw, 0.001 / scale, arc);
+      for (const Vec2<double>& p : arc) add(p, b.line, scale);
+    }
+  }
+  close();
+  if (out.path_begin.empty()) {
+    refuse(0, "no cut moves (G1/G2/G3 with the torch on)");
+    error = g.file + ": " + out.reason;
+    return false;
+  }
+  out.ok = true;
+  return true;
+}
+
+bool read_gcode_job(const std::string& path, PointFile& out, std::string& error) {
+  const GcodeFile g = read_gcode(path);
+  if (!g.ok) {
+    out = PointFile{};
+    out.file = g.file;
+    out.line = g.line;
+    out.reason = g.reason;
+    error = describe_error(g);
+    return false;
+  }
+  return gcode_job_from(g, out, error);
+}
+
+bool is_gcode_path(const std::string& path) {
+  const std::size_t dot = path.find_last_of('.');
+  if (dot == std::string::npos || path.find('/', dot) != std::string::npos) return false;
+  std::string ext;
+  for (char c : path.substr(dot + 1)) ext += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  for (const char* e : {"nc", "ngc", "gcode", "gco", "gc", "tap", "cnc"})
+    if (ext == e) return true;
+  return false;
+}
+
+}  // namespace kerf::io

@@ -1,0 +1,186 @@
+// `kerf weld` on the G-code corpus (tests/data/gcode): per file, the reader's
+// and the welder's lines per second and the output/input move ratio at
+// tol 0.025 mm, with the ArcWelder ratios issue 10 quotes and a greedy
+// welder measured here (greedy_moves) for comparison.
+// Prints figures measured in this run; it asserts nothing about speed.
+//
+// usage: kerf_bench_weld [--criterion band|vertex|both] [--tol MM] [--no-split] [--jitter F] [FILE...]
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli/weld.hpp"
+#include "io/gcode_reader.hpp"
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// A greedy welder in ArcWelder's manner, as a baseline measured here: from
+// each piece's start, extend the piece one point at a time while the circle
+// through its first, middle and last point (or the line, when no circle
+// fits) keeps every inner point within tol and, at samples tol/4 apart, stays
+// within tol of the polyline (at most 256 samples); stop at the first
+// point that fails. Returns the
+// pieces (moves) for one run.
+using P = kerf::Vec2<double>;
+
+double seg_dist(P a, P b, P p) {
+  const P d = b - a;
+  const double l2 = d.norm2();
+  double t = l2 > 0 ? d.dot(p - a) / l2 : 0;
+  t = t < 0 ? 0 : t > 1 ? 1 : t;
+  return (p - (a + d * t)).norm();
+}
+
+bool fits(const std::vector<P>& p, std::size_t i, std::size_t j, double tol) {
+  const P a = p[i], m = p[(i + j) / 2], b = p[j];
+  // Circumcentre of a, m, b.
+  const double d = 2 * ((m - a).cross(b - a));
+  bool arc = std::fabs(d) > 1e-12 && j - i >= 2;
+  P c{};
+  double r = 0;
+  if (arc) {
+    const P u = m - a, v = b - a;
+    c = a + P{(v.y * u.norm2() - u.y * v.norm2()) / d, (u.x * v.norm2() - v.x * u.norm2()) / d};
+    r = (a - c).norm();
+    arc = r < 1e6;
+  }
+  auto on_piece = [&](double t) {  // t in [0,1] along the piece
+    if (!arc) return a + (b - a) * t;
+    const double a0 = std::atan2(a.y - c.y, a.x - c.x);
+    double sweep = std::atan2(b.y - c.y, b.x - c.x) - a0;
+    const bool ccw = (m - a).cross(b - a) > 0;  // a left turn at m
+    if (ccw && sweep < 0) sweep += 2 * M_PI;
+    if (!ccw && sweep > 0) sweep -= 2 * M_PI;
+    return P{c.x + r * std::cos(a0 + sweep * t), c.y + r * std::sin(a0 + sweep * t)};
+  };
+  double length = 0;
+  for (int k = 1; k <= 8; ++k) length += (on_piece(k / 8.0) - on_piece((k - 1) / 8.0)).norm();
+  const int n = std::clamp(static_cast<int>(std::ceil(4 * length / tol)), 8, 256);  // as kerf weld's cap
+  // The piece near the polyline, and every inner point near the piece.
+  for (int k = 1; k < n; ++k) {
+    const P q = on_piece(static_cast<double>(k) / n);
+    double best = 1e300;
+    for (std::size_t s = i; s < j; ++s) best = std::min(best, seg_dist(p[s], p[s + 1], q));
+    if (best > tol) return false;
+  }
+  for (std::size_t k = i + 1; k < j; ++k) {
+    double best = 1e300;
+    P prev = a;
+    for (int t = 1; t <= n; ++t) {
+      const P q = on_piece(static_cast<double>(t) / n);
+      best = std::min(best, seg_dist(prev, q, p[k]));
+      prev = q;
+    }
+    if (best > tol) return false;
+  }
+  return true;
+}
+
+std::size_t greedy_moves(const std::vector<P>& p, double tol) {
+  std::size_t moves = 0;
+  for (std::size_t i = 0; i + 1 < p.size();) {
+    std::size_t j = i + 1;
+    while (j + 1 < p.size() && fits(p, i, j + 1, tol)) ++j;
+    ++moves;
+    i = j;
+  }
+  return moves;
+}
+
+std::size_t greedy_file(const kerf::io::GcodeFile& g, double tol_mm) {
+  std::size_t moves = 0, replaced = 0;
+  for (const kerf::io::GPolyline& pl : g.polylines) {
+    std::vector<P> p;
+    for (const P& q : pl.points)
+      if (p.empty() || !(p.back() == q)) p.push_back(q);
+    replaced += pl.points.size() - 1;
+    moves += p.size() < 2 || pl.relative ? pl.points.size() - 1 : greedy_moves(p, tol_mm / (pl.inches ? 25.4 : 1.0));
+  }
+  std::size_t all = 0;
+  for (const kerf::io::GBlock& b : g.blocks) all += b.moves ? 1 : 0;
+  return all - replaced + moves;
+}
+
+// ArcWelder at 0.025 mm, travel arcs allowed (issue 10); 0 when not quoted.
+double arcwelder_ratio(const std::string& path) {
+  if (path.find("jsdc-laser") != std::string::npos) return 0.037;
+  if (path.find("tball-engrave") != std::string::npos) return 0.025;
+  if (path.find("tball-pocket") != std::string::npos) return 0.069;
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  double tol = 0.025;
+  std::vector<std::string> criteria{"band", "vertex"};
+  bool split = true;
+  double jitter = kerf::cli::WeldOptions{}.jitter;
+  std::vector<std::string> files;
+  for (int k = 1; k < argc; ++k) {
+    if (std::strcmp(argv[k], "--tol") == 0 && k + 1 < argc) tol = std::atof(argv[++k]);
+    else if (std::strcmp(argv[k], "--criterion") == 0 && k + 1 < argc) {
+      const std::string c = argv[++k];
+      criteria = c == "both" ? std::vector<std::string>{"band", "vertex"} : std::vector<std::string>{c};
+    } else if (std::strcmp(argv[k], "--no-split") == 0) split = false;
+    else if (std::strcmp(argv[k], "--jitter") == 0 && k + 1 < argc) jitter = std::atof(argv[++k]);
+    else files.emplace_back(argv[k]);
+  }
+  if (files.empty())
+    for (const char* f : {"cncjs_jsdc-laser.gcode", "cncjs_tball-engrave.gcode", "cncjs_tball-pocket.gcode",
+                          "cncjs_Circle_Diamond_Square_Calibration.gcode", "cncjs_sample_slic3r.gcode",
+                          "cncjs_octocat.gcode"})
+      files.push_back(std::string(KERF_GCODE_DIR) + "/" + f);
+  std::printf("tol %.4g mm, split at sharp turns: %s, jitter %.3g tol\n", tol, split ? "yes" : "no", jitter);
+  std::printf("%-46s %-7s %8s %8s %7s %9s %8s %12s %12s\n", "file", "crit", "in", "out", "ratio",
+              "arcwelder", "greedy", "read lines/s", "weld lines/s");
+  for (const std::string& path : files) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    const std::string text = ss.str();
+    auto t0 = std::chrono::steady_clock::now();
+    const kerf::io::GcodeFile g = kerf::io::parse_gcode(text, path);
+    const double read_s = seconds_since(t0);
+    if (!g.ok) {
+      std::fprintf(stderr, "%s\n", kerf::io::describe_error(g).c_str());
+      return 1;
+    }
+    const std::size_t greedy = greedy_file(g, tol);
+    for (const std::string& c : criteria) {
+      kerf::cli::WeldOptions o;
+      o.tol_mm = tol;
+      o.criterion = c;
+      o.split_turns = split;
+      o.jitter = jitter;
+      std::string out, error;
+      kerf::cli::WeldStats st;
+      t0 = std::chrono::steady_clock::now();
+      if (!kerf::cli::weld_gcode(g, o, out, st, error)) {
+        std::fprintf(stderr, "%s\n", error.c_str());
+        return 1;
+      }
+      const double weld_s = seconds_since(t0) + read_s;
+      const double lines = static_cast<double>(g.blocks.size());
+      const std::string name = path.substr(path.find_last_of('/') + 1);
+      std::printf("%-46s %-7s %8zu %8zu %6.2f%% %8.1f%% %7.2f%% %12.0f %12.0f\n", name.c_str(), c.c_str(),
+                  st.input_moves, st.output_moves,
+                  100.0 * static_cast<double>(st.output_moves) / static_cast<double>(st.input_moves),
+                  100.0 * arcwelder_ratio(path),
+                  100.0 * static_cast<double>(greedy) / static_cast<double>(st.input_moves), lines / read_s,
+                  lines / weld_s);
+      std::fflush(stdout);
+    }
+  }
+  return 0;
+}
