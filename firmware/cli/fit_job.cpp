@@ -5,6 +5,7 @@
 
 #include <cstdio>
 #include "io/band_storage.hpp"
+#include "io/gcode_reader.hpp"
 #include "io/fit_storage.hpp"
 #include "kerf/fit/band_fit.hpp"
 
@@ -16,6 +17,12 @@ bool criterion_supported(const std::string& criterion) {
 
 bool read_job(const std::string& file, const std::string& criterion, io::PointFile& out,
               const JobColumns& columns) {
+  if (io::is_gcode_path(file)) {  // a G-code job: its cut paths, arcs sampled
+    std::string error;
+    if (io::read_gcode_job(file, out, error)) return true;
+    std::fprintf(stderr, "%s\n", error.c_str());
+    return false;
+  }
   out = io::read_points(file, columns.angles);
   if (out.ok && !out.tols.empty() && criterion != "band") {
     out.line = out.point_lines.empty() ? 0 : out.point_lines[0];

@@ -24,7 +24,9 @@ struct JobColumns {
   bool angles = false;
 };
 
-// Reads a job's point file ("-": stdin). When it cannot be used (unreadable,
+// Reads a job's point file ("-": stdin), or a G-code file (by its extension:
+// .nc .ngc .gcode ...: the torch-on moves, split into paths at rapids and
+// torch-off). When it cannot be used (unreadable,
 // bad points, or a per-point tol or tangent column the criterion or command
 // cannot use) prints "FILE:LINE: reason" on stderr and returns false.
 bool read_job(const std::string& file, const std::string& criterion, io::PointFile& out,

@@ -153,3 +153,25 @@ INSTANTIATE_TEST_SUITE_P(Wires, SimCommand, ::testing::Values(Wire::tcp, Wire::r
 
 }  // namespace
 }  // namespace kerf::test
+
+namespace kerf::test {
+namespace {
+
+// A G-code job (by its extension): its torch-on moves, split into paths at
+// rapids, fitted and cut like a point file's paths.
+TEST(SimCommandGcode, RunsAGcodeJobPathByPath) {
+  cli::SimOptions o;
+  o.file = std::string(KERF_GCODE_DIR) + "/cncjs_jsdc-laser.gcode";
+  o.report = ::testing::TempDir() + "kerf_sim_gcode_" + std::to_string(::getpid()) + ".json";
+  ASSERT_EQ(cli::run_sim(o), 0);
+  const std::string rep = slurp(o.report);
+  EXPECT_NE(rep.find("\"state\": \"done\""), std::string::npos) << rep;
+  EXPECT_EQ(json_number(rep, "paths"), 5.0);  // J, S, D's outside and inside, C
+  EXPECT_EQ(json_number(rep, "pierces"), 5.0);
+  EXPECT_EQ(json_number(rep, "segments_executed"), json_number(rep, "segments_planned"));
+  EXPECT_LE(json_number(rep, "max_path_deviation_mm"), 0.025 + 0.001);
+  std::remove(o.report.c_str());
+}
+
+}  // namespace
+}  // namespace kerf::test
