@@ -86,9 +86,8 @@ int run_run(const RunOptions& opts) {
   if (!read_job(opts.job, cfg.fit.criterion, in)) return kExitUsage;
   FittedJob fitted;
   if (const int rc = fit_paths_or_say(in, cfg.fit.criterion, cfg.fit.tol, cfg.cut.feed / 60.0, fitted); rc != 0) return rc;
-  std::unique_ptr<control::Journal> journal;
-  control::ResumePoint from;
-  if (!open_journal(opts.journal, opts.resume, fitted.job, journal, from)) return kExitUsage;
+  // The devices before the journal: a new journal replaces the old one, which
+  // must not happen for a run that cannot even start.
   std::unique_ptr<hal::Gpio> gpio = open_gpio(cfg, opts.sim_gpio, error);
   if (!gpio) {
     std::fprintf(stderr, "kerf: run: %s\n", error.c_str());
@@ -99,6 +98,9 @@ int run_run(const RunOptions& opts) {
     std::fprintf(stderr, "kerf: run: %s: %s\n", config::to_string(cfg.link.kind), error.c_str());
     return kExitFailure;
   }
+  std::unique_ptr<control::Journal> journal;
+  control::ResumePoint from;
+  if (!open_journal(opts.journal, opts.resume, fitted.job, journal, from)) return kExitUsage;
   const hal::RtSetup rt = hal::rt_setup(cfg.rt.priority, cfg.rt.lock_memory);
   if (!rt.warning.empty()) std::fprintf(stderr, "kerf: run: %s\n", rt.warning.c_str());
   struct sigaction sa {};
