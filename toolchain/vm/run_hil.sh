@@ -21,7 +21,7 @@ fi
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
 rm -f "$out/rc" "$out/console.log"
-{ echo "cd '$out' || exit 97"; cat "$script"; } > "$out/run.sh"
+{ echo "cd '$out' || exit 97"; echo "export TMPDIR=/run TEST_TMPDIR=/run/"; cat "$script"; } > "$out/run.sh"
 # The VM's own wall-clock limit; the script's tests have their own.
 timeout "${KERF_VM_TIMEOUT:-150}" qemu-system-x86_64 -accel tcg -m 512M -smp 1 -nographic -no-reboot \
   -kernel "$kernel" -initrd "$initrd" \
