@@ -11,9 +11,14 @@ hal::BoardStatus CanPlant::truth() {
 }
 
 bool CanPlant::inject(const BoardFault& f) {
-  if (f.kind != BoardFaultKind::drive_fault) return false;  // Modbus link faults have no CAN meaning
-  link_->inject(CanFaultKind::emcy);
-  return true;
+  switch (f.kind) {
+    case BoardFaultKind::drive_fault:  // a drive's fault reaches the master as its EMCY
+    case BoardFaultKind::emcy: link_->inject(CanFaultKind::emcy); return true;
+    case BoardFaultKind::heartbeat_loss: link_->inject(CanFaultKind::heartbeat_loss); return true;
+    case BoardFaultKind::bus_off: link_->inject(CanFaultKind::bus_off); return true;
+    case BoardFaultKind::enable_refused: link_->inject(CanFaultKind::enable_refused); return true;
+    default: return false;  // Modbus link faults have no CAN meaning
+  }
 }
 
 std::unique_ptr<CanPlant> make_can_plant(const CanSimOptions& opts, std::string& error) {

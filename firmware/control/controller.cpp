@@ -144,9 +144,7 @@ void Controller::cycle(double now_s) {
   }
   if (fresh) record_completions();
   if (!trip.empty()) {
-    if (cut_was_on && fresh) {
-      torch_ = true;  // stop() records where the cut ended, then switches it off (already off)
-    }
+    if (cut_was_on && fresh) torch_went_off();  // the torch went off above, before the link I/O
     stop(trip_state, trip, now_s);
     return;
   }
@@ -219,12 +217,21 @@ void Controller::record_completions() {
 }
 
 void Controller::record_cut_to() {
-  if (!torch_) return;
+  if (torch_) record_cut_point();
+}
+
+void Controller::record_cut_point() {
   const std::int64_t k = job_segment_of(st_.executing);
   if (k < 0 || k != report_.last_completed + 1) return;
   report_.has_cut_to = true;
   report_.cut_to = {static_cast<std::uint32_t>(k), st_.position};
   if (journal_) journal_->cut_to(report_.cut_to);
+}
+
+void Controller::torch_went_off() {
+  record_cut_point();  // the cut ends where the torch goes off
+  report_.torch_off_valid = true;
+  report_.torch_off_at = st_.position;
 }
 
 bool Controller::set_torch(bool on, double now_s) {
@@ -238,9 +245,7 @@ bool Controller::set_torch(bool on, double now_s) {
 void Controller::stop(State s, const std::string& why, double now_s) {
   if (state_ == State::fault || state_ == State::estop) return;
   if (torch_) {
-    record_cut_to();  // the cut ends where the torch goes off
-    report_.torch_off_valid = true;
-    report_.torch_off_at = st_.position;
+    torch_went_off();
     torch_ = false;
     gpio_.set_torch(false);
   }

@@ -100,7 +100,9 @@ class Controller {
   bool pump();  // sends what the board has room for; false on a link error
   bool block_done() const;
   void record_completions();
-  void record_cut_to();
+  void record_cut_to();     // while the torch is on: how far the cut has come
+  void record_cut_point();  // the board's position on the running segment, to the journal
+  void torch_went_off();    // the cut point and the report's torch-off position
   bool set_torch(bool on, double now_s);
   void stop(State s, const std::string& why, double now_s);
   void path_finished(double now_s);

@@ -50,8 +50,8 @@ class ModbusPlant final : public SimPlant {
         return true;
       case BoardFaultKind::crc_error: server_->corrupt_crc(3); return true;
       case BoardFaultKind::drive_fault: board_.inject_fault(hal::kFaultDrive); return true;
+      default: return false;  // the CAN bus's faults
     }
-    return false;
   }
 
  private:
@@ -73,6 +73,14 @@ std::unique_ptr<SimPlant> make_modbus_plant(const SimMachineConfig& cfg, double 
   auto plant = std::make_unique<ModbusPlant>(bc, std::move(exec));
   if (!plant->open(cfg, link_watchdog_s, error)) return nullptr;
   return plant;
+}
+
+SimMachineResult run_sim_machine(const Job& job, const ControllerConfig& ccfg, const SimMachineConfig& mcfg,
+                                 hal::Gpio& gpio, Journal* journal, const ResumePoint& from) {
+  SimMachineResult res;
+  std::unique_ptr<SimPlant> plant = make_modbus_plant(mcfg, ccfg.link_watchdog_s, res.setup_error);
+  if (!plant) return res;
+  return run_sim_machine(job, ccfg, mcfg, *plant, gpio, journal, from);
 }
 
 }  // namespace kerf::control

@@ -17,6 +17,10 @@ const char* to_string(BoardFaultKind k) {
     case BoardFaultKind::modbus_exception: return "modbus-exception";
     case BoardFaultKind::crc_error: return "crc-error";
     case BoardFaultKind::drive_fault: return "drive-fault";
+    case BoardFaultKind::heartbeat_loss: return "heartbeat-loss";
+    case BoardFaultKind::emcy: return "emcy";
+    case BoardFaultKind::bus_off: return "bus-off";
+    case BoardFaultKind::enable_refused: return "enable-refused";
   }
   return "unknown";
 }
@@ -30,14 +34,6 @@ SimMachineConfig sim_machine_config(const config::Config& cfg) {
   m.motion.counts_per_mm = cfg.machine.axes.empty() ? 1000.0 : cfg.machine.axes.front().counts_per_mm;
   m.cycle_s = cfg.machine.cycle;
   return m;
-}
-
-SimMachineResult run_sim_machine(const Job& job, const ControllerConfig& ccfg, const SimMachineConfig& mcfg,
-                                 hal::Gpio& gpio, Journal* journal, const ResumePoint& from) {
-  SimMachineResult res;
-  std::unique_ptr<SimPlant> plant = make_modbus_plant(mcfg, ccfg.link_watchdog_s, res.setup_error);
-  if (!plant) return res;
-  return run_sim_machine(job, ccfg, mcfg, *plant, gpio, journal, from);
 }
 
 SimMachineResult run_sim_machine(const Job& job, const ControllerConfig& ccfg, const SimMachineConfig& mcfg,

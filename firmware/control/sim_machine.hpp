@@ -25,7 +25,12 @@ class SimPlant;
 namespace kerf::control {
 
 // Faults the board side can suffer; GPIO faults go through the Gpio script.
-enum class BoardFaultKind : std::uint8_t { link_drop, link_stall, modbus_exception, crc_error, drive_fault };
+// The Modbus link's faults, a drive fault, and the CAN bus's and drives'
+// (heartbeat_loss and on): each plant takes the ones it has.
+enum class BoardFaultKind : std::uint8_t {
+  link_drop, link_stall, modbus_exception, crc_error, drive_fault,
+  heartbeat_loss, emcy, bus_off, enable_refused
+};
 const char* to_string(BoardFaultKind k);
 
 struct BoardFault {
