@@ -124,7 +124,7 @@ Result<std::uint32_t> count_at(const Problem<S>& pb, S scale, std::uint32_t budg
 template <class S>
 Result<S> bisect_scale(const Problem<S>& pb, std::uint32_t pieces, S hi, S rel) {
   std::uint32_t* pred = nullptr;
-  S lo = hi * S(1e-12);
+  S lo = band_detail::smallest_scale(hi);
   {
     const Result<std::uint32_t> c = count_at(pb, lo, pieces, pred);
     if (!c.ok()) return c.status();

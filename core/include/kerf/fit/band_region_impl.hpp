@@ -1,6 +1,7 @@
 // Definitions behind fit/band_region.hpp (see the construction there).
 #pragma once
 
+#include "kerf/fit/band_numeric.hpp"
 #include "kerf/fit/band_region.hpp"
 
 namespace kerf::fit {
@@ -63,8 +64,7 @@ void BandRegion<S>::set_vertex(std::uint32_t k, S left, S right) {
   const S si = M::abs(v.b.cross(n1));
   const S c = (left - right) / S(2);
   const S w = (left + right) / S(2);
-  const S disc = w * w - c * c * si * si;
-  const S root = M::sqrt(disc > S(0) ? disc : S(0));
+  const S root = band_detail::gate_root(w, c, si);
   // A side of width 0 has a gate half of exactly 0 (the formula leaves a
   // rounding residue, which would put a chain point next to, not on, p_k).
   v.gate_left = left == S(0) ? S(0) : max_of(S(0), c * co + root);
