@@ -119,12 +119,21 @@ Result<std::uint32_t> count_at(const Problem<S>& pb, S scale, std::uint32_t budg
   return count_in(pb, build_region(pb, scale), budget, pred);
 }
 
+// The widest width at scale 1, in the scaled problem.
+template <class S>
+S widest_scaled(const Problem<S>& pb) {
+  S w = S(0);
+  for (std::size_t k = 0; k < pb.pts.size(); ++k)
+    w = max_of(w, max_of(pb.widths[k].left, pb.widths[k].right));
+  return w * pb.factor;
+}
+
 // Smallest scale in (0, hi] (to `rel` relative) at which `pieces` suffice,
 // given that they suffice at hi.
 template <class S>
 Result<S> bisect_scale(const Problem<S>& pb, std::uint32_t pieces, S hi, S rel) {
   std::uint32_t* pred = nullptr;
-  S lo = band_detail::smallest_scale(hi);
+  S lo = smallest_scale(hi, widest_scaled(pb));
   {
     const Result<std::uint32_t> c = count_at(pb, lo, pieces, pred);
     if (!c.ok()) return c.status();
