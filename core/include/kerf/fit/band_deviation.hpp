@@ -18,6 +18,7 @@
 // centre, which is far away on nearly straight arcs.
 #pragma once
 
+#include "kerf/fit/band_numeric.hpp"
 #include "kerf/fit/band_region.hpp"
 #include "kerf/geom/segment.hpp"
 
@@ -152,12 +153,12 @@ S band_deviation(const BandRegion<S>& r, std::uint32_t i, std::uint32_t j, Vec2<
     const S hi = arc.sigma(to);
     auto consider = [&](Vec2<S> x) {
       const S s = arc.sigma(x);
-      if (!(s < lo) && !(s > hi)) worst = max_of(worst, distance_to_line_segment(p0, p1, x));
+      if (!(s < lo) && !(s > hi)) worst = max_of(worst, band_detail::distance_to_edge(p0, p1, x));
     };
-    worst = max_of(worst, distance_to_line_segment(p0, p1, from));
-    worst = max_of(worst, distance_to_line_segment(p0, p1, to));
+    worst = max_of(worst, band_detail::distance_to_edge(p0, p1, from));
+    worst = max_of(worst, band_detail::distance_to_edge(p0, p1, to));
     if (!arc.line()) {
-      const Vec2<S> e = (p1 - p0) * (S(1) / (p1 - p0).norm());
+      const Vec2<S> e = (p1 - p0) * (S(1) / band_detail::length(p1 - p0));
       Vec2<S> pts[2];
       const Vec2<S> ends[2] = {p0, p1};
       for (const Vec2<S>& base : ends) {

@@ -12,6 +12,7 @@
 
 #include <type_traits>  // freestanding
 
+#include "kerf/geom/segment.hpp"
 #include "kerf/geom/vec2.hpp"
 
 namespace kerf::fit::band_detail {
@@ -95,19 +96,43 @@ void balance(S* v, int count) {
 // The lower end of the scales bisect_scale tries, below hi; `widest` is the
 // widest width at scale 1 in the scaled problem. Floating point: 1e-12 of
 // hi. Fixed point: 2^-20 of hi (R narrows a width to 0 below that anyway,
-// band_region.hpp), but no scale at which the widest width is below 2^-16
-// (65536 steps): narrower, gates and chains are a few steps long and the
-// pair test's verdicts are noise, which would pass a count no real band
-// allows (seen on the G-code corpus: 22 pieces, some far outside the band).
+// band_region.hpp), but no scale at which the widest width is below 2^-24
+// (256 steps). Narrower, the gates are a few steps long and the pair test
+// passes pieces far outside the band: on the calibration G-code, a floor of
+// 2^-30 gave 24 pieces instead of 25, one 16 mm out; 2^-27 and 2^-24 match
+// double on every test curve and G-code polyline. (A floor of 2^-16 was too
+// high: it stopped the parabola's tie-break at 0.01 at 0.78 of the band,
+// where double goes on to 0.64 and other piece boundaries.)
 template <class S>
 S smallest_scale(S hi, S widest) {
   if constexpr (kFloating<S>) {
     (void)widest;
     return hi * S(1e-12);
   } else {
-    const S floor = (S(1) / S(65536)) / widest;
+    const S floor = (S(1) / S(1L << 24)) / widest;
     const S lo = max_of(hi / S(1048576), floor);
     return lo < hi ? lo : hi / S(2);
+  }
+}
+
+// Distance from x to the segment p0 -> p1 (geom/segment.hpp's
+// distance_to_line_segment). In fixed point its squared lengths would
+// quantize a distance below 2^-16 to sqrt of a step, 2^-16 itself (the
+// reported error of band pieces was exactly that): lengths go through
+// length(), and the offset is taken against the unit direction.
+template <class S>
+S distance_to_edge(Vec2<S> p0, Vec2<S> p1, Vec2<S> x) {
+  if constexpr (kFloating<S>) {
+    return distance_to_line_segment(p0, p1, x);
+  } else {
+    const Vec2<S> d = p1 - p0;
+    const S len = length(d);
+    if (len == S(0)) return length(x - p0);
+    const Vec2<S> e = d * (S(1) / len);
+    const S t = e.dot(x - p0);
+    if (t <= S(0)) return length(x - p0);
+    if (t >= len) return length(x - p1);
+    return Scalar<S>::abs(e.cross(x - p0));
   }
 }
 
