@@ -53,6 +53,7 @@ TEST(ConfigFiles, PlasmaTableExampleLoads) {
 
   EXPECT_EQ(c.fit.criterion, "band");
   EXPECT_EQ(c.fit.tol, 0.025);
+  EXPECT_EQ(c.fit.numeric, "double");
   EXPECT_EQ(c.cut.feed, 3000);
   EXPECT_EQ(c.cut.pierce_delay, 0.5);
   EXPECT_EQ(c.cut.arc_ok_timeout, 3.0);
