@@ -169,7 +169,8 @@ class BandPair {
   void segment(PsiRange<S>& r, Vec2<S> lo, Vec2<S> hi, Vec2<S> q1, Vec2<S> q2) const {
     const Vec2<S> dq = q2 - q1;
     const Vec2<S> fq = dq * f_;  // in the pair's frame
-    // (q1 - mid).dq, and the same at q2; all of degree 2, balanced together.
+    // area and offset of q1, (q1 - mid).dq, |dq|^2, dq.n and 2 (q2 - mid).dq:
+    // all of degree 2 in lengths, so balanced together (band_numeric.hpp).
     S v[6] = {area(q1), offset(q1), fq.dot(((q1 - a_) + (q1 - b_)) * f_) / S(2), fq.norm2(),
               fq.dot(n_), fq.dot(((q2 - a_) + (q2 - b_)) * f_)};
     band_detail::balance(v, 6);
