@@ -1,0 +1,267 @@
+// Streaming vertex-criterion fits in memory fixed at compile time.
+//
+// PointWindow<S, N> takes the points one by one and hands each piece to a
+// sink as soon as it is decided. It keeps at most N points (the window) and,
+// for each, the shortest-path label of the fewest-pieces search (fit/fit.hpp,
+// fit/min_count.hpp), built incrementally: a new point m gets
+// d(m) = 1 + min d(i) over the starts i that reach it, and pred(m) = the
+// nearest such i (the whole-input search's own rule). The feasibility test
+// and the monotone guard are the whole-input fitter's (detail::Oracle).
+//
+// Which paths can still become the optimum: only through a *frontier* node,
+// a point whose start is still alive at m (prefix_guard passes for every end
+// seen so far, a necessary condition for reaching any later point), and m
+// itself. Any complete path's last node inside the window is such a node,
+// reached by a shortest path (else shorten it). So the candidates are the
+// shortest paths to the frontier nodes, and every one of them shares the
+// pieces from the root to the nodes' lowest common ancestor in the pred tree.
+// Those pieces are *decided*: emitting them loses nothing, and afterwards
+// every label stays exact (a node below the ancestor is reached through it).
+//
+// A *forced commit* happens when the window is full and the next point
+// arrives before a decision. It commits the best prefix: the path to the
+// frontier node in the newer half of the window (index >= root + H, H =
+// floor((N - 1) / 2)) with the fewest pieces, the newest on ties; the window
+// is then relabelled from that node, exactly.
+//
+// The bound (proof sketch). Let r_1 < ... < r_F be the forced cut points,
+// r_0 = 0, r_{F+1} = n - 1, OPT(a, b) the fewest pieces from p_a to p_b.
+//  (1) count = sum_k OPT(r_k, r_{k+1}). Decided commits keep the labels
+//      exact (above); a forced commit relabels from r_k exactly; so each
+//      block is fitted by the exact search restricted to it.
+//  (2) F <= floor((n - 1) / H): every forced commit moves the root by >= H.
+//  (3) count <= OPT + F (L - 1), L the longest piece (in index steps) of
+//      an optimal solution P. Replace each piece a -> b of P that has a cut
+//      strictly inside by its b - a one-step pieces (a step p_k -> p_{k+1}
+//      is always valid): +(b - a - 1) <= L - 1 per cut at most, and the
+//      result passes through every r_k, so by (1) it bounds the count.
+//  (4) count <= OPT + F for inputs where a valid piece a -> b stays valid
+//      when cut at an inner point (a -> r and r -> b valid): each cut then
+//      costs one piece. Collinear points reach this exactly. The vertex
+//      criterion does not guarantee that property (pieces pass through
+//      their end points), which is why (3) is the general bound.
+//  (5) With no forced commit, count = OPT (by (1)). That is the case when
+//      the window is longer than every stretch a start stays alive over.
+//
+// No allocation, no exceptions, no OS header: all storage is members.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "kerf/fit/fit_impl.hpp"
+
+namespace kerf::fit {
+
+struct StreamStats {
+  std::uint64_t points = 0;  // accepted so far
+  std::uint64_t pieces = 0;  // emitted so far
+  std::uint32_t forced = 0;  // forced commits
+  std::uint32_t peak = 0;    // the most points the window held at once
+};
+
+// N: the capacity (compile time). The window actually used can be smaller
+// (start(..., window)), so one build serves several window lengths.
+template <class S, std::size_t N>
+class PointWindow {
+  static_assert(N >= 4 && N < 0x40000000u, "a window holds 4 .. 2^30 points");
+
+ public:
+  static constexpr std::uint32_t kCapacity = static_cast<std::uint32_t>(N);
+
+  PointWindow() = default;
+  // The angle set points into this object's own storage.
+  PointWindow(const PointWindow&) = delete;
+  PointWindow& operator=(const PointWindow&) = delete;
+
+  // Starts a new stream. invalid_argument: tol not finite and > 0, or a
+  // window outside [4, N].
+  Status start(S tol, Method method, std::uint32_t window = kCapacity) {
+    if (!detail::tol_ok(tol) || window < 4 || window > kCapacity) return Status::invalid_argument;
+    eps_ = tol;
+    method_ = method;
+    window_ = window;
+    size_ = 0;
+    base_ = 0;
+    stats_ = StreamStats{};
+    return Status::ok;
+  }
+
+  // Adds the next point; the sink is called as sink(piece, forced_end) for
+  // each piece decided, forced_end marking the last piece of a forced
+  // commit (its end is a cut r_k). degenerate: p equals the previous point;
+  // invalid_argument: p not finite; capacity_exceeded: 2^32 points.
+  template <class Sink>
+  Status push(Vec2<S> p, Sink& sink) {
+    if (!Scalar<S>::is_finite(p.x) || !Scalar<S>::is_finite(p.y)) return Status::invalid_argument;
+    if (size_ > 0 && pts_[size_ - 1] == p) return Status::degenerate;
+    if (base_ + size_ >= 0xFFFFFFFFu) return Status::capacity_exceeded;
+    if (size_ == window_) force(sink);
+    const std::uint32_t m = size_++;
+    pts_[m] = p;
+    ++stats_.points;
+    if (size_ > stats_.peak) stats_.peak = size_;
+    if (m == 0) {
+      dist_[0] = 0;
+      pred_[0] = 0;
+      live_[0] = 1;
+      hint_[0] = 0;
+      return Status::ok;
+    }
+    label_new(m);
+    decide(sink);
+    return Status::ok;
+  }
+
+  // Ends the stream: emits the rest of the path to the last point.
+  // invalid_argument if fewer than two points came.
+  template <class Sink>
+  Status finish(Sink& sink) {
+    if (stats_.points < 2) return Status::invalid_argument;
+    if (size_ > 1) commit(size_ - 1, false, sink);
+    return Status::ok;
+  }
+
+  const StreamStats& stats() const { return stats_; }
+  std::uint32_t window() const { return window_; }
+
+ private:
+  detail::Oracle<S> oracle() {
+    set_ = AngleSet<S>(Span<Interval<S>>(sets_, kSetHalf), Span<Interval<S>>(sets_ + kSetHalf, kSetHalf));
+    return detail::Oracle<S>{pts_, eps_, method_, &set_};
+  }
+
+  // d and pred of the newest point m; drops starts whose guard fails at m.
+  void label_new(std::uint32_t m) {
+    detail::Oracle<S> o = oracle();
+    std::uint32_t best_d = dist_[m - 1] + 1;
+    std::uint32_t best_i = m - 1;  // one step is always a valid piece
+    for (std::uint32_t i = m - 1; i-- > 0;) {
+      if (live_[i] == 0) continue;
+      if (!o.alive(i, m)) {
+        live_[i] = 0;
+        continue;
+      }
+      if (dist_[i] + 1 < best_d && o(i, m, hint_[i])) {
+        best_d = dist_[i] + 1;
+        best_i = i;
+      }
+    }
+    dist_[m] = best_d;
+    pred_[m] = best_i;
+    live_[m] = 1;
+    hint_[m] = 0;
+  }
+
+  // Labels every node again from the root (local 0), after a forced commit.
+  // Liveness does not depend on the root, so it is kept.
+  void relabel() {
+    detail::Oracle<S> o = oracle();
+    for (std::uint32_t v = 1; v < size_; ++v) {
+      std::uint32_t best_d = dist_[v - 1] + 1;
+      std::uint32_t best_i = v - 1;
+      for (std::uint32_t i = v - 1; i-- > 0;) {
+        std::uint32_t hint = 0;
+        if (dist_[i] + 1 < best_d && o.alive(i, v) && o(i, v, hint)) {
+          best_d = dist_[i] + 1;
+          best_i = i;
+        }
+      }
+      dist_[v] = best_d;
+      pred_[v] = best_i;
+    }
+    for (std::uint32_t v = 0; v < size_; ++v) hint_[v] = 0;
+  }
+
+  // Emits the pieces every candidate shares: root -> lowest common
+  // ancestor of the frontier in the pred tree.
+  template <class Sink>
+  void decide(Sink& sink) {
+    std::uint32_t total = 0;
+    for (std::uint32_t v = 0; v < size_; ++v) {
+      cnt_[v] = 0;
+      total += live_[v];
+    }
+    for (std::uint32_t v = size_; v-- > 1;) {
+      cnt_[v] += live_[v];
+      if (cnt_[v] > 0) cnt_[pred_[v]] += cnt_[v];
+    }
+    std::uint32_t lca = 0;
+    for (std::uint32_t v = size_; v-- > 1;) {
+      if (cnt_[v] == total) {
+        lca = v;
+        break;
+      }
+    }
+    if (lca > 0) commit(lca, false, sink);
+  }
+
+  template <class Sink>
+  void force(Sink& sink) {
+    const std::uint32_t half = (window_ - 1) / 2;
+    std::uint32_t best = size_ - 1;  // the newest point is always on the frontier
+    for (std::uint32_t v = size_ - 1; v-- > half;)
+      if (live_[v] != 0 && dist_[v] < dist_[best]) best = v;
+    ++stats_.forced;
+    commit(best, true, sink);
+    relabel();
+  }
+
+  // Emits root -> r along pred and makes r the root (local 0).
+  template <class Sink>
+  void commit(std::uint32_t r, bool forced, Sink& sink) {
+    std::uint32_t k = 0;
+    for (std::uint32_t v = r; v != 0; v = pred_[v]) path_[k++] = v;
+    std::uint32_t i = 0;
+    while (k-- > 0) {
+      const std::uint32_t j = path_[k];
+      sink(make_piece(i, j), forced && k == 0);
+      ++stats_.pieces;
+      i = j;
+    }
+    shift(r);
+  }
+
+  Piece<S> make_piece(std::uint32_t i, std::uint32_t j) {
+    (void)oracle();  // points set_ at this object's storage
+    const PieceFit<S> f = detail::choose_piece(pts_, i, j, eps_, method_, set_);
+    const Chord<S> chord(pts_[i], pts_[j]);
+    const Vec2<S> centre = f.line ? Vec2<S>{} : chord.centre(f.direction);
+    const Segment<S> seg = make_segment(chord, pts_ + i + 1, j - i - 1, f.line, centre, eps_);
+    return Piece<S>{static_cast<std::uint32_t>(base_ + i), static_cast<std::uint32_t>(base_ + j),
+                    seg, f.error};
+  }
+
+  void shift(std::uint32_t r) {
+    for (std::uint32_t v = r; v < size_; ++v) {
+      const std::uint32_t w = v - r;
+      pts_[w] = pts_[v];
+      dist_[w] = dist_[v];
+      pred_[w] = pred_[v] >= r ? pred_[v] - r : 0;  // below r: a dead non-descendant
+      live_[w] = live_[v];
+      hint_[w] = hint_[v];
+    }
+    size_ -= r;
+    base_ += r;
+  }
+
+  static constexpr std::size_t kSetHalf = 3 * N + 8;  // fit.hpp's workspace_intervals / 2
+
+  S eps_{};
+  Method method_ = Method::optimal;
+  std::uint32_t window_ = kCapacity;
+  std::uint32_t size_ = 0;   // points held; local 0 is the root
+  std::uint64_t base_ = 0;   // stream index of local 0
+  StreamStats stats_{};
+  Vec2<S> pts_[N]{};
+  std::uint32_t dist_[N]{};
+  std::uint32_t pred_[N]{};
+  std::uint32_t hint_[N]{};
+  std::uint32_t cnt_[N]{};
+  std::uint32_t path_[N]{};
+  std::uint8_t live_[N]{};
+  Interval<S> sets_[2 * kSetHalf]{};
+  AngleSet<S> set_{Span<Interval<S>>(sets_, kSetHalf), Span<Interval<S>>(sets_ + kSetHalf, kSetHalf)};
+};
+
+}  // namespace kerf::fit
