@@ -264,4 +264,9 @@ class PointWindow {
   AngleSet<S> set_{Span<Interval<S>>(sets_, kSetHalf), Span<Interval<S>>(sets_ + kSetHalf, kSetHalf)};
 };
 
+// A compiled instance (src/stream_double.cpp), so that the core's symbol
+// scan covers the streaming code: the pieces of a stream fit, 0 on an error.
+std::uint64_t stream_count_window64(PointWindow<double, 64>& w, Span<const Vec2<double>> pts,
+                                    double tol);
+
 }  // namespace kerf::fit
