@@ -138,14 +138,15 @@ class PointWindow {
     std::uint32_t best_i = m - 1;  // one step is always a valid piece
     for (std::uint32_t i = m - 1; i-- > 0;) {
       if (live_[i] == 0) continue;
-      if (!o.alive(i, m)) {
-        live_[i] = 0;
-        continue;
-      }
       if (dist_[i] + 1 < best_d && o(i, m, hint_[i])) {
         best_d = dist_[i] + 1;
         best_i = i;
+        continue;
       }
+      // The guard is the search's cost: like min_count, ask it after a failed
+      // test, and otherwise at every kGuardEvery-th end. Checking it at fewer
+      // ends only keeps a start alive longer, which is still sound.
+      if ((dist_[i] + 1 < best_d || (m - i) % kGuardEvery == 0) && !o.alive(i, m)) live_[i] = 0;
     }
     dist_[m] = best_d;
     pred_[m] = best_i;
@@ -245,6 +246,7 @@ class PointWindow {
     base_ += r;
   }
 
+  static constexpr std::uint32_t kGuardEvery = 8;
   static constexpr std::size_t kSetHalf = 3 * N + 8;  // fit.hpp's workspace_intervals / 2
 
   S eps_{};
@@ -253,14 +255,16 @@ class PointWindow {
   std::uint32_t size_ = 0;   // points held; local 0 is the root
   std::uint64_t base_ = 0;   // stream index of local 0
   StreamStats stats_{};
-  Vec2<S> pts_[N]{};
-  std::uint32_t dist_[N]{};
-  std::uint32_t pred_[N]{};
-  std::uint32_t hint_[N]{};
-  std::uint32_t cnt_[N]{};
-  std::uint32_t path_[N]{};
-  std::uint8_t live_[N]{};
-  Interval<S> sets_[2 * kSetHalf]{};
+  // Left uninitialised on purpose (each slot is written before it is read),
+  // so that a big capacity costs only the pages a window actually uses.
+  Vec2<S> pts_[N];
+  std::uint32_t dist_[N];
+  std::uint32_t pred_[N];
+  std::uint32_t hint_[N];
+  std::uint32_t cnt_[N];
+  std::uint32_t path_[N];
+  std::uint8_t live_[N];
+  Interval<S> sets_[2 * kSetHalf];
   AngleSet<S> set_{Span<Interval<S>>(sets_, kSetHalf), Span<Interval<S>>(sets_ + kSetHalf, kSetHalf)};
 };
 
