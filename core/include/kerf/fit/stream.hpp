@@ -128,7 +128,7 @@ class PointWindow {
  private:
   detail::Oracle<S> oracle() {
     set_ = AngleSet<S>(Span<Interval<S>>(sets_, kSetHalf), Span<Interval<S>>(sets_ + kSetHalf, kSetHalf));
-    return detail::Oracle<S>{pts_, eps_, method_, &set_};
+    return detail::Oracle<S>{pts_.item, eps_, method_, &set_};
   }
 
   // d and pred of the newest point m; drops starts whose guard fails at m.
@@ -225,10 +225,10 @@ class PointWindow {
 
   Piece<S> make_piece(std::uint32_t i, std::uint32_t j) {
     (void)oracle();  // points set_ at this object's storage
-    const PieceFit<S> f = detail::choose_piece(pts_, i, j, eps_, method_, set_);
+    const PieceFit<S> f = detail::choose_piece(pts_.item, i, j, eps_, method_, set_);
     const Chord<S> chord(pts_[i], pts_[j]);
     const Vec2<S> centre = f.line ? Vec2<S>{} : chord.centre(f.direction);
-    const Segment<S> seg = make_segment(chord, pts_ + i + 1, j - i - 1, f.line, centre, eps_);
+    const Segment<S> seg = make_segment(chord, pts_.item + i + 1, j - i - 1, f.line, centre, eps_);
     return Piece<S>{static_cast<std::uint32_t>(base_ + i), static_cast<std::uint32_t>(base_ + j),
                     seg, f.error};
   }
@@ -255,16 +255,25 @@ class PointWindow {
   std::uint32_t size_ = 0;   // points held; local 0 is the root
   std::uint64_t base_ = 0;   // stream index of local 0
   StreamStats stats_{};
-  // Left uninitialised on purpose (each slot is written before it is read),
-  // so that a big capacity costs only the pages a window actually uses.
-  Vec2<S> pts_[N];
-  std::uint32_t dist_[N];
-  std::uint32_t pred_[N];
-  std::uint32_t hint_[N];
-  std::uint32_t cnt_[N];
-  std::uint32_t path_[N];
-  std::uint8_t live_[N];
-  Interval<S> sets_[2 * kSetHalf];
+  // Left unconstructed on purpose (each slot is written before it is read;
+  // Vec2 and Interval would zero themselves), so that a big capacity costs
+  // only the pages a window actually uses.
+  template <class T, std::size_t M>
+  struct Slots {
+    union {
+      T item[M];
+    };
+    Slots() {}
+    operator T*() { return item; }
+  };
+  Slots<Vec2<S>, N> pts_;
+  Slots<std::uint32_t, N> dist_;
+  Slots<std::uint32_t, N> pred_;
+  Slots<std::uint32_t, N> hint_;
+  Slots<std::uint32_t, N> cnt_;
+  Slots<std::uint32_t, N> path_;
+  Slots<std::uint8_t, N> live_;
+  Slots<Interval<S>, 2 * kSetHalf> sets_;
   AngleSet<S> set_{Span<Interval<S>>(sets_, kSetHalf), Span<Interval<S>>(sets_ + kSetHalf, kSetHalf)};
 };
 
