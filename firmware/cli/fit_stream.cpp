@@ -112,9 +112,9 @@ int run_fit_stream(const FitOptions& opts) {
     const Status s = got == PointStream::Next::error ? Status::invalid_argument : w->push(p, out);
     if (got == PointStream::Next::error || s != Status::ok) {
       const std::string why = got == PointStream::Next::error ? in.reason() : to_string(s);
-      std::fprintf(stderr, "%s:%zu: %s (the %llu pieces before it are already written)\n",
-                   in.file().c_str(), in.line(), why.c_str(),
-                   static_cast<unsigned long long>(w->stats().pieces));
+      const unsigned long long done = w->stats().pieces;
+      std::fprintf(stderr, "%s:%zu: %s (%llu %s before it already written)\n", in.file().c_str(),
+                   in.line(), why.c_str(), done, done == 1 ? "piece" : "pieces");
       return kExitUsage;
     }
     if (out.failed) break;
