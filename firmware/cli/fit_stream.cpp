@@ -133,7 +133,8 @@ int run_fit_stream(const FitOptions& opts) {
     return kExitFailure;
   }
   std::string summary = "kerf: " + in.file() + ": " + std::to_string(st.points) + " points, " +
-                        std::to_string(st.pieces) + " pieces, max error " +
+                        std::to_string(st.pieces) + (st.pieces == 1 ? " piece" : " pieces") +
+                        ", max error " +
                         io::format_number(out.max_error) + ", window " + std::to_string(window) +
                         " (most held " + std::to_string(st.peak) + "), " +
                         std::to_string(st.forced) + " forced commits";

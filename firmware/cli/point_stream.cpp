@@ -94,8 +94,8 @@ PointStream::Next PointStream::next(Vec2<double>& p) {
     }
     const char* hash = static_cast<const char*>(std::memchr(buf_, '#', len));
     const char* end = hash != nullptr ? hash : buf_ + len;
-    // Up to three fields, separated by blanks or one comma with blanks.
-    const char* field[3][2];
+    // Fields separated by blanks or one comma with blanks; two are kept.
+    const char* field[2][2];
     int fields = 0;
     const char* c = buf_;
     while (c < end && is_blank(*c)) ++c;
@@ -103,9 +103,10 @@ PointStream::Next PointStream::next(Vec2<double>& p) {
       const char* start = c;
       while (c < end && !is_blank(*c) && *c != ',') ++c;
       if (c == start) return fail("empty field");
-      if (fields == 3) return fail("expected 2 columns, got more");
-      field[fields][0] = start;
-      field[fields][1] = c;
+      if (fields < 2) {
+        field[fields][0] = start;
+        field[fields][1] = c;
+      }
       ++fields;
       while (c < end && is_blank(*c)) ++c;
       if (c < end && *c == ',') {
@@ -119,8 +120,8 @@ PointStream::Next PointStream::next(Vec2<double>& p) {
       continue;
     }
     if (fields != 2)
-      return fail("expected 2 columns, got " + std::string(fields == 1 ? "1" : "more") +
-                  " (--stream fits x y points by the vertex criterion)");
+      return fail(std::string("expected 2 columns, got ").append(std::to_string(fields))
+                      .append(" (--stream fits x y points by the vertex criterion)"));
     if (blank_after_points_)
       return fail("a second path (points after a blank line): --stream fits one path");
     Vec2<double> q;
