@@ -63,32 +63,43 @@ struct StreamStats {
   std::uint32_t peak = 0;    // the most points the window held at once
 };
 
+namespace detail {
+
+// Storage left unconstructed on purpose (each slot is written before it is
+// read; Vec2 and Interval would zero themselves), so that a big capacity
+// costs only the pages a window actually uses.
+template <class T, std::size_t M>
+struct Slots {
+  union {
+    T item[M];
+  };
+  Slots() {}
+  operator T*() { return item; }
+  operator const T*() const { return item; }
+};
+
+// The window and the decision rule, for any criterion. Criterion supplies
+//   kLag      labels trail the newest point by this many points (a band
+//             gate depends on the next point);
+//   kContext  points kept before the root (a band gate depends on the
+//             previous one);
+//   prepare(pts, size), called when the points changed;
+//   feasible(pts, i, j, hint), alive(pts, i, j), piece(pts, i, j) on local
+//   indices, as the whole-input search's oracle.
 // N: the capacity (compile time). The window actually used can be smaller
-// (start(..., window)), so one build serves several window lengths.
-template <class S, std::size_t N>
-class PointWindow {
-  static_assert(N >= 4 && N < 0x40000000u, "a window holds 4 .. 2^30 points");
+// (begin(window)), so one build serves several window lengths.
+template <class S, std::size_t N, class Criterion>
+class StreamEngine {
+  static_assert(N >= 8 && N < 0x40000000u, "a window holds 8 .. 2^30 points");
 
  public:
   static constexpr std::uint32_t kCapacity = static_cast<std::uint32_t>(N);
+  static constexpr std::uint32_t kMinWindow = 4 + Criterion::kLag + Criterion::kContext;
 
-  PointWindow() = default;
-  // The angle set points into this object's own storage.
-  PointWindow(const PointWindow&) = delete;
-  PointWindow& operator=(const PointWindow&) = delete;
-
-  // Starts a new stream. invalid_argument: tol not finite and > 0, or a
-  // window outside [4, N].
-  Status start(S tol, Method method, std::uint32_t window = kCapacity) {
-    if (!detail::tol_ok(tol) || window < 4 || window > kCapacity) return Status::invalid_argument;
-    eps_ = tol;
-    method_ = method;
-    window_ = window;
-    size_ = 0;
-    base_ = 0;
-    stats_ = StreamStats{};
-    return Status::ok;
-  }
+  StreamEngine() = default;
+  // The criterion may point into its own storage.
+  StreamEngine(const StreamEngine&) = delete;
+  StreamEngine& operator=(const StreamEngine&) = delete;
 
   // Adds the next point; the sink is called as sink(piece, forced_end) for
   // each piece decided, forced_end marking the last piece of a forced
@@ -105,13 +116,16 @@ class PointWindow {
     ++stats_.points;
     if (size_ > stats_.peak) stats_.peak = size_;
     if (m == 0) {
+      root_ = 0;
+      labeled_ = 1;
       dist_[0] = 0;
       pred_[0] = 0;
       live_[0] = 1;
       hint_[0] = 0;
       return Status::ok;
     }
-    label_new(m);
+    crit_.prepare(pts_, size_);
+    while (labeled_ + Criterion::kLag < size_) label(labeled_++);
     decide(sink);
     return Status::ok;
   }
@@ -121,27 +135,40 @@ class PointWindow {
   template <class Sink>
   Status finish(Sink& sink) {
     if (stats_.points < 2) return Status::invalid_argument;
-    if (size_ > 1) commit(size_ - 1, false, sink);
+    if (size_ > root_ + 1) {
+      crit_.prepare(pts_, size_);
+      while (labeled_ < size_) label(labeled_++);
+      commit(size_ - 1, false, sink);
+    }
     return Status::ok;
   }
 
   const StreamStats& stats() const { return stats_; }
   std::uint32_t window() const { return window_; }
 
- private:
-  detail::Oracle<S> oracle() {
-    set_ = AngleSet<S>(Span<Interval<S>>(sets_, kSetHalf), Span<Interval<S>>(sets_ + kSetHalf, kSetHalf));
-    return detail::Oracle<S>{pts_.item, eps_, method_, &set_};
+ protected:
+  Status begin(std::uint32_t window) {
+    if (window < kMinWindow || window > kCapacity) return Status::invalid_argument;
+    window_ = window;
+    size_ = 0;
+    root_ = 0;
+    labeled_ = 0;
+    base_ = 0;
+    stats_ = StreamStats{};
+    return Status::ok;
   }
 
-  // d and pred of the newest point m; drops starts whose guard fails at m.
-  void label_new(std::uint32_t m) {
-    detail::Oracle<S> o = oracle();
-    std::uint32_t best_d = dist_[m - 1] + 1;
-    std::uint32_t best_i = m - 1;  // one step is always a valid piece
-    for (std::uint32_t i = m - 1; i-- > 0;) {
+  Criterion crit_;
+
+ private:
+  // d and pred of node v, the next one to label; drops starts whose guard
+  // fails at v.
+  void label(std::uint32_t v) {
+    std::uint32_t best_d = dist_[v - 1] + 1;
+    std::uint32_t best_i = v - 1;  // one step is always a valid piece
+    for (std::uint32_t i = v - 1; i-- > root_;) {
       if (live_[i] == 0) continue;
-      if (dist_[i] + 1 < best_d && o(i, m, hint_[i])) {
+      if (dist_[i] + 1 < best_d && crit_.feasible(pts_, i, v, hint_[i])) {
         best_d = dist_[i] + 1;
         best_i = i;
         continue;
@@ -149,24 +176,25 @@ class PointWindow {
       // The guard is the search's cost: like min_count, ask it after a failed
       // test, and otherwise at every kGuardEvery-th end. Checking it at fewer
       // ends only keeps a start alive longer, which is still sound.
-      if ((dist_[i] + 1 < best_d || (m - i) % kGuardEvery == 0) && !o.alive(i, m)) live_[i] = 0;
+      if ((dist_[i] + 1 < best_d || (v - i) % kGuardEvery == 0) && !crit_.alive(pts_, i, v))
+        live_[i] = 0;
     }
-    dist_[m] = best_d;
-    pred_[m] = best_i;
-    live_[m] = 1;
-    hint_[m] = 0;
+    dist_[v] = best_d;
+    pred_[v] = best_i;
+    live_[v] = 1;
+    hint_[v] = 0;
   }
 
-  // Labels every node again from the root (local 0), after a forced commit.
+  // Labels every node again from the root, after a forced commit.
   // Liveness does not depend on the root, so it is kept.
   void relabel() {
-    detail::Oracle<S> o = oracle();
-    for (std::uint32_t v = 1; v < size_; ++v) {
+    crit_.prepare(pts_, size_);
+    for (std::uint32_t v = root_ + 1; v < labeled_; ++v) {
       std::uint32_t best_d = dist_[v - 1] + 1;
       std::uint32_t best_i = v - 1;
-      for (std::uint32_t i = v - 1; i-- > 0;) {
+      for (std::uint32_t i = v - 1; i-- > root_;) {
         std::uint32_t hint = 0;
-        if (dist_[i] + 1 < best_d && o.alive(i, v) && o(i, v, hint)) {
+        if (dist_[i] + 1 < best_d && crit_.alive(pts_, i, v) && crit_.feasible(pts_, i, v, hint)) {
           best_d = dist_[i] + 1;
           best_i = i;
         }
@@ -174,7 +202,7 @@ class PointWindow {
       dist_[v] = best_d;
       pred_[v] = best_i;
     }
-    for (std::uint32_t v = 0; v < size_; ++v) hint_[v] = 0;
+    for (std::uint32_t v = root_; v < labeled_; ++v) hint_[v] = 0;
   }
 
   // Emits the pieces every candidate shares: root -> lowest common
@@ -182,93 +210,76 @@ class PointWindow {
   template <class Sink>
   void decide(Sink& sink) {
     std::uint32_t total = 0;
-    for (std::uint32_t v = 0; v < size_; ++v) {
+    for (std::uint32_t v = root_; v < labeled_; ++v) {
       cnt_[v] = 0;
       total += live_[v];
     }
-    for (std::uint32_t v = size_; v-- > 1;) {
+    for (std::uint32_t v = labeled_; v-- > root_ + 1;) {
       cnt_[v] += live_[v];
       if (cnt_[v] > 0) cnt_[pred_[v]] += cnt_[v];
     }
-    std::uint32_t lca = 0;
-    for (std::uint32_t v = size_; v-- > 1;) {
+    for (std::uint32_t v = labeled_; v-- > root_ + 1;) {
       if (cnt_[v] == total) {
-        lca = v;
-        break;
+        commit(v, false, sink);
+        return;
       }
     }
-    if (lca > 0) commit(lca, false, sink);
   }
 
   template <class Sink>
   void force(Sink& sink) {
     const std::uint32_t half = (window_ - 1) / 2;
-    std::uint32_t best = size_ - 1;  // the newest point is always on the frontier
-    for (std::uint32_t v = size_ - 1; v-- > half;)
+    std::uint32_t best = labeled_ - 1;  // the newest labelled point is always on the frontier
+    for (std::uint32_t v = labeled_ - 1; v-- > root_ + half;)
       if (live_[v] != 0 && dist_[v] < dist_[best]) best = v;
     ++stats_.forced;
     commit(best, true, sink);
     relabel();
   }
 
-  // Emits root -> r along pred and makes r the root (local 0).
+  // Emits root -> r along pred and makes r the root.
   template <class Sink>
   void commit(std::uint32_t r, bool forced, Sink& sink) {
     std::uint32_t k = 0;
-    for (std::uint32_t v = r; v != 0; v = pred_[v]) path_[k++] = v;
-    std::uint32_t i = 0;
+    for (std::uint32_t v = r; v != root_; v = pred_[v]) path_[k++] = v;
+    std::uint32_t i = root_;
     while (k-- > 0) {
       const std::uint32_t j = path_[k];
-      sink(make_piece(i, j), forced && k == 0);
+      Piece<S> piece = crit_.piece(pts_, i, j);
+      piece.first = static_cast<std::uint32_t>(base_ + i);
+      piece.last = static_cast<std::uint32_t>(base_ + j);
+      sink(piece, forced && k == 0);
       ++stats_.pieces;
       i = j;
     }
     shift(r);
   }
 
-  Piece<S> make_piece(std::uint32_t i, std::uint32_t j) {
-    (void)oracle();  // points set_ at this object's storage
-    const PieceFit<S> f = detail::choose_piece(pts_.item, i, j, eps_, method_, set_);
-    const Chord<S> chord(pts_[i], pts_[j]);
-    const Vec2<S> centre = f.line ? Vec2<S>{} : chord.centre(f.direction);
-    const Segment<S> seg = make_segment(chord, pts_.item + i + 1, j - i - 1, f.line, centre, eps_);
-    return Piece<S>{static_cast<std::uint32_t>(base_ + i), static_cast<std::uint32_t>(base_ + j),
-                    seg, f.error};
-  }
-
+  // Drops the points before r (keeping kContext of them).
   void shift(std::uint32_t r) {
-    for (std::uint32_t v = r; v < size_; ++v) {
-      const std::uint32_t w = v - r;
+    const std::uint32_t from = r >= Criterion::kContext ? r - Criterion::kContext : 0;
+    for (std::uint32_t v = from; v < size_; ++v) {
+      const std::uint32_t w = v - from;
       pts_[w] = pts_[v];
       dist_[w] = dist_[v];
-      pred_[w] = pred_[v] >= r ? pred_[v] - r : 0;  // below r: a dead non-descendant
-      live_[w] = live_[v];
+      pred_[w] = pred_[v] >= from ? pred_[v] - from : 0;  // below: a dead non-descendant
+      live_[w] = v < r ? 0 : live_[v];  // the context is no start
       hint_[w] = hint_[v];
     }
-    size_ -= r;
-    base_ += r;
+    size_ -= from;
+    labeled_ -= from;
+    root_ = r - from;
+    base_ += from;
   }
 
   static constexpr std::uint32_t kGuardEvery = 8;
-  static constexpr std::size_t kSetHalf = 3 * N + 8;  // fit.hpp's workspace_intervals / 2
 
-  S eps_{};
-  Method method_ = Method::optimal;
   std::uint32_t window_ = kCapacity;
-  std::uint32_t size_ = 0;   // points held; local 0 is the root
-  std::uint64_t base_ = 0;   // stream index of local 0
+  std::uint32_t size_ = 0;     // points held
+  std::uint32_t root_ = 0;     // local index of the root
+  std::uint32_t labeled_ = 0;  // nodes [0, labeled_) have labels
+  std::uint64_t base_ = 0;     // stream index of local 0
   StreamStats stats_{};
-  // Left unconstructed on purpose (each slot is written before it is read;
-  // Vec2 and Interval would zero themselves), so that a big capacity costs
-  // only the pages a window actually uses.
-  template <class T, std::size_t M>
-  struct Slots {
-    union {
-      T item[M];
-    };
-    Slots() {}
-    operator T*() { return item; }
-  };
   Slots<Vec2<S>, N> pts_;
   Slots<std::uint32_t, N> dist_;
   Slots<std::uint32_t, N> pred_;
@@ -276,8 +287,55 @@ class PointWindow {
   Slots<std::uint32_t, N> cnt_;
   Slots<std::uint32_t, N> path_;
   Slots<std::uint8_t, N> live_;
-  Slots<Interval<S>, 2 * kSetHalf> sets_;
-  AngleSet<S> set_{Span<Interval<S>>(sets_, kSetHalf), Span<Interval<S>>(sets_ + kSetHalf, kSetHalf)};
+};
+
+// The vertex criterion (fit/fit.hpp): the whole-input fitter's oracle and
+// piece choice; a pair depends only on the points between its ends.
+template <class S, std::size_t N>
+struct VertexCriterion {
+  static constexpr std::uint32_t kLag = 0;
+  static constexpr std::uint32_t kContext = 0;
+  static constexpr std::size_t kSetHalf = 3 * N + 8;  // fit.hpp's workspace_intervals / 2
+
+  S eps{};
+  Method method = Method::optimal;
+  Slots<Interval<S>, 2 * kSetHalf> sets;
+
+  AngleSet<S> set() {
+    return AngleSet<S>(Span<Interval<S>>(sets.item, kSetHalf),
+                       Span<Interval<S>>(sets.item + kSetHalf, kSetHalf));
+  }
+  void prepare(const Vec2<S>*, std::uint32_t) {}
+  bool feasible(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, std::uint32_t& hint) {
+    AngleSet<S> s = set();
+    return Oracle<S>{pts, eps, method, &s}(i, j, hint);
+  }
+  bool alive(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j) {
+    return prefix_guard(pts, i, j, eps);
+  }
+  Piece<S> piece(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j) {
+    AngleSet<S> s = set();
+    const PieceFit<S> f = choose_piece(pts, i, j, eps, method, s);
+    const Chord<S> chord(pts[i], pts[j]);
+    const Vec2<S> centre = f.line ? Vec2<S>{} : chord.centre(f.direction);
+    return Piece<S>{i, j, make_segment(chord, pts + i + 1, j - i - 1, f.line, centre, eps), f.error};
+  }
+};
+
+}  // namespace detail
+
+// The vertex criterion, streamed.
+template <class S, std::size_t N>
+class PointWindow : public detail::StreamEngine<S, N, detail::VertexCriterion<S, N>> {
+ public:
+  // Starts a new stream. invalid_argument: tol not finite and > 0, or a
+  // window outside [4, N].
+  Status start(S tol, Method method, std::uint32_t window = static_cast<std::uint32_t>(N)) {
+    if (!detail::tol_ok(tol)) return Status::invalid_argument;
+    this->crit_.eps = tol;
+    this->crit_.method = method;
+    return this->begin(window);
+  }
 };
 
 // A compiled instance (src/stream_double.cpp), so that the core's symbol
