@@ -13,6 +13,7 @@
 #include "kerf/core/fixed_convert.hpp"
 #include "kerf/fit/fit.hpp"
 #include "kerf/fit/stream.hpp"
+#include "kerf/fit/stream_band.hpp"
 #include "kerf/motion/interpolator.hpp"
 
 namespace {
@@ -115,6 +116,18 @@ std::uint64_t stream_pieces(std::uint32_t window) {
   return pieces;
 }
 
+kerf::fit::BandWindow<double, 256> g_band_window;
+
+std::uint64_t stream_band_pieces(std::uint32_t window) {
+  std::uint64_t pieces = 0;
+  auto sink = [&pieces](const kerf::fit::Piece<double>&, bool) { ++pieces; };
+  if (g_band_window.start(0.0183, 0.0183, window) != kerf::Status::ok) return 0;
+  for (std::size_t k = 0; k < kN; ++k)
+    if (g_band_window.push(g_fd.points[k], sink) != kerf::Status::ok) return 0;
+  if (g_band_window.finish(sink) != kerf::Status::ok) return 0;
+  return pieces;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -142,6 +155,9 @@ int main(int argc, char** argv) {
   const std::uint32_t forced_big = g_window.stats().forced;
   const std::uint64_t ns_small = stream_pieces(32);
   const std::uint32_t forced_small = g_window.stats().forced;
+  const std::uint64_t nb_big = stream_band_pieces(256);
+  const std::uint64_t nb_small = stream_band_pieces(32);
+  const std::uint32_t forced_band_small = g_band_window.stats().forced;
   const long td = interpolate<double>(g_fd, nd, 0.001, 1000.0, 100.0);
   const long tf = interpolate<kerf::Fixed>(g_ff, nf, kerf::Fixed(0.001), kerf::Fixed(1000),
                                            kerf::Fixed(100));
@@ -158,6 +174,8 @@ int main(int argc, char** argv) {
   check(tf > 0 && (tf - td) * (tf - td) <= 4, "fixed interpolation reaches the end within 2 periods of double");
   check(ns_big == 5 && forced_big == 0, "stream fit, window 256: 5 pieces, no forced commit");
   check(ns_small >= 5 && forced_small > 0, "stream fit, window 32: forced commits, >= 5 pieces");
-  std::printf("%d passed, %d failed\n", 6 - failed, failed);
+  check(nb_big == 5, "band stream fit, window 256: 5 pieces (the whole-input count)");
+  check(nb_small >= 5 && forced_band_small > 0, "band stream fit, window 32: forced commits, >= 5 pieces");
+  std::printf("%d passed, %d failed\n", 8 - failed, failed);
   return failed == 0 ? 0 : 1;
 }

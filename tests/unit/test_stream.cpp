@@ -11,9 +11,12 @@
 #include <string>
 #include <vector>
 
+#include "band_checker.hpp"
+#include "io/band_storage.hpp"
 #include "io/fit_storage.hpp"
 #include "kerf/fit/fit.hpp"
 #include "kerf/fit/stream.hpp"
+#include "kerf/fit/stream_band.hpp"
 
 namespace {
 
@@ -240,6 +243,118 @@ TEST(Stream, EmitsBeforeTheEnd) {
   }
   EXPECT_GT(first_at, 0u);
   EXPECT_LT(first_at, pts.size() / 2);
+}
+
+// The band criterion streamed (fit/stream_band.hpp).
+using BandWin = kerf::fit::BandWindow<double, kCap>;
+
+Streamed stream_band(const std::vector<V>& pts, double tol, std::uint32_t window) {
+  auto w = std::make_unique<BandWin>();
+  Streamed out;
+  auto sink = [&out](const Piece<double>& p, bool forced_end) {
+    out.pieces.push_back(p);
+    if (forced_end) out.cuts.push_back(p.last);
+  };
+  EXPECT_EQ(w->start(tol, tol, window), Status::ok);
+  for (const V& p : pts) EXPECT_EQ(w->push(p, sink), Status::ok);
+  EXPECT_EQ(w->finish(sink), Status::ok);
+  out.stats = w->stats();
+  return out;
+}
+
+std::uint32_t band_opt(const std::vector<V>& pts, double tol) {
+  kerf::io::BandStorage st(pts.size());
+  const std::vector<kerf::fit::BandWidth<double>> widths(pts.size(), {tol, tol});
+  const auto r = kerf::fit::count_band_min<double>({pts.data(), pts.size()},
+                                                   {widths.data(), widths.size()}, st.workspace());
+  EXPECT_TRUE(r.ok());
+  return r.ok() ? r.value() : 0;
+}
+
+// The independent band referee (tests/support/band_checker.hpp) on the
+// streamed pieces: contiguous, every gate crossed in order, inside the band.
+void expect_in_band(const std::vector<V>& pts, const std::vector<Piece<double>>& pieces,
+                    double tol) {
+  std::vector<kerf_test::VPoint> vp;
+  for (const V& p : pts) vp.push_back({p.x, p.y});
+  std::vector<kerf_test::VPiece> vpieces;
+  for (const Piece<double>& p : pieces) {
+    const auto& s = p.segment;
+    vpieces.push_back({s.is_arc(), p.first, p.last, s.start.x, s.start.y, s.end.x, s.end.y,
+                       s.centre.x, s.centre.y, s.dir});
+  }
+  const kerf_test::BandWidths widths{std::vector<double>(pts.size(), tol),
+                                     std::vector<double>(pts.size(), tol)};
+  const kerf_test::BandReport r = kerf_test::check_band_fit(vp, widths, vpieces, 1e-9 * tol);
+  EXPECT_TRUE(r.ok) << r.why;
+}
+
+TEST(StreamBand, EqualsWholeInputWhenTheWindowHoldsEverything) {
+  for (const Case& c : cases()) {
+    SCOPED_TRACE(c.name + " tol " + std::to_string(c.tol));
+    const Streamed s = stream_band(c.pts, c.tol, kCap);
+    EXPECT_EQ(s.stats.forced, 0u);
+    EXPECT_EQ(s.pieces.size(), band_opt(c.pts, c.tol));
+    expect_in_band(c.pts, s.pieces, c.tol);
+  }
+}
+
+// Small windows: still inside the band, never below the optimum, and within
+// OPT + F (L - 1) with L the longest whole-input piece.
+TEST(StreamBand, SmallWindowsStayInTheBandAndWithinTheBound) {
+  int lost = 0;
+  for (const Case& c : cases()) {
+    const std::size_t n = c.pts.size();
+    kerf::io::BandStorage st(n);
+    const std::vector<kerf::fit::BandWidth<double>> widths(n, {c.tol, c.tol});
+    const auto whole = kerf::fit::fit_band_min_count<double>(
+        {c.pts.data(), n}, {widths.data(), n}, st.workspace(), st.pieces());
+    ASSERT_TRUE(whole.ok());
+    std::uint32_t l = 0;
+    for (std::uint32_t k = 0; k < whole.value().pieces; ++k)
+      l = std::max(l, st.pieces()[k].last - st.pieces()[k].first);
+    for (std::uint32_t window : {6u, 9u, 16u, 40u}) {
+      SCOPED_TRACE(c.name + " tol " + std::to_string(c.tol) + " window " + std::to_string(window));
+      const Streamed s = stream_band(c.pts, c.tol, window);
+      expect_in_band(c.pts, s.pieces, c.tol);
+      EXPECT_LE(s.stats.peak, window);
+      EXPECT_GE(s.pieces.size(), whole.value().pieces);
+      EXPECT_LE(s.pieces.size(), whole.value().pieces + s.stats.forced * (l - 1));
+      EXPECT_LE(s.stats.forced, (n - 1) / ((window - 1) / 2));
+      lost += s.pieces.size() > whole.value().pieces ? 1 : 0;
+    }
+  }
+  EXPECT_GT(lost, 0) << "no small window lost a piece: the bound was never exercised";
+}
+
+// As for the vertex criterion: a window of 2 L + 8 points, L the longest
+// whole-input piece, keeps the whole-input count.
+TEST(StreamBand, EqualsWholeInputWhenTheWindowExceedsTheLongestSpan) {
+  for (const Case& c : cases()) {
+    SCOPED_TRACE(c.name + " tol " + std::to_string(c.tol));
+    const std::size_t n = c.pts.size();
+    kerf::io::BandStorage st(n);
+    const std::vector<kerf::fit::BandWidth<double>> widths(n, {c.tol, c.tol});
+    const auto whole = kerf::fit::fit_band_min_count<double>(
+        {c.pts.data(), n}, {widths.data(), n}, st.workspace(), st.pieces());
+    ASSERT_TRUE(whole.ok());
+    std::uint32_t l = 0;
+    for (std::uint32_t k = 0; k < whole.value().pieces; ++k)
+      l = std::max(l, st.pieces()[k].last - st.pieces()[k].first);
+    const std::uint32_t window = std::max<std::uint32_t>(2 * l + 8, 16);
+    if (window >= n) continue;  // covered above
+    const Streamed s = stream_band(c.pts, c.tol, window);
+    EXPECT_EQ(s.pieces.size(), whole.value().pieces) << "window " << window;
+    expect_in_band(c.pts, s.pieces, c.tol);
+  }
+}
+
+TEST(StreamBand, RefusesBadWidthsAndWindows) {
+  auto w = std::make_unique<BandWin>();
+  EXPECT_EQ(w->start(0.1, 0.1, 5), Status::invalid_argument);
+  EXPECT_EQ(w->start(0.0, 0.0, 64), Status::invalid_argument);
+  EXPECT_EQ(w->start(-0.1, 0.2, 64), Status::invalid_argument);
+  EXPECT_EQ(w->start(0.0, 0.2, 64), Status::ok);
 }
 
 }  // namespace
