@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""kerf fit --stream against kerf fit, end to end.
+"""kerf fit --stream against kerf fit, end to end, for the vertex and band criteria.
 
 usage: stream_check.py KERF CURVES_DIR [EMULATOR...]
 
@@ -115,6 +115,19 @@ for name, pts, tol in cases:
     check_pieces(name, pts, pieces(big), tol)
     check_pieces(name + " window 12", pts, pieces(small), tol)
     print(f"ok: {name}: {narc(whole)} pieces whole and streamed; window 12: {narc(small)}")
+    # The band criterion: a band piece crosses each inner gate, within tol
+    # of the point, so the same point check applies.
+    band = ["--criterion", "band", "--tol", str(tol), "-"]
+    whole = run(["fit"] + band, text)
+    big = run(["fit", "--stream", "--window", "4096"] + band, text)
+    small = run(["fit", "--stream", "--window", "12"] + band, text)
+    if narc(big) != narc(whole) or len(pieces(big)) != narc(whole):
+        sys.exit(f"{name} band: stream gives {narc(big)} pieces, the whole-input fit {narc(whole)}")
+    if narc(small) < narc(whole):
+        sys.exit(f"{name} band: window 12 gives {narc(small)}, below the optimum {narc(whole)}")
+    check_pieces(name + " band", pts, pieces(big), tol)
+    check_pieces(name + " band window 12", pts, pieces(small), tol)
+    print(f"ok: {name} band: {narc(whole)} pieces whole and streamed; window 12: {narc(small)}")
 
 # Pieces before the end of the input.
 pts = random_curve(9, 2000)
