@@ -89,7 +89,7 @@ CLI::App* add_fit_command(CLI::App& app, FitOptions& opts) {
       ->capture_default_str();
   fit->add_flag("--stream", opts.stream,
                 "Read the points line by line and write each piece once it is decided, in "
-                "memory fixed by --window (vertex criterion, one path)");
+                "memory fixed by --window (vertex or band criterion, one path)");
   fit->add_option("--window", opts.window, "--stream: the most points held at once (4..65536)")
       ->type_name("N");
   fit->add_option("file", opts.file, "Point file, one \"x y\" per line; - for stdin")

@@ -1,4 +1,5 @@
-// Streaming vertex-criterion fits in memory fixed at compile time.
+// Streaming fits in memory fixed at compile time: the vertex criterion here,
+// the band criterion in fit/stream_band.hpp (the same engine).
 //
 // PointWindow<S, N> takes the points one by one and hands each piece to a
 // sink as soon as it is decided. It keeps at most N points (the window) and,
