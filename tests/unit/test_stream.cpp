@@ -349,6 +349,20 @@ TEST(StreamBand, EqualsWholeInputWhenTheWindowExceedsTheLongestSpan) {
   }
 }
 
+// Collinear points: one line is optimal and every forced commit costs
+// exactly one piece, so the count is OPT + F.
+TEST(StreamBand, CollinearPointsReachOptPlusForced) {
+  std::vector<V> pts;
+  for (int i = 0; i < 600; ++i) pts.push_back({0.5 * i, 0.25 * i});
+  for (std::uint32_t window : {6u, 10u, 64u}) {
+    SCOPED_TRACE("window " + std::to_string(window));
+    const Streamed s = stream_band(pts, 0.01, window);
+    EXPECT_GT(s.stats.forced, 0u);
+    EXPECT_EQ(s.pieces.size(), 1u + s.stats.forced);
+    expect_in_band(pts, s.pieces, 0.01);
+  }
+}
+
 TEST(StreamBand, RefusesBadWidthsAndWindows) {
   auto w = std::make_unique<BandWin>();
   EXPECT_EQ(w->start(0.1, 0.1, 5), Status::invalid_argument);
