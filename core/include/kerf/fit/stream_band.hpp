@@ -9,9 +9,12 @@
 // region's convexity narrowing (fit/band_region.hpp) may still reach a little
 // further than one vertex, so a window's region can differ from the whole
 // input's near its ends; every piece is valid in the region it was chosen
-// in, which lies inside the band. The bound of fit/stream.hpp holds with the
-// optima taken in those regions (a one-step piece is always valid, which is
-// all (3) needs).
+// in, which lies inside the band, and piece() tests it again in the region
+// current at commit time (error = infinity if that region refuses it; the
+// CLI then fails). The bound (3) of fit/stream.hpp carries over with the
+// optima taken in the windows' regions, given that a one-step piece (an
+// edge of the polyline) is valid, which the engine assumes; (1) holds only
+// as far as those regions agree, which the tests check on the curves.
 #pragma once
 
 #include "kerf/fit/band_fit.hpp"
