@@ -87,6 +87,11 @@ CLI::App* add_fit_command(CLI::App& app, FitOptions& opts) {
                   "runs; vertex and band criteria)")
       ->type_name("TYPE")
       ->capture_default_str();
+  fit->add_flag("--stream", opts.stream,
+                "Read the points line by line and write each piece once it is decided, in "
+                "memory fixed by --window (vertex or band criterion, one path)");
+  fit->add_option("--window", opts.window, "--stream: the most points held at once (4..65536)")
+      ->type_name("N");
   fit->add_option("file", opts.file, "Point file, one \"x y\" per line; - for stdin")
       ->type_name("FILE|-")
       ->required();
@@ -134,6 +139,7 @@ int check_options(const FitOptions& opts, bool band, fit::Method& method, std::u
 }  // namespace
 
 int run_fit(const FitOptions& opts) {
+  if (opts.stream || !opts.window.empty()) return run_fit_stream(opts);
   if (opts.criterion == "biarc") {
     if (const std::string bad = numeric_problem(opts.numeric, opts.criterion); !bad.empty())
       return usage_error(bad);

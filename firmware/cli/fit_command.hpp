@@ -29,8 +29,13 @@ struct FitOptions {
                                          // the file has them)
   std::string tangent_format = "vector";  // biarc: vector (x y tx ty) | angle (x y deg)
   std::string numeric = "double";  // vertex and band criteria: double or fixed (kerf::Fixed)
+  bool stream = false;   // --stream: read and write piece by piece (cli/fit_stream.cpp)
+  std::string window;    // --stream: the points held at most
   std::string file;
 };
+
+// `kerf fit --stream --window N` (cli/fit_stream.cpp).
+int run_fit_stream(const FitOptions& opts);
 
 // `kerf fit --criterion biarc` (cli/fit_biarc_command.cpp).
 int run_fit_biarc(const FitOptions& opts);

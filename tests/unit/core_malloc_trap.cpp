@@ -13,6 +13,8 @@
 #include "kerf/core/fixed_convert.hpp"
 #include "kerf/fit/band_fit.hpp"
 #include "kerf/fit/fit.hpp"
+#include "kerf/fit/stream.hpp"
+#include "kerf/fit/stream_band.hpp"
 #include "kerf/motion/interpolator.hpp"
 
 namespace {
@@ -121,6 +123,32 @@ long interpolate(FitStatic<S>& st, std::uint32_t pieces, S one_ms, S accel, S fe
   return 0;
 }
 
+// The streaming fitter, window 32 (forced commits happen) and 256 (none):
+// its pieces, or 0 when it fails.
+kerf::fit::PointWindow<double, 256> g_window;
+
+std::uint64_t stream_pieces(std::uint32_t window) {
+  std::uint64_t pieces = 0;
+  auto sink = [&pieces](const kerf::fit::Piece<double>&, bool) { ++pieces; };
+  if (g_window.start(0.0183, kerf::fit::Method::optimal, window) != kerf::Status::ok) return 0;
+  for (std::size_t k = 0; k < kN; ++k)
+    if (g_window.push(g_fd.points[k], sink) != kerf::Status::ok) return 0;
+  if (g_window.finish(sink) != kerf::Status::ok) return 0;
+  return pieces;
+}
+
+kerf::fit::BandWindow<double, 256> g_band_window;
+
+std::uint64_t stream_band_pieces(std::uint32_t window) {
+  std::uint64_t pieces = 0;
+  auto sink = [&pieces](const kerf::fit::Piece<double>&, bool) { ++pieces; };
+  if (g_band_window.start(0.0183, 0.0183, window) != kerf::Status::ok) return 0;
+  for (std::size_t k = 0; k < kN; ++k)
+    if (g_band_window.push(g_fd.points[k], sink) != kerf::Status::ok) return 0;
+  if (g_band_window.finish(sink) != kerf::Status::ok) return 0;
+  return pieces;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -144,6 +172,13 @@ int main(int argc, char** argv) {
   g_armed = true;
   const std::uint32_t nd = fit_pieces<double>(g_fd, 0.0183);
   const std::uint32_t nf = fit_pieces<kerf::Fixed>(g_ff, kerf::Fixed(0.0183));
+  const std::uint64_t ns_big = stream_pieces(256);
+  const std::uint32_t forced_big = g_window.stats().forced;
+  const std::uint64_t ns_small = stream_pieces(32);
+  const std::uint32_t forced_small = g_window.stats().forced;
+  const std::uint64_t nb_big = stream_band_pieces(256);
+  const std::uint64_t nb_small = stream_band_pieces(32);
+  const std::uint32_t forced_band_small = g_band_window.stats().forced;
   const long td = interpolate<double>(g_fd, nd, 0.001, 1000.0, 100.0);
   const long tf = interpolate<kerf::Fixed>(g_ff, nf, kerf::Fixed(0.001), kerf::Fixed(1000),
                                            kerf::Fixed(100));
@@ -162,6 +197,10 @@ int main(int argc, char** argv) {
   check(tf > 0 && (tf - td) * (tf - td) <= 4, "fixed interpolation reaches the end within 2 periods of double");
   check(bd == 5, "double band fit of the parabola at 0.0183: 5 pieces");
   check(bf == 5, "fixed band fit of the parabola at 0.0183: 5 pieces");
-  std::printf("%d passed, %d failed\n", 6 - failed, failed);
+  check(ns_big == 5 && forced_big == 0, "stream fit, window 256: 5 pieces, no forced commit");
+  check(ns_small >= 5 && forced_small > 0, "stream fit, window 32: forced commits, >= 5 pieces");
+  check(nb_big == 5, "band stream fit, window 256: 5 pieces (the whole-input count)");
+  check(nb_small >= 5 && forced_band_small > 0, "band stream fit, window 32: forced commits, >= 5 pieces");
+  std::printf("%d passed, %d failed\n", 10 - failed, failed);
   return failed == 0 ? 0 : 1;
 }

@@ -1,0 +1,347 @@
+// Streaming fits in memory fixed at compile time: the vertex criterion here,
+// the band criterion in fit/stream_band.hpp (the same engine).
+//
+// PointWindow<S, N> takes the points one by one and hands each piece to a
+// sink as soon as it is decided. It keeps at most N points (the window) and,
+// for each, the shortest-path label of the fewest-pieces search (fit/fit.hpp,
+// fit/min_count.hpp), built incrementally: a new point m gets
+// d(m) = 1 + min d(i) over the starts i that reach it, and pred(m) = the
+// nearest such i (the whole-input search's own rule). The feasibility test
+// and the monotone guard are the whole-input fitter's (detail::Oracle).
+//
+// Which paths can still become the optimum: only through a *frontier* node,
+// a point whose start is still alive at m (prefix_guard passes for every end
+// seen so far, a necessary condition for reaching any later point), and m
+// itself. Any complete path's last node inside the window is such a node,
+// reached by a shortest path (else shorten it). So the candidates are the
+// shortest paths to the frontier nodes, and every one of them shares the
+// pieces from the root to the nodes' lowest common ancestor in the pred tree.
+// Those pieces are *decided*: emitting them loses nothing, and afterwards
+// every label stays exact (a node below the ancestor is reached through it).
+//
+// A *forced commit* happens when the window is full and the next point
+// arrives before a decision. It commits the best prefix: the path to the
+// frontier node in the newer half of the window (index >= root + H, H =
+// floor((N - 1) / 2)) with the fewest pieces, the newest on ties; the window
+// is then relabelled from that node, exactly.
+//
+// The bound (proof sketch). Let r_1 < ... < r_F be the forced cut points,
+// r_0 = 0, r_{F+1} = n - 1, OPT(a, b) the fewest pieces from p_a to p_b.
+//  (1) count = sum_k OPT(r_k, r_{k+1}). Decided commits keep the labels
+//      exact (above); a forced commit relabels from r_k exactly; so each
+//      block is fitted by the exact search restricted to it.
+//  (2) F <= floor((n - 1) / H): every forced commit moves the root by >= H.
+//  (3) count <= OPT + F (L - 1), L the longest piece (in index steps) of
+//      an optimal solution P. Replace each piece a -> b of P that has a cut
+//      strictly inside by its b - a one-step pieces (a step p_k -> p_{k+1}
+//      is always valid): +(b - a - 1) <= L - 1 per cut at most, and the
+//      result passes through every r_k, so by (1) it bounds the count.
+//  (4) count <= OPT + F for inputs where a valid piece a -> b stays valid
+//      when cut at an inner point (a -> r and r -> b valid): each cut then
+//      costs one piece. Collinear points reach this exactly. The vertex
+//      criterion does not guarantee that property (pieces pass through
+//      their end points), which is why (3) is the general bound.
+//  (5) With no forced commit, count = OPT (by (1)). A window longer than
+//      every piece does not rule forced commits out: two candidates' paths
+//      can stay apart for longer than a piece (the sine at tol 1 with a
+//      window of 2 L + 8 has three). On the test curves and random curves
+//      the count still equals OPT there; that is tested, not proven.
+//
+// No allocation, no exceptions, no OS header: all storage is members.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "kerf/fit/fit_impl.hpp"
+
+namespace kerf::fit {
+
+struct StreamStats {
+  std::uint64_t points = 0;  // accepted so far
+  std::uint64_t pieces = 0;  // emitted so far
+  std::uint32_t forced = 0;  // forced commits
+  std::uint32_t peak = 0;    // the most points the window held at once
+};
+
+namespace detail {
+
+// Storage left unconstructed on purpose (each slot is written before it is
+// read; Vec2 and Interval would zero themselves), so that a big capacity
+// costs only the pages a window actually uses.
+template <class T, std::size_t M>
+struct Slots {
+  union {
+    T item[M];
+  };
+  Slots() {}
+  operator T*() { return item; }
+  operator const T*() const { return item; }
+};
+
+// The window and the decision rule, for any criterion. Criterion supplies
+//   kLag      labels trail the newest point by this many points (a band
+//             gate depends on the next point);
+//   kContext  points kept before the root (a band gate depends on the
+//             previous one);
+//   prepare(pts, size), called when the points changed;
+//   feasible(pts, i, j, hint), alive(pts, i, j), piece(pts, i, j) on local
+//   indices, as the whole-input search's oracle.
+// N: the capacity (compile time). The window actually used can be smaller
+// (begin(window)), so one build serves several window lengths.
+template <class S, std::size_t N, class Criterion>
+class StreamEngine {
+  static_assert(N >= 8 && N < 0x40000000u, "a window holds 8 .. 2^30 points");
+
+ public:
+  static constexpr std::uint32_t kCapacity = static_cast<std::uint32_t>(N);
+  static constexpr std::uint32_t kMinWindow = 4 + Criterion::kLag + Criterion::kContext;
+
+  StreamEngine() = default;
+  // The criterion may point into its own storage.
+  StreamEngine(const StreamEngine&) = delete;
+  StreamEngine& operator=(const StreamEngine&) = delete;
+
+  // Adds the next point; the sink is called as sink(piece, forced_end) for
+  // each piece decided, forced_end marking the last piece of a forced
+  // commit (its end is a cut r_k). degenerate: p equals the previous point;
+  // invalid_argument: p not finite; capacity_exceeded: 2^32 points.
+  template <class Sink>
+  Status push(Vec2<S> p, Sink& sink) {
+    if (!Scalar<S>::is_finite(p.x) || !Scalar<S>::is_finite(p.y)) return Status::invalid_argument;
+    if (size_ > 0 && pts_[size_ - 1] == p) return Status::degenerate;
+    if (base_ + size_ >= 0xFFFFFFFFu) return Status::capacity_exceeded;
+    if (size_ == window_) force(sink);
+    const std::uint32_t m = size_++;
+    pts_[m] = p;
+    ++stats_.points;
+    if (size_ > stats_.peak) stats_.peak = size_;
+    if (m == 0) {
+      root_ = 0;
+      labeled_ = 1;
+      dist_[0] = 0;
+      pred_[0] = 0;
+      live_[0] = 1;
+      hint_[0] = 0;
+      return Status::ok;
+    }
+    crit_.prepare(pts_, size_);
+    while (labeled_ + Criterion::kLag < size_) label(labeled_++);
+    decide(sink);
+    return Status::ok;
+  }
+
+  // Ends the stream: emits the rest of the path to the last point.
+  // invalid_argument if fewer than two points came.
+  template <class Sink>
+  Status finish(Sink& sink) {
+    if (stats_.points < 2) return Status::invalid_argument;
+    if (size_ > root_ + 1) {
+      crit_.prepare(pts_, size_);
+      while (labeled_ < size_) label(labeled_++);
+      commit(size_ - 1, false, sink);
+    }
+    return Status::ok;
+  }
+
+  const StreamStats& stats() const { return stats_; }
+  std::uint32_t window() const { return window_; }
+
+ protected:
+  Status begin(std::uint32_t window) {
+    if (window < kMinWindow || window > kCapacity) return Status::invalid_argument;
+    window_ = window;
+    size_ = 0;
+    root_ = 0;
+    labeled_ = 0;
+    base_ = 0;
+    stats_ = StreamStats{};
+    return Status::ok;
+  }
+
+  Criterion crit_;
+
+ private:
+  // d and pred of node v, the next one to label; drops starts whose guard
+  // fails at v.
+  void label(std::uint32_t v) {
+    std::uint32_t best_d = dist_[v - 1] + 1;
+    std::uint32_t best_i = v - 1;  // one step is always a valid piece
+    for (std::uint32_t i = v - 1; i-- > root_;) {
+      if (live_[i] == 0) continue;
+      if (dist_[i] + 1 < best_d && crit_.feasible(pts_, i, v, hint_[i])) {
+        best_d = dist_[i] + 1;
+        best_i = i;
+        continue;
+      }
+      // The guard is the search's cost: like min_count, ask it after a failed
+      // test, and otherwise at every kGuardEvery-th end. Checking it at fewer
+      // ends only keeps a start alive longer, which is still sound.
+      if ((dist_[i] + 1 < best_d || (v - i) % kGuardEvery == 0) && !crit_.alive(pts_, i, v))
+        live_[i] = 0;
+    }
+    dist_[v] = best_d;
+    pred_[v] = best_i;
+    live_[v] = 1;
+    hint_[v] = 0;
+  }
+
+  // Labels every node again from the root, after a forced commit.
+  // Liveness does not depend on the root, so it is kept.
+  void relabel() {
+    crit_.prepare(pts_, size_);
+    for (std::uint32_t v = root_ + 1; v < labeled_; ++v) {
+      std::uint32_t best_d = dist_[v - 1] + 1;
+      std::uint32_t best_i = v - 1;
+      for (std::uint32_t i = v - 1; i-- > root_;) {
+        std::uint32_t hint = 0;
+        if (dist_[i] + 1 < best_d && crit_.alive(pts_, i, v) && crit_.feasible(pts_, i, v, hint)) {
+          best_d = dist_[i] + 1;
+          best_i = i;
+        }
+      }
+      dist_[v] = best_d;
+      pred_[v] = best_i;
+    }
+    for (std::uint32_t v = root_; v < labeled_; ++v) hint_[v] = 0;
+  }
+
+  // Emits the pieces every candidate shares: root -> lowest common
+  // ancestor of the frontier in the pred tree.
+  template <class Sink>
+  void decide(Sink& sink) {
+    std::uint32_t total = 0;
+    for (std::uint32_t v = root_; v < labeled_; ++v) {
+      cnt_[v] = 0;
+      total += live_[v];
+    }
+    for (std::uint32_t v = labeled_; v-- > root_ + 1;) {
+      cnt_[v] += live_[v];
+      if (cnt_[v] > 0) cnt_[pred_[v]] += cnt_[v];
+    }
+    for (std::uint32_t v = labeled_; v-- > root_ + 1;) {
+      if (cnt_[v] == total) {
+        commit(v, false, sink);
+        return;
+      }
+    }
+  }
+
+  template <class Sink>
+  void force(Sink& sink) {
+    const std::uint32_t half = (window_ - 1) / 2;
+    std::uint32_t best = labeled_ - 1;  // the newest labelled point is always on the frontier
+    for (std::uint32_t v = labeled_ - 1; v-- > root_ + half;)
+      if (live_[v] != 0 && dist_[v] < dist_[best]) best = v;
+    ++stats_.forced;
+    commit(best, true, sink);
+    relabel();
+  }
+
+  // Emits root -> r along pred and makes r the root.
+  template <class Sink>
+  void commit(std::uint32_t r, bool forced, Sink& sink) {
+    std::uint32_t k = 0;
+    for (std::uint32_t v = r; v != root_; v = pred_[v]) path_[k++] = v;
+    std::uint32_t i = root_;
+    while (k-- > 0) {
+      const std::uint32_t j = path_[k];
+      Piece<S> piece = crit_.piece(pts_, i, j);
+      piece.first = static_cast<std::uint32_t>(base_ + i);
+      piece.last = static_cast<std::uint32_t>(base_ + j);
+      sink(piece, forced && k == 0);
+      ++stats_.pieces;
+      i = j;
+    }
+    shift(r);
+  }
+
+  // Drops the points before r (keeping kContext of them).
+  void shift(std::uint32_t r) {
+    const std::uint32_t from = r >= Criterion::kContext ? r - Criterion::kContext : 0;
+    for (std::uint32_t v = from; v < size_; ++v) {
+      const std::uint32_t w = v - from;
+      pts_[w] = pts_[v];
+      dist_[w] = dist_[v];
+      pred_[w] = pred_[v] >= from ? pred_[v] - from : 0;  // below: a dead non-descendant
+      live_[w] = v < r ? 0 : live_[v];  // the context is no start
+      hint_[w] = hint_[v];
+    }
+    size_ -= from;
+    labeled_ -= from;
+    root_ = r - from;
+    base_ += from;
+  }
+
+  static constexpr std::uint32_t kGuardEvery = 8;
+
+  std::uint32_t window_ = kCapacity;
+  std::uint32_t size_ = 0;     // points held
+  std::uint32_t root_ = 0;     // local index of the root
+  std::uint32_t labeled_ = 0;  // nodes [0, labeled_) have labels
+  std::uint64_t base_ = 0;     // stream index of local 0
+  StreamStats stats_{};
+  Slots<Vec2<S>, N> pts_;
+  Slots<std::uint32_t, N> dist_;
+  Slots<std::uint32_t, N> pred_;
+  Slots<std::uint32_t, N> hint_;
+  Slots<std::uint32_t, N> cnt_;
+  Slots<std::uint32_t, N> path_;
+  Slots<std::uint8_t, N> live_;
+};
+
+// The vertex criterion (fit/fit.hpp): the whole-input fitter's oracle and
+// piece choice; a pair depends only on the points between its ends.
+template <class S, std::size_t N>
+struct VertexCriterion {
+  static constexpr std::uint32_t kLag = 0;
+  static constexpr std::uint32_t kContext = 0;
+  static constexpr std::size_t kSetHalf = 3 * N + 8;  // fit.hpp's workspace_intervals / 2
+
+  S eps{};
+  Method method = Method::optimal;
+  Slots<Interval<S>, 2 * kSetHalf> sets;
+
+  AngleSet<S> set() {
+    return AngleSet<S>(Span<Interval<S>>(sets.item, kSetHalf),
+                       Span<Interval<S>>(sets.item + kSetHalf, kSetHalf));
+  }
+  void prepare(const Vec2<S>*, std::uint32_t) {}
+  bool feasible(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, std::uint32_t& hint) {
+    AngleSet<S> s = set();
+    return Oracle<S>{pts, eps, method, &s}(i, j, hint);
+  }
+  bool alive(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j) {
+    return prefix_guard(pts, i, j, eps);
+  }
+  Piece<S> piece(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j) {
+    AngleSet<S> s = set();
+    const PieceFit<S> f = choose_piece(pts, i, j, eps, method, s);
+    const Chord<S> chord(pts[i], pts[j]);
+    const Vec2<S> centre = f.line ? Vec2<S>{} : chord.centre(f.direction);
+    return Piece<S>{i, j, make_segment(chord, pts + i + 1, j - i - 1, f.line, centre, eps), f.error};
+  }
+};
+
+}  // namespace detail
+
+// The vertex criterion, streamed.
+template <class S, std::size_t N>
+class PointWindow : public detail::StreamEngine<S, N, detail::VertexCriterion<S, N>> {
+ public:
+  // Starts a new stream. invalid_argument: tol not finite and > 0, or a
+  // window outside [4, N].
+  Status start(S tol, Method method, std::uint32_t window = static_cast<std::uint32_t>(N)) {
+    if (!detail::tol_ok(tol)) return Status::invalid_argument;
+    this->crit_.eps = tol;
+    this->crit_.method = method;
+    return this->begin(window);
+  }
+};
+
+// A compiled instance (src/stream_double.cpp), so that the core's symbol
+// scan covers the streaming code: the pieces of a stream fit, 0 on an error.
+std::uint64_t stream_count_window64(PointWindow<double, 64>& w, Span<const Vec2<double>> pts,
+                                    double tol);
+
+}  // namespace kerf::fit

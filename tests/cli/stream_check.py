@@ -1,0 +1,152 @@
+#!/usr/bin/env python3
+"""kerf fit --stream against kerf fit, end to end, for the vertex and band criteria.
+
+usage: stream_check.py KERF CURVES_DIR [EMULATOR...]
+
+For each test curve and some random curves:
+  - with a window longer than the input, --stream gives the same number of
+    pieces as the whole-input fit, with the same end points (the input's);
+  - every streamed piece chains on from the last and passes within tol of
+    its inner points (checked here from the printed centre and radius);
+  - a small window never gives fewer pieces than the whole-input optimum.
+And pieces come out while the input is still arriving: half the points are
+written to kerf's stdin, and a piece must be read back before the rest go in.
+"""
+import math
+import os
+import random
+import select
+import subprocess
+import sys
+
+KERF = sys.argv[1]
+CURVES = sys.argv[2]
+EMU = sys.argv[3:]
+
+
+def run(args, text):
+    p = subprocess.run(EMU + [KERF] + args, input=text, capture_output=True, text=True)
+    if p.returncode != 0:
+        sys.exit(f"kerf {' '.join(args)} failed ({p.returncode}): {p.stderr}")
+    return p.stdout
+
+
+def narc(out):
+    for line in out.splitlines():
+        if "Narc = " in line:
+            return int(line.split("=")[1])
+    sys.exit("no Narc line in:\n" + out)
+
+
+def point(tok):
+    x, y = tok.strip("()").split(",")
+    return float(x), float(y)
+
+
+def pieces(out):
+    got = []
+    for line in out.splitlines():
+        if line.startswith(("A ", "L ")):
+            f = line.split()
+            got.append((f[0], point(f[1]), point(f[2]), point(f[3]) if f[0] == "A" else None))
+    return got
+
+
+def check_pieces(name, pts, got, tol):
+    # Printed numbers carry 10 significant digits; allow for that.
+    slack = tol * 1e-6 + 1e-8 * max(1.0, max(abs(c) for p in pts for c in p))
+    k = 0
+    for kind, a, b, c in got:
+        if math.dist(a, pts[k]) > slack:
+            sys.exit(f"{name}: piece starts at {a}, expected point {k} {pts[k]}")
+        j = k + 1
+        while j < len(pts) and math.dist(pts[j], b) > slack:
+            j += 1
+        if j == len(pts):
+            sys.exit(f"{name}: piece end {b} is no later input point")
+        for i in range(k + 1, j):
+            if kind == "A":
+                d = abs(math.dist(pts[i], c) - math.dist(a, c))
+            else:
+                dx, dy = b[0] - a[0], b[1] - a[1]
+                d = abs(dx * (pts[i][1] - a[1]) - dy * (pts[i][0] - a[0])) / math.hypot(dx, dy)
+            if d > tol + slack * (1 + (math.dist(a, c) if c else 0)):
+                sys.exit(f"{name}: point {i} is {d} from its piece, tol {tol}")
+        k = j
+    if k != len(pts) - 1:
+        sys.exit(f"{name}: the pieces end at point {k}, not at the last one")
+
+
+def curve_text(pts):
+    return "".join(f"{x!r} {y!r}\n" for x, y in pts)
+
+
+def random_curve(seed, n):
+    rng = random.Random(seed)
+    x = y = h = k = 0.0
+    pts = []
+    for _ in range(n):
+        pts.append((x + rng.uniform(-0.002, 0.002), y + rng.uniform(-0.002, 0.002)))
+        k = 0.9 * k + rng.gauss(0, 0.08)
+        h += 0.1 * k
+        x += math.cos(h)
+        y += math.sin(h)
+    return pts
+
+
+cases = []
+for name in ["parabola", "circle", "ellipse", "sine", "spiral"]:
+    with open(f"{CURVES}/{name}.txt") as f:
+        pts = [tuple(map(float, line.split()[:2])) for line in f if line.strip()]
+    for tol in [0.0183, 0.1]:
+        cases.append((f"{name} tol {tol}", pts, tol))
+for seed in [7, 8]:
+    cases.append((f"random {seed}", random_curve(seed, 600), 0.05))
+
+for name, pts, tol in cases:
+    text = curve_text(pts)
+    whole = run(["fit", "--tol", str(tol), "-"], text)
+    big = run(["fit", "--stream", "--window", "4096", "--tol", str(tol), "-"], text)
+    small = run(["fit", "--stream", "--window", "12", "--tol", str(tol), "-"], text)
+    if narc(big) != narc(whole) or len(pieces(big)) != narc(whole):
+        sys.exit(f"{name}: stream gives {narc(big)} pieces, the whole-input fit {narc(whole)}")
+    if narc(small) < narc(whole):
+        sys.exit(f"{name}: window 12 gives {narc(small)} pieces, below the optimum {narc(whole)}")
+    check_pieces(name, pts, pieces(big), tol)
+    check_pieces(name + " window 12", pts, pieces(small), tol)
+    print(f"ok: {name}: {narc(whole)} pieces whole and streamed; window 12: {narc(small)}")
+    # The band criterion: a band piece crosses each inner gate, within tol
+    # of the point, so the same point check applies.
+    band = ["--criterion", "band", "--tol", str(tol), "-"]
+    whole = run(["fit"] + band, text)
+    big = run(["fit", "--stream", "--window", "4096"] + band, text)
+    small = run(["fit", "--stream", "--window", "12"] + band, text)
+    if narc(big) != narc(whole) or len(pieces(big)) != narc(whole):
+        sys.exit(f"{name} band: stream gives {narc(big)} pieces, the whole-input fit {narc(whole)}")
+    if narc(small) < narc(whole):
+        sys.exit(f"{name} band: window 12 gives {narc(small)}, below the optimum {narc(whole)}")
+    check_pieces(name + " band", pts, pieces(big), tol)
+    check_pieces(name + " band window 12", pts, pieces(small), tol)
+    print(f"ok: {name} band: {narc(whole)} pieces whole and streamed; window 12: {narc(small)}")
+
+# Pieces before the end of the input.
+pts = random_curve(9, 2000)
+proc = subprocess.Popen(EMU + [KERF, "fit", "--stream", "--window", "256", "--tol", "0.05", "-"],
+                        stdin=subprocess.PIPE, stdout=subprocess.PIPE)
+proc.stdin.write(curve_text(pts[:1000]).encode())
+proc.stdin.flush()
+got = ""
+while "\nA " not in got and "\nL " not in got:
+    # Raw reads: a buffered reader would hide data from select.
+    ready, _, _ = select.select([proc.stdout], [], [], 60)
+    chunk = os.read(proc.stdout.fileno(), 65536) if ready else b""
+    if not chunk:
+        proc.kill()
+        sys.exit("no piece written within 60 s after 1000 of 2000 points")
+    got += chunk.decode()
+proc.stdin.write(curve_text(pts[1000:]).encode())
+proc.stdin.close()
+rest = proc.stdout.read().decode()
+if proc.wait() != 0:
+    sys.exit("kerf --stream failed on the piped input")
+print(f"ok: a piece came out after 1000 of 2000 points; {narc(got + rest)} pieces in all")
