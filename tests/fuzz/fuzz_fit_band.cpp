@@ -1,0 +1,37 @@
+// The band fitter (kerf/fit/band_fit.hpp) on fuzzed points and widths
+// (symmetric, one-sided or per vertex). A line along each edge always lies
+// in the band, so the fit must succeed, and the independent band referee
+// (tests/support/band_checker.hpp: certified band, gates in order) must
+// accept every piece.
+#include <cstddef>
+#include <cstdint>
+
+#include "bridge/band_bridge.hpp"
+#include "fuzz_check.hpp"
+#include "fuzz_points.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  FuzzedDataProvider in(data, size);
+  kerf_fuzz::FitInput f;
+  const int shape = in.ConsumeIntegralInRange<int>(0, 2);
+  const double right = in.ConsumeProbability<double>();  // one-sided: the right share
+  if (!kerf_fuzz::decode_points(in, f)) return 0;
+  kerf_test::BandWidths w;
+  if (shape == 0) {
+    w = kerf_test::symmetric_widths(f.pts.size(), f.tol);
+  } else if (shape == 1) {
+    w = kerf_test::asymmetric_widths(f.pts.size(), f.tol * (1 - right), f.tol * right);
+  } else {
+    std::vector<double> tols;
+    for (std::size_t k = 0; k < f.pts.size(); ++k)
+      tols.push_back(f.tol * (1 + in.ConsumeIntegral<std::uint8_t>()) / 128.0);
+    w = kerf_test::per_vertex_widths(tols);
+  }
+  kerf_test::CoreBandFitter core(f.pts, w);
+  const auto r = core.fit();
+  FUZZ_CHECK(r.ok(), kerf::to_string(r.status()));
+  const auto rep = kerf_test::check_band_fit(f.pts, w, core.pieces(r.value().pieces),
+                                             kerf_fuzz::slack_for(f.pts));
+  FUZZ_CHECK(rep.ok, rep.why.c_str());
+  return 0;
+}

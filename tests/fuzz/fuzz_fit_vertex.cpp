@@ -1,0 +1,35 @@
+// The vertex fitter (kerf/fit/fit.hpp, every method) on fuzzed points and
+// tolerances. Distinct consecutive points always have a fit (each edge is a
+// line piece), so the fit must succeed, and the independent verifier
+// (tests/support/verifier.hpp) must accept it, as must `kerf fit`'s own
+// last check (firmware/cli/check_fit.hpp).
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "bridge/fit_bridge.hpp"
+#include "cli/check_fit.hpp"
+#include "fuzz_check.hpp"
+#include "fuzz_points.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  FuzzedDataProvider in(data, size);
+  kerf_fuzz::FitInput f;
+  const kerf::fit::Method method = kerf_test::kMethods[in.ConsumeIntegralInRange<int>(0, 2)];
+  if (!kerf_fuzz::decode_points(in, f)) return 0;
+  kerf_test::CoreFitter core(f.pts);
+  const auto r = core.fit(f.tol, method);
+  FUZZ_CHECK(r.ok(), kerf::to_string(r.status()));
+  const auto pieces = core.pieces(r.value().pieces);
+  const auto rep = kerf_test::verify(f.pts, pieces, f.tol);
+  FUZZ_CHECK(rep.ok, rep.why.c_str());
+  std::vector<kerf::Vec2<double>> pts;
+  for (const auto& p : f.pts) pts.push_back({p.x, p.y});
+  std::vector<kerf::fit::Piece<double>> fitted;
+  for (std::uint32_t k = 0; k < r.value().pieces; ++k) fitted.push_back(core.piece(k));
+  const std::string bad = kerf::cli::check_fit({pts.data(), pts.size()},
+                                               {fitted.data(), fitted.size()}, f.tol);
+  FUZZ_CHECK(bad.empty(), bad.c_str());
+  return 0;
+}

@@ -1,0 +1,54 @@
+// Fuzz bytes to a fitter's input, as the point-file reader would hand it
+// over: 2..kMaxPoints finite points on a grid of `unit` (so the numbers stay
+// well inside double's range, the scale varies over six decades), consecutive
+// duplicates dropped, and a tolerance from unit/64 to 4 units.
+#pragma once
+
+#include <fuzzer/FuzzedDataProvider.h>
+
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+#include "verifier.hpp"
+
+namespace kerf_fuzz {
+
+inline constexpr std::size_t kMaxPoints = 48;
+
+struct FitInput {
+  std::vector<kerf_test::VPoint> pts;
+  double tol = 0;
+  double unit = 0;
+};
+
+// False when the bytes do not make two distinct points.
+inline bool decode_points(FuzzedDataProvider& in, FitInput& out) {
+  out.unit = std::ldexp(1.0, in.ConsumeIntegralInRange<int>(-10, 10));
+  out.tol = out.unit * (1 + in.ConsumeIntegral<std::uint8_t>()) / 64.0;
+  const std::size_t n = in.ConsumeIntegralInRange<std::size_t>(2, kMaxPoints);
+  // Points as small steps from the last one (paths are mostly smooth) or,
+  // with the high bit of the first byte, a jump anywhere in +-1000 units.
+  double x = 0, y = 0;
+  for (std::size_t k = 0; k < n && in.remaining_bytes() >= 2; ++k) {
+    const std::uint8_t mode = in.ConsumeIntegral<std::uint8_t>();
+    if (mode & 0x80) {
+      x = in.ConsumeIntegralInRange<int>(-1000, 1000);
+      y = in.ConsumeIntegralInRange<int>(-1000, 1000);
+    } else {
+      x += in.ConsumeIntegralInRange<int>(-16, 16);
+      y += (mode & 0x3F) - 32;
+    }
+    const kerf_test::VPoint p{x * out.unit, y * out.unit};
+    if (!out.pts.empty() && out.pts.back().x == p.x && out.pts.back().y == p.y) continue;
+    out.pts.push_back(p);
+  }
+  return out.pts.size() >= 2;
+}
+
+// The slack the unit tests give the referee: rounding, not geometry.
+inline double slack_for(const std::vector<kerf_test::VPoint>& p) {
+  return 1e-9 * kerf_test::scale_of(p) + 1e-12;
+}
+
+}  // namespace kerf_fuzz
