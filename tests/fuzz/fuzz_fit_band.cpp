@@ -5,6 +5,8 @@
 // accept every piece.
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 
 #include "bridge/band_bridge.hpp"
 #include "fuzz_check.hpp"
@@ -16,6 +18,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const int shape = in.ConsumeIntegralInRange<int>(0, 2);
   const double right = in.ConsumeProbability<double>();  // one-sided: the right share
   if (!kerf_fuzz::decode_points(in, f)) return 0;
+  kerf_fuzz::dump_points(f);
   kerf_test::BandWidths w;
   if (shape == 0) {
     w = kerf_test::symmetric_widths(f.pts.size(), f.tol);
@@ -27,9 +30,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       tols.push_back(f.tol * (1 + in.ConsumeIntegral<std::uint8_t>()) / 128.0);
     w = kerf_test::per_vertex_widths(tols);
   }
+  if (std::getenv("KERF_FUZZ_DUMP") != nullptr) {
+    for (std::size_t k = 0; k < f.pts.size(); ++k)
+      std::printf("# width %zu: left %.17g right %.17g\n", k, w.left[k], w.right[k]);
+    std::fflush(stdout);
+  }
   kerf_test::CoreBandFitter core(f.pts, w);
   const auto r = core.fit();
   FUZZ_CHECK(r.ok(), kerf::to_string(r.status()));
+  kerf_fuzz::dump_pieces(core.pieces(r.value().pieces));
   const auto rep = kerf_test::check_band_fit(f.pts, w, core.pieces(r.value().pieces),
                                              kerf_fuzz::slack_for(f.pts));
   FUZZ_CHECK(rep.ok, rep.why.c_str());

@@ -15,6 +15,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   FuzzedDataProvider in(data, size);
   kerf_fuzz::FitInput f;
   if (!kerf_fuzz::decode_points(in, f)) return 0;
+  kerf_fuzz::dump_points(f);
   kerf_test::CoreBiarcFitter core(f.pts, {}, f.tol);
   const auto r = core.fit();
   if (!r.ok()) {

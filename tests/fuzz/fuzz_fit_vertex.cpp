@@ -18,6 +18,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   kerf_fuzz::FitInput f;
   const kerf::fit::Method method = kerf_test::kMethods[in.ConsumeIntegralInRange<int>(0, 2)];
   if (!kerf_fuzz::decode_points(in, f)) return 0;
+  kerf_fuzz::dump_points(f);
   kerf_test::CoreFitter core(f.pts);
   const auto r = core.fit(f.tol, method);
   FUZZ_CHECK(r.ok(), kerf::to_string(r.status()));

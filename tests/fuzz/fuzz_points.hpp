@@ -8,6 +8,8 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstdio>
+#include <cstdlib>
 #include <vector>
 
 #include "verifier.hpp"
@@ -44,6 +46,24 @@ inline bool decode_points(FuzzedDataProvider& in, FitInput& out) {
     out.pts.push_back(p);
   }
   return out.pts.size() >= 2;
+}
+
+// With KERF_FUZZ_DUMP set (replaying a reproducer), prints the decoded input
+// as a point file for `kerf fit` and the tests: "# tol T", then "x y" lines.
+inline void dump_points(const FitInput& f) {
+  if (std::getenv("KERF_FUZZ_DUMP") == nullptr) return;
+  std::printf("# tol %.17g\n", f.tol);
+  for (const auto& p : f.pts) std::printf("%.17g %.17g\n", p.x, p.y);
+  std::fflush(stdout);
+}
+
+// With KERF_FUZZ_DUMP set, prints the fitted pieces too.
+inline void dump_pieces(const std::vector<kerf_test::VPiece>& pieces) {
+  if (std::getenv("KERF_FUZZ_DUMP") == nullptr) return;
+  for (const auto& p : pieces)
+    std::printf("# piece %zu..%zu %s (%.17g,%.17g) (%.17g,%.17g) (%.17g,%.17g) %d\n", p.first, p.last,
+                p.arc ? "A" : "L", p.sx, p.sy, p.ex, p.ey, p.cx, p.cy, p.dir);
+  std::fflush(stdout);
 }
 
 // The slack the unit tests give the referee: rounding, not geometry.
