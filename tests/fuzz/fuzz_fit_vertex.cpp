@@ -1,5 +1,6 @@
 // The vertex fitter (kerf/fit/fit.hpp, every method) on fuzzed points and
-// tolerances. Distinct consecutive points always have a fit (each edge is a
+// tolerances (now and then 0, -1, NaN, inf: refused; or 1e-300, 1e300:
+// handled or refused). Distinct consecutive points always have a fit (each edge is a
 // line piece), so the fit must succeed, and the independent verifier
 // (tests/support/verifier.hpp) must accept it, as must `kerf fit`'s own
 // last check (firmware/cli/check_fit.hpp).
@@ -17,10 +18,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   FuzzedDataProvider in(data, size);
   kerf_fuzz::FitInput f;
   const kerf::fit::Method method = kerf_test::kMethods[in.ConsumeIntegralInRange<int>(0, 2)];
-  if (!kerf_fuzz::decode_points(in, f)) return 0;
+  kerf_fuzz::TolKind kind{};
+  if (!kerf_fuzz::decode_points(in, f, &kind)) return 0;
   kerf_fuzz::dump_points(f);
   kerf_test::CoreFitter core(f.pts);
   const auto r = core.fit(f.tol, method);
+  if (kind == kerf_fuzz::TolKind::bad) {
+    FUZZ_CHECK(!r.ok(), "a tol that is not a positive number was accepted");
+    return 0;
+  }
+  if (kind == kerf_fuzz::TolKind::extreme && !r.ok()) return 0;  // refused cleanly
   FUZZ_CHECK(r.ok(), kerf::to_string(r.status()));
   const auto pieces = core.pieces(r.value().pieces);
   const auto rep = kerf_test::verify(f.pts, pieces, f.tol);

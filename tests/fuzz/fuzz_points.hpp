@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <vector>
 
 #include "verifier.hpp"
@@ -24,10 +25,29 @@ struct FitInput {
   double unit = 0;
 };
 
+// Tolerances no fitter may accept, and extreme ones it must either handle
+// or refuse cleanly.
+inline constexpr double kBadTols[] = {0.0, -0.0, -1.0, std::numeric_limits<double>::quiet_NaN(),
+                                      HUGE_VAL, -HUGE_VAL};
+inline constexpr double kExtremeTols[] = {5e-324, 1e-300, 1e-12, 1e300, 1.7976931348623157e308};
+
+enum class TolKind { normal, bad, extreme };
+
 // False when the bytes do not make two distinct points.
-inline bool decode_points(FuzzedDataProvider& in, FitInput& out) {
+inline bool decode_points(FuzzedDataProvider& in, FitInput& out, TolKind* kind = nullptr) {
   out.unit = std::ldexp(1.0, in.ConsumeIntegralInRange<int>(-10, 10));
   out.tol = out.unit * (1 + in.ConsumeIntegral<std::uint8_t>()) / 64.0;
+  if (kind != nullptr) {  // one input in 16 gets a bad or extreme tol
+    const std::uint8_t pick = in.ConsumeIntegral<std::uint8_t>();
+    *kind = TolKind::normal;
+    if (pick >= 0xF0 && pick < 0xF6) {
+      *kind = TolKind::bad;
+      out.tol = kBadTols[pick - 0xF0];
+    } else if (pick >= 0xF6 && pick < 0xFB) {
+      *kind = TolKind::extreme;
+      out.tol = kExtremeTols[pick - 0xF6];
+    }
+  }
   const std::size_t n = in.ConsumeIntegralInRange<std::size_t>(2, kMaxPoints);
   // Points as small steps from the last one (paths are mostly smooth) or,
   // with the high bit of the first byte, a jump anywhere in +-1000 units.
