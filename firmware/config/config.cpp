@@ -106,6 +106,21 @@ bool parse(const std::string& text, const std::string& display_name, Config& out
             ": syntax error: a non-ASCII character outside a string or comment";
     return false;
   }
+  // A malformed file can make toml++ scan a "string" as a bad value and test
+  // its characters as whitespace, so the text goes first with every
+  // non-ASCII byte as 'x' (same lines and columns): toml++ sees the real
+  // text only once its structure is known to be good.
+  std::string ascii = text;
+  for (char& ch : ascii)
+    if (static_cast<unsigned char>(ch) >= 0x80) ch = 'x';
+  if (ascii != text) {
+    if (toml::parse_result pre = toml::parse(std::string_view(ascii), std::string_view(display_name));
+        !pre) {
+      error = display_name + ":" + std::to_string(pre.error().source().begin.line) +
+              ": syntax error: " + std::string(pre.error().description());
+      return false;
+    }
+  }
   toml::parse_result parsed = toml::parse(std::string_view(text), std::string_view(display_name));
   if (!parsed) {
     const toml::parse_error& e = parsed.error();

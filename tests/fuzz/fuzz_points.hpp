@@ -86,6 +86,18 @@ inline void dump_pieces(const std::vector<kerf_test::VPiece>& pieces) {
   std::fflush(stdout);
 }
 
+// True when some piece's points turn by more than 90 degrees at an inner point.
+inline bool piece_doubles_back(const std::vector<kerf_test::VPoint>& p,
+                               const std::vector<kerf_test::VPiece>& pieces) {
+  for (const auto& pc : pieces)
+    for (std::size_t k = pc.first + 1; k < pc.last; ++k) {
+      const double ax = p[k].x - p[k - 1].x, ay = p[k].y - p[k - 1].y;
+      const double bx = p[k + 1].x - p[k].x, by = p[k + 1].y - p[k].y;
+      if (ax * bx + ay * by < 0) return true;
+    }
+  return false;
+}
+
 // The slack the unit tests give the referee: rounding, not geometry.
 inline double slack_for(const std::vector<kerf_test::VPoint>& p) {
   return 1e-9 * kerf_test::scale_of(p) + 1e-12;
