@@ -26,6 +26,8 @@ PACKAGES=(
   # the CAN HIL bench (toolchain/vm): Debian's kernel under qemu with vcan, a busybox
   # initramfs packed with cpio
   qemu-system-x86 busybox-static cpio
+  # the fuzz preset (tests/fuzz): clang, and libFuzzer plus the sanitizer runtimes
+  clang libclang-rt-14-dev
 )
 
 missing=()

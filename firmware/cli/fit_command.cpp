@@ -225,6 +225,16 @@ int run_fit(const FitOptions& opts) {
                    in.file.c_str(), where.c_str(), bad.c_str());
       return kExitFailure;
     }
+    // Inside the band, an arc is never farther from its polyline than the
+    // widest width. A larger max error is a band fitter bug (fuzz_fit_band
+    // found arcs at sharp turns thousands of mm out): never written.
+    if (band && !(r.value().max_error <= r.value().tol * (1 + 1e-6))) {
+      std::fprintf(stderr,
+                   "kerf: %s%s: internal error: the fit leaves the band (max error %.9g > tol %.9g); "
+                   "nothing written\n",
+                   in.file.c_str(), where.c_str(), r.value().max_error, r.value().tol);
+      return kExitFailure;
+    }
     used += r.value().pieces;
     total.pieces += r.value().pieces;
     total.max_error = std::max(total.max_error, r.value().max_error);

@@ -113,6 +113,14 @@ bool fit_job(const std::vector<Vec2<double>>& pts, const std::vector<double>& to
     error = "internal error: the fit fails its own check (" + bad + ")";
     return false;
   }
+  // Inside the band an arc is within the widest width of its polyline; more
+  // is a band fitter bug (found by fuzz_fit_band at sharp turns).
+  if (band && !(r.value().max_error <= r.value().tol * (1 + 1e-6))) {
+    status = Status::infeasible;
+    error = "internal error: the fit leaves the band (max error " + std::to_string(r.value().max_error) +
+            " > tol " + std::to_string(r.value().tol) + ")";
+    return false;
+  }
   out.assign(fitted.begin(), fitted.end());
   status = Status::ok;
   return true;

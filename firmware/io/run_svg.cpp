@@ -82,7 +82,7 @@ void escaped(std::string& out, const std::string& s) {
 }
 
 struct Box {
-  double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+  double x0 = HUGE_VAL, y0 = HUGE_VAL, x1 = -HUGE_VAL, y1 = -HUGE_VAL;
   void add(Vec2<double> p) {
     if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;
     x0 = std::fmin(x0, p.x);

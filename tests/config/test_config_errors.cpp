@@ -152,6 +152,13 @@ const BadCase kCases[] = {
     {"unknown_top_level_key", "debug = true\n" TCP, "kerf.toml:1: debug: unknown key"},
     {"first_problem_in_the_file_wins", TCP "[rt]\npriority = 100\n[machine]\naccel = 0\n",
      "kerf.toml:4: rt.priority: must be in 0..99, got 100"},
+
+    // Non-ASCII where toml++ 3.3 tests for whitespace: undefined behaviour in
+    // toml++ (found by tests/fuzz/fuzz_config), refused before it parses.
+    {"non_ascii_after_key", TCP "[fit]\ntol\xd2\x96 = 0.05\n",
+     "kerf.toml:4: syntax error: a non-ASCII character outside a string or comment"},
+    {"non_ascii_after_line_ending_backslash", TCP "[fit]\ncriterion = \"\"\"a\\\n  \xc3\xa9\"\"\"\n",
+     "kerf.toml:5: syntax error: a non-ASCII character outside a string or comment"},
 };
 
 class BadConfig : public testing::TestWithParam<BadCase> {};
@@ -161,6 +168,17 @@ TEST_P(BadConfig, GivesItsMessage) {
   std::string error;
   EXPECT_FALSE(parse(GetParam().toml, "kerf.toml", c, error));
   EXPECT_EQ(error, GetParam().message);
+}
+
+// Non-ASCII inside comments and strings is fine.
+TEST(Config, NonAsciiInCommentsAndStringsIsAccepted) {
+  Config c;
+  std::string error;
+  EXPECT_TRUE(parse("# Ma\xc3\x9f: \xc2\xb1 0.025 mm\n[link] # \xc3\xa9\nkind = \"can\"\n"
+                    "iface = \"can0\"  # \xe2\x80\x94\nnode_ids = [1, 2]\n",
+                    "kerf.toml", c, error))
+      << error;
+  EXPECT_EQ(c.link.iface, "can0");
 }
 
 INSTANTIATE_TEST_SUITE_P(Config, BadConfig, testing::ValuesIn(kCases),

@@ -46,6 +46,24 @@ TEST(RegisterMap, SlotRoundTripsAndRefusesBadValues) {
   EXPECT_FALSE(hal::modbus_map::encode_slot(a, slot));
 }
 
+// Found by fuzzing (tests/fuzz/corpus/modbus/int32_min_end_y): a slot whose
+// coordinate is -2^31 um decoded, but the host's encoder refused the very
+// segment (its range stopped at -2^31 + 1). Every decoded slot encodes back.
+TEST(RegisterMap, SlotAtTheInt32LimitsRoundTrips) {
+  std::uint16_t slot[hal::modbus_map::kSlotRegs] = {0x0027, 0x0000, 0, 0, 0, 64, 0x8000, 0x0000,
+                                                    0x7FFF, 0xFFFF, 0, 0, 0, 1, 0, 0};
+  hal::SegmentCommand s;
+  const char* why = nullptr;
+  ASSERT_TRUE(hal::modbus_map::decode_slot(slot, s, why)) << why;
+  EXPECT_DOUBLE_EQ(s.end.y, -2147483.648);
+  EXPECT_DOUBLE_EQ(s.centre.x, 2147483.647);
+  std::uint16_t again[hal::modbus_map::kSlotRegs] = {};
+  ASSERT_TRUE(hal::modbus_map::encode_slot(s, again));
+  EXPECT_EQ(0, std::memcmp(slot, again, sizeof slot));
+  s.end.y = -2147483.649;  // one micrometre beyond
+  EXPECT_FALSE(hal::modbus_map::encode_slot(s, again));
+}
+
 TEST_P(ModbusProtocol, PushQueuesAndReturnsCredit) {
   LinkRig rig(GetParam());
   hal::BoardStatus st;

@@ -51,6 +51,22 @@ TEST(BandReference, ParabolaCountsAreTheReportsAndPassTheChecker) {
   EXPECT_EQ(checked_fit(p, kerf_test::symmetric_widths(p.size(), 0.1)), 3u);
 }
 
+// Found by fuzzing (tests/fuzz/corpus/fit_band/sharp_turn_one_sided): a turn
+// of 176 degrees with widths 0.30 left and 1.17 right. The pair 1..3 took a
+// short arc near the chord p1 p3, 1500 away from p2, because the circle (on
+// its far side) crossed gate 2; `kerf fit` printed it with max error 57.
+TEST(BandReference, SharpTurnWithUnequalWidthsKeepsTheArcInTheBand) {
+  const std::vector<VPoint> p{{-428, -987}, {-431, -956}, {-243, 586}, {-545, -943}};
+  const auto w = kerf_test::asymmetric_widths(p.size(), 0.30046648963304434, 1.1682835103669555);
+  CoreBandFitter core(p, w);
+  const auto fit = core.fit();
+  ASSERT_TRUE(fit.ok()) << kerf::to_string(fit.status());
+  EXPECT_LE(fit.value().pieces, 3u);
+  const auto report = kerf_test::check_band_fit(p, w, core.pieces(fit.value().pieces), slack_for(p));
+  EXPECT_TRUE(report.ok) << report.why;
+  EXPECT_LE(fit.value().max_error, 1.1682835103669555 * (1 + 1e-9));
+}
+
 TEST(BandReference, MinErrorIsTheSmallestBandForTheBudget) {
   const auto p = load("parabola.txt");
   CoreBandFitter core(p, kerf_test::symmetric_widths(p.size(), 1.0));

@@ -94,7 +94,18 @@ class BandPair {
     const Vec2<S> lo = direction_of(range.lo);
     const Vec2<S> hi = direction_of(range.hi);
     for (int t = 0; t + 1 < c.size && !range.empty(); ++t) segment(range, lo, hi, c.pt[t], c.pt[t + 1]);
-    if (k + 1 < j_) inside(range, r_.gate_end(k + 1, orient_));
+    if (k + 1 < j_) {
+      // The arc lies on its bulge side of the chord (offset <= 0), so a gate
+      // wholly beyond the chord cannot be cut. The chains imply this where
+      // the cells are convex; at a sharp turn with unequal widths they are
+      // not, and the disc alone let a short arc "cross" a gate on its far
+      // circle (found by tests/fuzz/fuzz_fit_band).
+      if (offset(r_.gate_end(k + 1, orient_)) > S(0) && offset(r_.gate_end(k + 1, -orient_)) > S(0)) {
+        range.lo = S(2);
+        return false;
+      }
+      inside(range, r_.gate_end(k + 1, orient_));
+    }
     return !range.empty();
   }
 

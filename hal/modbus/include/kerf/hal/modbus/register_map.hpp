@@ -49,10 +49,12 @@ inline std::uint32_t get32(const std::uint16_t* r) {
 }
 inline std::int32_t get_i32(const std::uint16_t* r) { return static_cast<std::int32_t>(get32(r)); }
 
-// mm -> integer micrometres; false when it does not fit in 32 bits.
+// mm -> integer micrometres; false when it does not fit in 32 bits. The
+// whole int32 range, -2^31 included: what decode_slot/decode_status accept
+// must encode back (found by tests/fuzz/fuzz_modbus).
 inline bool to_units(double mm, std::int32_t& out) {
   const double u = std::nearbyint(mm * kUnitsPerMm);
-  if (!(u >= -2147483647.0 && u <= 2147483647.0)) return false;
+  if (!(u >= -2147483648.0 && u <= 2147483647.0)) return false;
   out = static_cast<std::int32_t>(u);
   return true;
 }

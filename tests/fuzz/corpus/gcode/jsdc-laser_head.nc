@@ -1,0 +1,40 @@
+G21         ; Set units to mm
+G90         ; Absolute positioning
+
+;
+; Operation:    0
+; Name:         
+; Type:         Engrave
+; Paths:        5
+; Direction:    Conventional
+; Cut Depth:    0.9999999999999999
+; Pass Depth:   3.175
+; Plunge rate:  127
+; Cut rate:     1016
+;
+
+; Path 0
+; Rapid to initial position
+G1 X43.9090 Y-28.2880 F1500
+M3 S80
+G4 P0.5
+; cut
+G1 X43.7449 Y-28.2892 F100
+G1 X43.6631 Y-28.2908
+G1 X43.5816 Y-28.2928
+G1 X43.5000 Y-28.2956
+G1 X43.4188 Y-28.2989
+G1 X43.3370 Y-28.3030
+G1 X43.1734 Y-28.3126
+G1 X43.0080 Y-28.3248
+G1 X42.9247 Y-28.3317
+G1 X42.7561 Y-28.3474
+G1 X42.5844 Y-28.3657
+G1 X42.4972 Y-28.3756
+G1 X42.3194 Y-28.3975
+G1 X42.1368 Y-28.4218
+G1 X42.0436 Y-28.4348
+G1 X41.8526 Y-28.4627
+G1 X41.7546 Y-28.4775
+G1 X41.5536 Y-28.5090
+G1 X41.3449 Y-28.5430
