@@ -42,7 +42,7 @@ bool read_job(const std::string& file, const std::string& criterion, io::PointFi
 
 bool fit_job(const std::vector<Vec2<double>>& pts, const std::vector<double>& tols, double tol,
              const std::string& criterion, std::vector<fit::Piece<double>>& out,
-             std::string& error, Status& status) {
+             std::string& error, Status& status, double tie_break) {
   status = Status::invalid_argument;
   if (!criterion_supported(criterion)) {
     error = "--criterion: unknown criterion \"" + criterion + "\" (expected vertex, band or biarc)";
@@ -76,11 +76,13 @@ bool fit_job(const std::vector<Vec2<double>>& pts, const std::vector<double>& to
     std::vector<fit::BandWidth<double>> widths(n, {tol, tol});
     for (std::size_t k = 0; k < tols.size() && k < n; ++k) widths[k] = {tols[k], tols[k]};
     io::BandStorage storage(n);
-    r = fit::fit_band_min_count(points, Span<const fit::BandWidth<double>>(widths.data(), n),
-                                storage.workspace(), dst);
+    const Span<const fit::BandWidth<double>> w(widths.data(), n);
+    r = tie_break > 0 ? fit::fit_band_min_count(points, w, storage.workspace(), dst, tie_break)
+                      : fit::fit_band_min_count(points, w, storage.workspace(), dst);
   } else {
     io::FitStorage storage(n);
-    r = fit::fit_min_count(points, tol, fit::Method::optimal, storage.workspace(), dst);
+    r = tie_break > 0 ? fit::fit_min_count(points, tol, fit::Method::optimal, storage.workspace(), dst, tie_break)
+                      : fit::fit_min_count(points, tol, fit::Method::optimal, storage.workspace(), dst);
   }
   if (!r.ok()) {
     status = r.status();

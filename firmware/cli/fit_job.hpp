@@ -33,9 +33,11 @@ bool read_job(const std::string& file, const std::string& criterion, io::PointFi
               const JobColumns& columns = {});
 
 // Fits pts (tols: one per point, or empty) at tol. On failure returns false
-// with `error` (no "kerf: " prefix) and `status` set.
+// with `error` (no "kerf: " prefix) and `status` set. tie_break > 0 sets the
+// vertex and band fitters' tie-break precision (fit/fit.hpp; >= 1 skips it);
+// 0 keeps their own.
 bool fit_job(const std::vector<Vec2<double>>& pts, const std::vector<double>& tols, double tol,
              const std::string& criterion, std::vector<fit::Piece<double>>& out,
-             std::string& error, Status& status);
+             std::string& error, Status& status, double tie_break = 0);
 
 }  // namespace kerf::cli

@@ -256,15 +256,26 @@ Result<std::uint32_t> count_band_min(Span<const Vec2<S>> pts, Span<const BandWid
 template <class S>
 Result<Fit<S>> fit_band_min_count(Span<const Vec2<S>> pts, Span<const BandWidth<S>> widths,
                                   BandWorkspace<S> ws, Span<Piece<S>> out) {
+  // To 1e-6: each step is a whole search; finer would change no cut.
+  return fit_band_min_count(pts, widths, ws, out, S(1e-6));
+}
+
+template <class S>
+Result<Fit<S>> fit_band_min_count(Span<const Vec2<S>> pts, Span<const BandWidth<S>> widths,
+                                  BandWorkspace<S> ws, Span<Piece<S>> out, S tie_break) {
   if (const Status s = band_detail::check_band_inputs(pts, widths, ws); s != Status::ok) return s;
   const band_detail::Problem<S> pb = band_detail::problem(pts, widths, ws);
+  const auto n = static_cast<std::uint32_t>(pts.size());
+  if (!(tie_break < S(1))) {  // no tie-break: build's own search is the count
+    Result<Fit<S>> fit = band_detail::build(pts, pb, S(1), n, out);
+    if (fit.ok()) fit.value().tol = band_detail::widest(widths);
+    return fit;
+  }
   std::uint32_t* pred = nullptr;
-  const Result<std::uint32_t> count =
-      band_detail::count_at(pb, S(1), static_cast<std::uint32_t>(pts.size()), pred);
+  const Result<std::uint32_t> count = band_detail::count_at(pb, S(1), n, pred);
   if (!count.ok()) return count.status();
-  // The tie-break: the smallest band that still allows this count, to 1e-6
-  // (each step is a whole search; finer would change no cut).
-  const Result<S> best = band_detail::bisect_scale(pb, count.value(), S(1), S(1e-6));
+  // The tie-break: the smallest band that still allows this count.
+  const Result<S> best = band_detail::bisect_scale(pb, count.value(), S(1), tie_break);
   if (!best.ok()) return best.status();
   Result<Fit<S>> fit = band_detail::build(pts, pb, best.value(), count.value(), out);
   if (fit.ok()) fit.value().tol = band_detail::widest(widths);  // as asked

@@ -55,6 +55,13 @@ template <class S>
 Result<Fit<S>> fit_min_count(Span<const Vec2<S>> pts, S tol, Method method, Workspace<S> ws,
                              Span<Piece<S>> out);
 
+// The same count, with the tie-break's precision `tie_break` (relative, 1e-9
+// above; each step of it is a whole search). tie_break >= 1 skips it: the
+// pieces are then a fewest-pieces solution at tol itself.
+template <class S>
+Result<Fit<S>> fit_min_count(Span<const Vec2<S>> pts, S tol, Method method, Workspace<S> ws,
+                             Span<Piece<S>> out, S tie_break);
+
 // The smallest tol (to 1e-9 relative) at which `pieces` pieces suffice, and
 // such a solution.
 template <class S>

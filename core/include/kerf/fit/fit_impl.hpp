@@ -86,11 +86,13 @@ S bbox_diagonal(Span<const Vec2<S>> pts) {
   return (hi - lo).norm();
 }
 
-// Smallest eps in [floor, hi] (to 1e-9 relative) at which `pieces` suffice,
-// given that they suffice at hi. Returns hi, the tightest known feasible eps.
+// Smallest eps in [floor, hi] (to `rel` relative) at which `pieces` suffice,
+// given that they suffice at hi. Returns hi, the tightest known feasible eps;
+// hi itself when rel >= 1.
 template <class S>
 Result<S> bisect_tol(Span<const Vec2<S>> pts, std::uint32_t pieces, Method method, Workspace<S> ws,
-                     S hi) {
+                     S hi, S rel) {
+  if (!(rel < S(1))) return hi;
   std::uint32_t* pred = nullptr;
   S lo = bbox_diagonal(pts) * S(1e-12);
   {
@@ -98,7 +100,7 @@ Result<S> bisect_tol(Span<const Vec2<S>> pts, std::uint32_t pieces, Method metho
     if (!c.ok()) return c.status();
     if (c.value() != 0) return lo;  // exact data: any positive tol is enough
   }
-  for (int it = 0; it < 200 && hi - lo > hi * S(1e-9); ++it) {
+  for (int it = 0; it < 200 && hi - lo > hi * rel; ++it) {
     const S mid = lo + (hi - lo) / S(2);
     const Result<std::uint32_t> c = count_at(pts, mid, method, ws, pieces, pred);
     if (!c.ok()) return c.status();
@@ -189,15 +191,26 @@ Result<std::uint32_t> count_min(Span<const Vec2<S>> pts, S tol, Method method, W
 template <class S>
 Result<Fit<S>> fit_min_count(Span<const Vec2<S>> pts, S tol, Method method, Workspace<S> ws,
                              Span<Piece<S>> out) {
+  return fit_min_count(pts, tol, method, ws, out, S(1e-9));
+}
+
+template <class S>
+Result<Fit<S>> fit_min_count(Span<const Vec2<S>> pts, S tol, Method method, Workspace<S> ws,
+                             Span<Piece<S>> out, S tie_break) {
   if (const Status s = detail::check_inputs(pts, ws); s != Status::ok) return s;
   if (!detail::tol_ok(tol)) return Status::invalid_argument;
   const detail::Scaled<S> sc = detail::scale_into(pts, ws.points);
+  const auto n = static_cast<std::uint32_t>(pts.size());
+  if (!(tie_break < S(1))) {  // no tie-break: build's own search is the count
+    Result<Fit<S>> fit = detail::build(pts, sc, tol * sc.factor, n, method, ws, out);
+    if (fit.ok()) fit.value().tol = tol;
+    return fit;
+  }
   std::uint32_t* pred = nullptr;
-  const Result<std::uint32_t> count = detail::count_at(
-      sc.pts, tol * sc.factor, method, ws, static_cast<std::uint32_t>(pts.size()), pred);
+  const Result<std::uint32_t> count = detail::count_at(sc.pts, tol * sc.factor, method, ws, n, pred);
   if (!count.ok()) return count.status();
   // The tie-break: the smallest tol that still allows this count.
-  const Result<S> best = detail::bisect_tol(sc.pts, count.value(), method, ws, tol * sc.factor);
+  const Result<S> best = detail::bisect_tol(sc.pts, count.value(), method, ws, tol * sc.factor, tie_break);
   if (!best.ok()) return best.status();
   Result<Fit<S>> fit = detail::build(pts, sc, best.value(), count.value(), method, ws, out);
   if (fit.ok()) fit.value().tol = tol;
@@ -217,7 +230,7 @@ Result<Fit<S>> fit_min_error(Span<const Vec2<S>> pts, std::uint32_t pieces, Meth
   const Result<std::uint32_t> c = detail::count_at(sc.pts, hi, method, ws, pieces, pred);
   if (!c.ok()) return c.status();
   if (c.value() == 0) return Status::infeasible;
-  const Result<S> best = detail::bisect_tol(sc.pts, pieces, method, ws, hi);
+  const Result<S> best = detail::bisect_tol(sc.pts, pieces, method, ws, hi, S(1e-9));
   if (!best.ok()) return best.status();
   return detail::build(pts, sc, best.value(), pieces, method, ws, out);
 }
