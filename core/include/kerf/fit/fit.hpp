@@ -36,8 +36,8 @@ struct Fit {
 
 // Storage for n points: index words, two interval buffers, and a copy of the
 // points scaled by a power of two (exact) so that any input magnitude fits
-// the arithmetic.
-constexpr std::size_t workspace_words(std::size_t n) { return 5 * n; }
+// the arithmetic. 5 n words suffice; the sixth n speeds up the tie-break.
+constexpr std::size_t workspace_words(std::size_t n) { return 6 * n; }
 constexpr std::size_t workspace_intervals(std::size_t n) { return 2 * (3 * n + 8); }
 constexpr std::size_t workspace_points(std::size_t n) { return n; }
 
