@@ -29,10 +29,31 @@ std::string format_number(double v, int decimals) {
 
 double rounded(double v, int decimals) { return std::strtod(format_number(v, decimals).c_str(), nullptr); }
 
-double distance_to_polyline(const std::vector<P>& pts, std::size_t a, std::size_t b, P q) {
+// max(dev, distance from q to the polyline pts[a..b] + widen), exactly. The
+// scan starts at segment `near` (the last sample's nearest: the samples walk
+// along the polyline) and goes outwards; it stops once q is within dev, where
+// the rest of the minimum cannot change the maximum. `near` receives q's
+// nearest segment when the scan went through.
+double raise_to_polyline(const std::vector<P>& pts, std::size_t a, std::size_t b, P q, double widen,
+                         double dev, std::size_t& near) {
   double best = distance(pts[a], q);
-  for (std::size_t k = a; k < b; ++k) best = std::min(best, distance_to_line_segment(pts[k], pts[k + 1], q));
-  return best;
+  if (best + widen <= dev) return dev;
+  const std::size_t from = std::clamp(near, a, b - 1);
+  auto within = [&](std::size_t k) {  // true once q is known to be within dev
+    const double d = distance_to_line_segment(pts[k], pts[k + 1], q);
+    if (d < best) {
+      best = d;
+      near = k;
+    }
+    return best + widen <= dev;
+  };
+  for (std::size_t step = 0;; ++step) {
+    const bool up = from + step < b;
+    const bool down = step > 0 && from >= a + step;
+    if (!up && !down) break;
+    if ((up && within(from + step)) || (down && within(from - step))) return dev;
+  }
+  return std::max(dev, best + widen);
 }
 
 // A piece as written: its rounded end and centre, the text after the G word.
@@ -75,6 +96,7 @@ Written write_piece(const Segment<double>& s, P from, const std::vector<P>& pts,
     length = r * sweep;
   }
   const std::size_t n = std::clamp<std::size_t>(static_cast<std::size_t>(std::ceil(4 * length / tol)), 8, 512);
+  std::size_t near = a;
   for (std::size_t k = 1; k < n; ++k) {
     const double t = static_cast<double>(k) / static_cast<double>(n);
     P q;
@@ -84,7 +106,7 @@ Written write_piece(const Segment<double>& s, P from, const std::vector<P>& pts,
     } else {
       q = from + (w.end - from) * t;
     }
-    dev = std::max(dev, distance_to_polyline(pts, a, b, q) + widen);
+    dev = raise_to_polyline(pts, a, b, q, widen, dev, near);
   }
   w.deviation = dev;
   return w;
