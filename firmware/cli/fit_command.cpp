@@ -84,7 +84,7 @@ CLI::App* add_fit_command(CLI::App& app, FitOptions& opts) {
       ->capture_default_str();
   fit->add_option("--numeric", opts.numeric,
                   "Scalar type of the fit: double, or fixed (Q31.32, what a core without an FPU "
-                  "runs; vertex criterion only)")
+                  "runs; vertex and band criteria)")
       ->type_name("TYPE")
       ->capture_default_str();
   fit->add_option("file", opts.file, "Point file, one \"x y\" per line; - for stdin")
@@ -110,12 +110,8 @@ int check_options(const FitOptions& opts, bool band, fit::Method& method, std::u
                        " is a vertex-criterion rule; --criterion band is always optimal");
   if (!band && (!opts.tol_left.empty() || !opts.tol_right.empty()))
     return usage_error("--tol-left and --tol-right need --criterion band");
-  if (opts.numeric != "double" && opts.numeric != "fixed")
-    return usage_error("--numeric: unknown type " + quoted(opts.numeric) +
-                       " (expected double or fixed)");
-  if (band && opts.numeric == "fixed")
-    return usage_error("--numeric fixed: the band fitter runs in double only (vertex criterion "
-                       "has fixed point)");
+  if (const std::string bad = numeric_problem(opts.numeric, opts.criterion); !bad.empty())
+    return usage_error(bad);
   if (opts.format != "esgi" && opts.format != "json")
     return usage_error("--format: unknown format " + quoted(opts.format) +
                        " (expected esgi or json)");
@@ -139,9 +135,8 @@ int check_options(const FitOptions& opts, bool band, fit::Method& method, std::u
 
 int run_fit(const FitOptions& opts) {
   if (opts.criterion == "biarc") {
-    if (opts.numeric != "double")
-      return usage_error("--numeric " + opts.numeric + ": the biarc fitter runs in double only (vertex criterion "
-                         "has fixed point)");
+    if (const std::string bad = numeric_problem(opts.numeric, opts.criterion); !bad.empty())
+      return usage_error(bad);
     return run_fit_biarc(opts);
   }
   if (!opts.tangents.empty() || opts.tangent_format != "vector")
@@ -184,8 +179,11 @@ int run_fit(const FitOptions& opts) {
     if (band) {
       io::BandStorage storage(m);
       const Span<const fit::BandWidth<double>> ws_widths(widths.data() + b, m);
-      r = by_pieces ? fit::fit_band_min_error(path, ws_widths, pieces, storage.workspace(), dst)
-                    : fit::fit_band_min_count(path, ws_widths, storage.workspace(), dst);
+      if (opts.numeric == "fixed")
+        r = fit_band_fixed(path, ws_widths, by_pieces ? pieces : 0, dst);
+      else
+        r = by_pieces ? fit::fit_band_min_error(path, ws_widths, pieces, storage.workspace(), dst)
+                      : fit::fit_band_min_count(path, ws_widths, storage.workspace(), dst);
     } else if (opts.numeric == "fixed") {
       r = fit_vertex_fixed(path, tol, by_pieces ? pieces : 0, method, dst);
     } else {

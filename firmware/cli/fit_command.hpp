@@ -28,7 +28,7 @@ struct FitOptions {
   std::string tangents;                  // biarc: given | estimate (default: given when
                                          // the file has them)
   std::string tangent_format = "vector";  // biarc: vector (x y tx ty) | angle (x y deg)
-  std::string numeric = "double";  // vertex criterion: double or fixed (kerf::Fixed)
+  std::string numeric = "double";  // vertex and band criteria: double or fixed (kerf::Fixed)
   std::string file;
 };
 

@@ -1,10 +1,12 @@
-// The vertex fitter run in kerf::Fixed for `kerf fit --numeric fixed`: the
-// points and tol are rounded to the fixed-point grid, the fit runs there, and
-// the pieces come back in double for the usual check and output.
+// The vertex and band fitters run in kerf::Fixed for `--numeric fixed`
+// (kerf fit, plan, sim, run): the points and widths are rounded to the
+// fixed-point grid, the fit runs there, and the pieces come back in double
+// for the usual check and output.
 #pragma once
 
 #include <cstdint>
 
+#include "kerf/fit/band_region.hpp"
 #include "kerf/fit/fit.hpp"
 
 namespace kerf::cli {
@@ -20,5 +22,11 @@ double fixed_fit_slack(Span<const Vec2<double>> pts);
 Result<fit::Fit<double>> fit_vertex_fixed(Span<const Vec2<double>> pts, double tol,
                                           std::uint32_t pieces, fit::Method method,
                                           Span<fit::Piece<double>> out);
+
+// fit_band_min_count (pieces == 0) or fit_band_min_error (pieces > 0) in
+// Fixed; out holds the pieces in double. The widths are per point.
+Result<fit::Fit<double>> fit_band_fixed(Span<const Vec2<double>> pts,
+                                        Span<const fit::BandWidth<double>> widths,
+                                        std::uint32_t pieces, Span<fit::Piece<double>> out);
 
 }  // namespace kerf::cli

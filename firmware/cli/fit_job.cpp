@@ -2,6 +2,7 @@
 
 #include "cli/biarc_job.hpp"
 #include "cli/check_fit.hpp"
+#include "cli/fit_fixed.hpp"
 
 #include <cstdio>
 #include "io/band_storage.hpp"
@@ -40,14 +41,27 @@ bool read_job(const std::string& file, const std::string& criterion, io::PointFi
   return out.ok;
 }
 
+std::string numeric_problem(const std::string& numeric, const std::string& criterion) {
+  if (numeric != "double" && numeric != "fixed")
+    return "--numeric: unknown type \"" + numeric + "\" (expected double or fixed)";
+  if (numeric == "fixed" && criterion == "biarc")
+    return "--numeric fixed: the biarc fitter runs in double only (vertex and band have fixed point)";
+  return "";
+}
+
 bool fit_job(const std::vector<Vec2<double>>& pts, const std::vector<double>& tols, double tol,
              const std::string& criterion, std::vector<fit::Piece<double>>& out,
-             std::string& error, Status& status, double tie_break) {
+             std::string& error, Status& status, const std::string& numeric, double tie_break) {
   status = Status::invalid_argument;
   if (!criterion_supported(criterion)) {
     error = "--criterion: unknown criterion \"" + criterion + "\" (expected vertex, band or biarc)";
     return false;
   }
+  if (const std::string bad = numeric_problem(numeric, criterion); !bad.empty()) {
+    error = bad;
+    return false;
+  }
+  const bool fixed = numeric == "fixed";
   if (criterion == "biarc") {
     if (!tols.empty()) {
       error = "a third column (per-point tol) needs --criterion band";
@@ -75,10 +89,13 @@ bool fit_job(const std::vector<Vec2<double>>& pts, const std::vector<double>& to
   if (band) {
     std::vector<fit::BandWidth<double>> widths(n, {tol, tol});
     for (std::size_t k = 0; k < tols.size() && k < n; ++k) widths[k] = {tols[k], tols[k]};
-    io::BandStorage storage(n);
     const Span<const fit::BandWidth<double>> w(widths.data(), n);
-    r = tie_break > 0 ? fit::fit_band_min_count(points, w, storage.workspace(), dst, tie_break)
-                      : fit::fit_band_min_count(points, w, storage.workspace(), dst);
+    io::BandStorage storage(n);
+    r = fixed           ? fit_band_fixed(points, w, 0, dst)
+        : tie_break > 0 ? fit::fit_band_min_count(points, w, storage.workspace(), dst, tie_break)
+                        : fit::fit_band_min_count(points, w, storage.workspace(), dst);
+  } else if (fixed) {
+    r = fit_vertex_fixed(points, tol, 0, fit::Method::optimal, dst);
   } else {
     io::FitStorage storage(n);
     r = tie_break > 0 ? fit::fit_min_count(points, tol, fit::Method::optimal, storage.workspace(), dst, tie_break)
@@ -91,9 +108,10 @@ bool fit_job(const std::vector<Vec2<double>>& pts, const std::vector<double>& to
   }
   // A band piece crosses each inner point's gate, so it passes within the
   // widest width (the band fit's tol) of every inner point: the vertex check
-  // applies to it too.
+  // applies to it too. Fixed-point pieces may exceed it by the quantization.
   const Span<const fit::Piece<double>> fitted(dst.data(), r.value().pieces);
-  if (const std::string bad = check_fit(points, fitted, r.value().tol); !bad.empty()) {
+  const double allowance = fixed ? fixed_fit_slack(points) : 0.0;
+  if (const std::string bad = check_fit(points, fitted, r.value().tol + allowance); !bad.empty()) {
     status = Status::infeasible;
     error = "internal error: the fit fails its own check (" + bad + ")";
     return false;

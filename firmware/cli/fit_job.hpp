@@ -32,12 +32,20 @@ struct JobColumns {
 bool read_job(const std::string& file, const std::string& criterion, io::PointFile& out,
               const JobColumns& columns = {});
 
-// Fits pts (tols: one per point, or empty) at tol. On failure returns false
+// The scalar types a fit runs in (`--numeric`, the config's fit.numeric):
+// "double", or "fixed" (kerf::Fixed, Q31.32: what a core without an FPU runs;
+// vertex and band criteria). Empty when `numeric` suits the criterion, else
+// the reason, e.g. "--numeric fixed: the biarc fitter runs in double only".
+std::string numeric_problem(const std::string& numeric, const std::string& criterion);
+
+// Fits pts (tols: one per point, or empty) at tol, in the scalar type
+// `numeric` (checked with numeric_problem first). On failure returns false
 // with `error` (no "kerf: " prefix) and `status` set. tie_break > 0 sets the
-// vertex and band fitters' tie-break precision (fit/fit.hpp; >= 1 skips it);
-// 0 keeps their own.
+// double vertex and band fitters' tie-break precision (fit/fit.hpp; >= 1
+// skips it); 0 keeps their own.
 bool fit_job(const std::vector<Vec2<double>>& pts, const std::vector<double>& tols, double tol,
              const std::string& criterion, std::vector<fit::Piece<double>>& out,
-             std::string& error, Status& status, double tie_break = 0);
+             std::string& error, Status& status, const std::string& numeric = "double",
+             double tie_break = 0);
 
 }  // namespace kerf::cli

@@ -7,7 +7,7 @@
 namespace kerf::cli {
 
 bool fit_paths(const io::PointFile& in, const std::string& criterion, double tol, double feed_mm_s,
-               FittedJob& out, std::string& error, Status& status) {
+               FittedJob& out, std::string& error, Status& status, const std::string& numeric) {
   out = FittedJob{};
   std::vector<std::size_t> begins = in.path_begin;
   if (begins.empty()) begins.push_back(0);
@@ -21,7 +21,7 @@ bool fit_paths(const io::PointFile& in, const std::string& criterion, double tol
       tols.assign(in.tols.begin() + static_cast<std::ptrdiff_t>(b), in.tols.begin() + static_cast<std::ptrdiff_t>(e));
     std::vector<fit::Piece<double>> pieces;
     std::string why;
-    if (!fit_job(pts, tols, tol, criterion, pieces, why, status)) {
+    if (!fit_job(pts, tols, tol, criterion, pieces, why, status, numeric)) {
       error = "path " + std::to_string(p + 1) + " (line " +
               std::to_string(b < in.point_lines.size() ? in.point_lines[b] : 0) + "): " + why;
       return false;
@@ -47,10 +47,10 @@ bool fit_paths(const io::PointFile& in, const std::string& criterion, double tol
 }
 
 int fit_paths_or_say(const io::PointFile& in, const std::string& criterion, double tol, double feed_mm_s,
-                     FittedJob& out) {
+                     FittedJob& out, const std::string& numeric) {
   std::string error;
   Status status = Status::ok;
-  if (fit_paths(in, criterion, tol, feed_mm_s, out, error, status)) return 0;
+  if (fit_paths(in, criterion, tol, feed_mm_s, out, error, status, numeric)) return 0;
   std::fprintf(stderr, "kerf: %s: %s\n", in.file.c_str(), error.c_str());
   return status == Status::invalid_argument || status == Status::degenerate ? 2 : 1;
 }

@@ -22,13 +22,15 @@ struct FittedJob {
 };
 
 // On failure returns false with `error` ("path N (line L): reason") and `status`.
+// numeric: the fit's scalar type, "double" or "fixed" (cli/fit_job.hpp).
 bool fit_paths(const io::PointFile& in, const std::string& criterion, double tol, double feed_mm_s,
-               FittedJob& out, std::string& error, Status& status);
+               FittedJob& out, std::string& error, Status& status,
+               const std::string& numeric = "double");
 
 // fit_paths for a command: on failure prints "kerf: FILE: reason" and
 // returns the exit code (2 for bad input, 1 otherwise); 0 on success.
 int fit_paths_or_say(const io::PointFile& in, const std::string& criterion, double tol, double feed_mm_s,
-                     FittedJob& out);
+                     FittedJob& out, const std::string& numeric = "double");
 
 // The job's journal for a run: none (empty path; the run starts at the
 // job's beginning), a new one, or with `resume` the one a previous run left,

@@ -32,6 +32,11 @@ CLI::App* add_plan_command(CLI::App& app, PlanOptions& opts) {
                    "vertex (points within tol of their arc) or band (the whole arc within tol)")
       ->type_name("NAME")
       ->capture_default_str();
+  plan->add_option("--numeric", opts.numeric,
+                   "Scalar type of the fit: double, or fixed (Q31.32, what a core without an FPU "
+                   "runs; vertex and band criteria)")
+      ->type_name("TYPE")
+      ->capture_default_str();
   plan->add_option("--feed", opts.feed, "Programmed feed, mm/min")->type_name("MM_PER_MIN");
   plan->add_option("--period", opts.period, "Servo period, s")->type_name("S");
   plan->add_option("--accel", opts.accel, "Acceleration limit along the path, mm/s^2")
@@ -59,6 +64,8 @@ int run_plan(const PlanOptions& opts) {
   if (!criterion_supported(opts.criterion))
     return usage_error("--criterion: unknown criterion \"" + opts.criterion +
                        "\" (expected vertex, band or biarc)");
+  if (const std::string bad = numeric_problem(opts.numeric, opts.criterion); !bad.empty())
+    return usage_error(bad);
   if (!parse_length("--feed", opts.feed, false, feed, error) ||
       !parse_length("--period", opts.period, false, period, error) ||
       !parse_length("--accel", opts.accel, false, accel, error) ||
@@ -81,7 +88,7 @@ int run_plan(const PlanOptions& opts) {
     return kExitUsage;
   }
   std::vector<Segment<double>> path;
-  if (!fit_path(in.points, in.tols, tol, opts.criterion, path, error)) {
+  if (!fit_path(in.points, in.tols, tol, opts.criterion, path, error, opts.numeric)) {
     std::fprintf(stderr, "kerf: %s: %s\n", in.file.c_str(), error.c_str());
     return kExitFailure;
   }

@@ -16,6 +16,7 @@ namespace kerf::cli {
 struct PlanOptions {
   std::string tol;
   std::string criterion = "vertex";
+  std::string numeric = "double";  // the fit's scalar type: double or fixed
   std::string feed;    // mm/min
   std::string period;  // s
   std::string accel;   // mm/s^2

@@ -14,9 +14,11 @@ namespace kerf::cli {
 
 // Fits the points (tols: the file's per-point column, or empty) into
 // segments with the named criterion (cli/fit_job.hpp). On failure, returns
-// false and sets error to a message without the "kerf: " prefix.
+// false and sets error to a message without the "kerf: " prefix. numeric:
+// the fit's scalar type, "double" or "fixed".
 bool fit_path(const std::vector<Vec2<double>>& pts, const std::vector<double>& tols, double tol,
-              const std::string& criterion, std::vector<Segment<double>>& out, std::string& error);
+              const std::string& criterion, std::vector<Segment<double>>& out, std::string& error,
+              const std::string& numeric = "double");
 
 // What the run measured from its own setpoints.
 struct PlanSummary {

@@ -85,7 +85,10 @@ int run_run(const RunOptions& opts) {
   io::PointFile in;
   if (!read_job(opts.job, cfg.fit.criterion, in)) return kExitUsage;
   FittedJob fitted;
-  if (const int rc = fit_paths_or_say(in, cfg.fit.criterion, cfg.fit.tol, cfg.cut.feed / 60.0, fitted); rc != 0) return rc;
+  if (const int rc = fit_paths_or_say(in, cfg.fit.criterion, cfg.fit.tol, cfg.cut.feed / 60.0, fitted,
+                                      cfg.fit.numeric);
+      rc != 0)
+    return rc;
   // The devices before the journal: a new journal replaces the old one, which
   // must not happen for a run that cannot even start.
   std::unique_ptr<hal::Gpio> gpio = open_gpio(cfg, opts.sim_gpio, error);

@@ -137,6 +137,8 @@ int run_sim(const SimOptions& given) {
   const std::string criterion = opts.criterion.empty() ? cfg.fit.criterion : opts.criterion;
   if (!criterion_supported(criterion))
     return usage_error("--criterion: unknown criterion " + quoted(criterion) + " (expected vertex, band or biarc)");
+  const std::string numeric = opts.numeric.empty() ? cfg.fit.numeric : opts.numeric;
+  if (const std::string bad = numeric_problem(numeric, criterion); !bad.empty()) return usage_error(bad);
   double tol = cfg.fit.tol, feed = cfg.cut.feed, speed = 0.0, link_timeout = cfg.link.timeout;
   if ((!opts.tol.empty() && !parse_length("--tol", opts.tol, false, tol, error)) ||
       (!opts.feed.empty() && !parse_length("--feed", opts.feed, false, feed, error)) ||
@@ -190,7 +192,7 @@ int run_sim(const SimOptions& given) {
     return kExitUsage;
   }
   FittedJob fitted;
-  if (const int rc = fit_paths_or_say(in, criterion, tol, feed / 60.0, fitted); rc != 0) return rc;
+  if (const int rc = fit_paths_or_say(in, criterion, tol, feed / 60.0, fitted, numeric); rc != 0) return rc;
 
   std::unique_ptr<control::Journal> journal;
   control::ResumePoint from;

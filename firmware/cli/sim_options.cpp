@@ -20,6 +20,9 @@ CLI::App* add_sim_command(CLI::App& app, SimOptions& o) {
       ->type_name("IFACE");
   s->add_option("--tol", o.tol, "Fit tolerance in mm (default: the config's)")->type_name("EPS");
   s->add_option("--criterion", o.criterion, "vertex or band (default: the config's)")->type_name("NAME");
+  s->add_option("--numeric", o.numeric,
+                "Scalar type of the fit: double or fixed (Q31.32; vertex and band) (default: the config's)")
+      ->type_name("TYPE");
   s->add_option("--feed", o.feed, "Cut feed in mm/min (default: the config's)")->type_name("MM_PER_MIN");
   s->add_option("--fault", o.faults,
                 "KIND@SECONDS[:DURATION]: estop, arc-lost, no-arc, limit, hold, cycle-start, drive-fault; "

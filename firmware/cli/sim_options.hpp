@@ -17,6 +17,7 @@ struct SimOptions {
   std::string link;                 // modbus-tcp | modbus-rtu
   std::string tol;
   std::string criterion;
+  std::string numeric;  // the fit's scalar type; empty: the config's (fit.numeric)
   std::string feed;                 // mm/min
   std::vector<std::string> faults;  // KIND@SECONDS[:DURATION]
   std::string gpio_script;          // timed GPIO events (sim/README.md)

@@ -218,7 +218,7 @@ struct Welder {
                                 pts.begin() + static_cast<std::ptrdiff_t>(k) + 1);
       std::vector<fit::Piece<double>> got;
       Status status = Status::ok;
-      if (!fit_job(part, {}, tol, opts.criterion, got, error, status, tie_break(opts.criterion))) return false;
+      if (!fit_job(part, {}, tol, opts.criterion, got, error, status, "double", tie_break(opts.criterion))) return false;
       for (fit::Piece<double> p : got) {
         p.first += static_cast<std::uint32_t>(begin);
         p.last += static_cast<std::uint32_t>(begin);
@@ -359,7 +359,7 @@ struct Welder {
         std::vector<fit::Piece<double>> again;
         Status status = Status::ok;
         // A finer tie-break than the first fit: rare, and its pieces then hug the input.
-        if (!fit_job(part, {}, fit_tol / 2, "band", again, error, status, 1e-3)) return false;
+        if (!fit_job(part, {}, fit_tol / 2, "band", again, error, status, "double", 1e-3)) return false;
         for (fit::Piece<double>& p : again) {
           p.first += pc.first;
           p.last += pc.first;

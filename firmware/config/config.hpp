@@ -44,6 +44,7 @@ struct Link {
 
 struct Fit {
   std::string criterion = "band";  // vertex | band | biarc
+  std::string numeric = "double";  // the fit's scalar type: double | fixed (not with biarc)
   double tol = 0.025;              // mm, > 0
 };
 

@@ -223,6 +223,15 @@ void read_fit(TableReader& r, Fit& fit) {
     else
       r.problem("criterion", "unknown criterion " + quote(criterion) + " (expected vertex, band or biarc)");
   }
+  std::string numeric;
+  if (r.string("numeric", numeric)) {
+    if (numeric != "double" && numeric != "fixed")
+      r.problem("numeric", "unknown type " + quote(numeric) + " (expected double or fixed)");
+    else if (numeric == "fixed" && fit.criterion == "biarc")
+      r.problem("numeric", "fixed: the biarc fitter runs in double only (vertex and band have fixed point)");
+    else
+      fit.numeric = numeric;
+  }
   r.positive("tol", fit.tol);
   r.finish();
 }

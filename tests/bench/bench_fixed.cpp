@@ -1,6 +1,6 @@
-// kerf::Fixed against double: the vertex fit of the sine curve and the
-// interpolator's step, each timed in both scalar types (best of a few runs),
-// and the fixed/double ratio printed.
+// kerf::Fixed against double: the vertex and band fits of the sine curve and
+// the interpolator's step, each timed in both scalar types (best of a few
+// runs), and the fixed/double ratio printed.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -8,6 +8,7 @@
 
 #include "bench_util.hpp"
 #include "kerf/core/fixed_convert.hpp"
+#include "kerf/fit/band_fit.hpp"
 #include "kerf/fit/fit.hpp"
 #include "kerf/motion/interpolator.hpp"
 
@@ -51,6 +52,31 @@ Fitted<S> time_fit(const std::vector<kerf::Vec2<double>>& pd, double tol, int ru
   return out;
 }
 
+// The band fit (min count, with its tie-break bisection) at tol on both sides.
+template <class S>
+Fitted<S> time_band(const std::vector<kerf::Vec2<double>>& pd, double tol, int runs) {
+  const std::size_t n = pd.size();
+  std::vector<kerf::Vec2<S>> p(n);
+  for (std::size_t k = 0; k < n; ++k) p[k] = {from_d<S>(pd[k].x), from_d<S>(pd[k].y)};
+  const std::vector<kerf::fit::BandWidth<S>> w(n, {from_d<S>(tol), from_d<S>(tol)});
+  std::vector<std::uint32_t> words(kerf::fit::band_workspace_words(n));
+  std::vector<kerf::Vec2<S>> scaled(n);
+  std::vector<kerf::fit::BandVertex<S>> vertices(n);
+  Fitted<S> out;
+  out.pieces.resize(n);
+  for (int r = 0; r < runs; ++r) {
+    const auto t0 = Clock::now();
+    const auto res = kerf::fit::fit_band_min_count<S>(
+        {p.data(), n}, {w.data(), n},
+        {{words.data(), words.size()}, {scaled.data(), n}, {vertices.data(), n}},
+        {out.pieces.data(), n});
+    const double ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+    out.best_ms = std::min(out.best_ms, ms);
+    out.count = res.ok() ? res.value().pieces : 0;
+  }
+  return out;
+}
+
 // ns per interpolator step over the fitted path at 100 mm/s, 1 ms period.
 template <class S>
 double time_steps(const Fitted<S>& f, long& steps) {
@@ -78,6 +104,10 @@ int main() {
   const auto ff = time_fit<kerf::Fixed>(pd, tol, 3);
   std::printf("fit sine n=400 tol %.2f: double %u pieces %.3f ms, fixed %u pieces %.3f ms, ratio %.1f\n",
               tol, fd.count, fd.best_ms, ff.count, ff.best_ms, ff.best_ms / fd.best_ms);
+  const auto bd = time_band<double>(pd, tol, 5);
+  const auto bf = time_band<kerf::Fixed>(pd, tol, 3);
+  std::printf("band fit sine n=400 tol %.2f: double %u pieces %.3f ms, fixed %u pieces %.3f ms, ratio %.1f\n",
+              tol, bd.count, bd.best_ms, bf.count, bf.best_ms, bf.best_ms / bd.best_ms);
   long sd = 0, sf = 0;
   double nd = 1e300, nf = 1e300;
   for (int r = 0; r < 3; ++r) {
@@ -86,5 +116,5 @@ int main() {
   }
   std::printf("interpolate: double %ld steps %.1f ns/step, fixed %ld steps %.1f ns/step, ratio %.1f\n",
               sd, nd, sf, nf, nf / nd);
-  return fd.count == ff.count ? 0 : 1;
+  return fd.count == ff.count && bd.count == bf.count ? 0 : 1;
 }

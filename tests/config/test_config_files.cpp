@@ -53,6 +53,7 @@ TEST(ConfigFiles, PlasmaTableExampleLoads) {
 
   EXPECT_EQ(c.fit.criterion, "band");
   EXPECT_EQ(c.fit.tol, 0.025);
+  EXPECT_EQ(c.fit.numeric, "double");
   EXPECT_EQ(c.cut.feed, 3000);
   EXPECT_EQ(c.cut.pierce_delay, 0.5);
   EXPECT_EQ(c.cut.arc_ok_timeout, 3.0);
@@ -98,6 +99,7 @@ TEST(ConfigFiles, Defaults) {
   EXPECT_TRUE(c.gpio.limits.empty());
   EXPECT_EQ(c.fit.criterion, "band");
   EXPECT_EQ(c.fit.tol, 0.025);
+  EXPECT_EQ(c.fit.numeric, "double");
   EXPECT_EQ(c.cut.feed, 3000);
   EXPECT_EQ(c.cut.pierce_delay, 0.5);
   EXPECT_EQ(c.cut.arc_ok_timeout, 3.0);
@@ -115,6 +117,16 @@ TEST(ConfigFiles, SmallestFileKeepsTheDefaults) {
   EXPECT_EQ(c.machine.accel, d.machine.accel);
   EXPECT_EQ(c.link.port, d.link.port);
   EXPECT_EQ(c.cut.feed, d.cut.feed);
+}
+
+TEST(ConfigFiles, FitNumericFixed) {
+  Config c;
+  std::string error;
+  ASSERT_TRUE(parse("[link]\nkind = \"modbus-tcp\"\n[fit]\ncriterion = \"vertex\"\nnumeric = \"fixed\"\n",
+                    "fixed.toml", c, error))
+      << error;
+  EXPECT_EQ(c.fit.criterion, "vertex");
+  EXPECT_EQ(c.fit.numeric, "fixed");
 }
 
 TEST(ConfigFiles, OtherLinksAndLinesByName) {

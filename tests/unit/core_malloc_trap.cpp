@@ -1,7 +1,7 @@
 // The core never allocates, proven at run time: this program replaces malloc,
 // calloc, realloc and operator new with a trap that aborts while armed, then
-// runs the vertex fitter and the interpolator in double and in kerf::Fixed on
-// the report's parabola, all storage static. `--self-check` allocates while
+// runs the vertex fitter, the band fitter and the interpolator in double and
+// in kerf::Fixed on the report's parabola, all storage static. `--self-check` allocates while
 // armed and must die with the trap's message, which shows the trap is live.
 #include <unistd.h>
 
@@ -11,6 +11,7 @@
 #include <new>
 
 #include "kerf/core/fixed_convert.hpp"
+#include "kerf/fit/band_fit.hpp"
 #include "kerf/fit/fit.hpp"
 #include "kerf/motion/interpolator.hpp"
 
@@ -77,6 +78,26 @@ template <class S>
 kerf::motion::QueuedSegment<S> g_slots[kN];
 
 template <class S>
+struct BandStatic {
+  std::uint32_t words[kerf::fit::band_workspace_words(kN)];
+  kerf::Vec2<S> scaled[kN];
+  kerf::fit::BandVertex<S> vertices[kN];
+  kerf::fit::BandWidth<S> widths[kN];
+  kerf::fit::Piece<S> pieces[kN];
+};
+BandStatic<double> g_bd;
+BandStatic<kerf::Fixed> g_bf;
+
+// The band fit of the parabola's points at `tol` on both sides.
+template <class S>
+std::uint32_t band_pieces(const FitStatic<S>& pts, BandStatic<S>& st, S tol) {
+  for (std::size_t k = 0; k < kN; ++k) st.widths[k] = {tol, tol};
+  const kerf::fit::BandWorkspace<S> ws{st.words, st.scaled, st.vertices};
+  const auto r = kerf::fit::fit_band_min_count<S>({pts.points, kN}, {st.widths, kN}, ws, st.pieces);
+  return r.ok() ? r.value().pieces : 0;
+}
+
+template <class S>
 std::uint32_t fit_pieces(FitStatic<S>& st, S tol) {
   const kerf::fit::Workspace<S> ws{st.words, st.intervals, st.scaled};
   const auto r = kerf::fit::fit_min_count<S>({st.points, kN}, tol, kerf::fit::Method::optimal, ws,
@@ -126,6 +147,8 @@ int main(int argc, char** argv) {
   const long td = interpolate<double>(g_fd, nd, 0.001, 1000.0, 100.0);
   const long tf = interpolate<kerf::Fixed>(g_ff, nf, kerf::Fixed(0.001), kerf::Fixed(1000),
                                            kerf::Fixed(100));
+  const std::uint32_t bd = band_pieces<double>(g_fd, g_bd, 0.0183);
+  const std::uint32_t bf = band_pieces<kerf::Fixed>(g_ff, g_bf, kerf::Fixed(0.0183));
   g_armed = false;
 
   int failed = 0;
@@ -137,6 +160,8 @@ int main(int argc, char** argv) {
   check(nf == 5, "fixed fit of the parabola at 0.0183: 5 pieces");
   check(td > 0, "double interpolation reaches the end");
   check(tf > 0 && (tf - td) * (tf - td) <= 4, "fixed interpolation reaches the end within 2 periods of double");
-  std::printf("%d passed, %d failed\n", 4 - failed, failed);
+  check(bd == 5, "double band fit of the parabola at 0.0183: 5 pieces");
+  check(bf == 5, "fixed band fit of the parabola at 0.0183: 5 pieces");
+  std::printf("%d passed, %d failed\n", 6 - failed, failed);
   return failed == 0 ? 0 : 1;
 }

@@ -18,6 +18,7 @@
 // centre, which is far away on nearly straight arcs.
 #pragma once
 
+#include "kerf/fit/band_numeric.hpp"
 #include "kerf/fit/band_region.hpp"
 #include "kerf/geom/segment.hpp"
 
@@ -31,10 +32,10 @@ class ArcProbe {
   // (cos psi, sin psi) up to scale in the chord frame (u, n).
   ArcProbe(Vec2<S> a, Vec2<S> b, Vec2<S> d, int orient) : a_(a), b_(b) {
     const Vec2<S> u = b - a;
-    const S len = u.norm();
+    const S len = band_detail::length(u);
     u_ = u * (S(1) / len);
     n_ = u_.perp() * S(orient);
-    const S dl = d.norm();
+    const S dl = band_detail::length(d);
     d_ = d * (S(1) / dl);
     t_ = u_ * d_.x - n_ * d_.y;  // t = (cos psi, -sin psi) in the frame
     m_ = n_ * d_.x + u_ * d_.y;  // t rotated towards the bulge's far side
@@ -91,7 +92,7 @@ class ArcProbe {
     const S st = e.dot(m_);
     Vec2<S> half = (ct > S(-0.5)) ? Vec2<S>{S(1) + ct, st} : Vec2<S>{st, S(1) - ct};
     if (half.y < S(0)) half = -half;
-    const S hl = half.norm();
+    const S hl = band_detail::length(half);
     if (!(hl > S(0))) return 0;
     half = half * (S(1) / hl);
     // The chord from a at angle sigma has length 2 r sin(sigma) = 2 h sin(sigma) / sin(psi).
@@ -112,7 +113,7 @@ class ArcProbe {
     const S r = h_ / d_.y;
     const Vec2<S> c = a_ + m_ * r;
     const Vec2<S> v = c - p;
-    const S len = v.norm();
+    const S len = band_detail::length(v);
     if (!(len > S(0))) return false;
     out = c + v * (r / len);
     return true;
@@ -152,12 +153,12 @@ S band_deviation(const BandRegion<S>& r, std::uint32_t i, std::uint32_t j, Vec2<
     const S hi = arc.sigma(to);
     auto consider = [&](Vec2<S> x) {
       const S s = arc.sigma(x);
-      if (!(s < lo) && !(s > hi)) worst = max_of(worst, distance_to_line_segment(p0, p1, x));
+      if (!(s < lo) && !(s > hi)) worst = max_of(worst, band_detail::distance_to_edge(p0, p1, x));
     };
-    worst = max_of(worst, distance_to_line_segment(p0, p1, from));
-    worst = max_of(worst, distance_to_line_segment(p0, p1, to));
+    worst = max_of(worst, band_detail::distance_to_edge(p0, p1, from));
+    worst = max_of(worst, band_detail::distance_to_edge(p0, p1, to));
     if (!arc.line()) {
-      const Vec2<S> e = (p1 - p0) * (S(1) / (p1 - p0).norm());
+      const Vec2<S> e = (p1 - p0) * (S(1) / band_detail::length(p1 - p0));
       Vec2<S> pts[2];
       const Vec2<S> ends[2] = {p0, p1};
       for (const Vec2<S>& base : ends) {

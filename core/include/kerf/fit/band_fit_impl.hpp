@@ -120,6 +120,15 @@ Result<std::uint32_t> count_at(const Problem<S>& pb, S scale, std::uint32_t budg
   return count_in(pb, build_region(pb, scale), budget, pred, layer_of);
 }
 
+// The widest width at scale 1, in the scaled problem.
+template <class S>
+S widest_scaled(const Problem<S>& pb) {
+  S w = S(0);
+  for (std::size_t k = 0; k < pb.pts.size(); ++k)
+    w = max_of(w, max_of(pb.widths[k].left, pb.widths[k].right));
+  return w * pb.factor;
+}
+
 // Smallest scale in (0, hi] (to `rel` relative) at which `pieces` suffice,
 // given that they suffice at hi. `seeded`: the search at hi, with exactly
 // `pieces`, has just run, so its layers bound every later search
@@ -131,7 +140,7 @@ Result<S> bisect_scale(const Problem<S>& pb, std::uint32_t pieces, S hi, S rel, 
   const std::size_t n = pb.pts.size();
   std::uint32_t* layers = seeded && pb.ws.words.size() >= 7 * n ? pb.ws.words.data() + 6 * n : nullptr;
   if (layers != nullptr) detail::copy_words(pb.ws.words.data(), layers, n);
-  S lo = hi * S(1e-12);
+  S lo = smallest_scale(hi, widest_scaled(pb));
   {
     const Result<std::uint32_t> c = count_at(pb, lo, pieces, pred, layers);
     if (!c.ok()) return c.status();

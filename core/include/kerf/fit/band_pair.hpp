@@ -40,6 +40,7 @@
 #include <cstdint>
 
 #include "kerf/fit/angle_set.hpp"
+#include "kerf/fit/band_numeric.hpp"
 #include "kerf/fit/band_region.hpp"
 
 namespace kerf::fit {
@@ -60,8 +61,9 @@ class BandPair {
       : r_(r), i_(i), j_(j), orient_(orient), a_(r.point(i)), b_(r.point(j)) {
     const Vec2<S> u = b_ - a_;
     mid_ = midpoint(a_, b_);
-    u_ = u;
-    n_ = u.perp() * S(orient);
+    f_ = band_detail::frame_factor(u);
+    u_ = u * f_;
+    n_ = u_.perp() * S(orient);
   }
 
   // The end conditions alone.
@@ -128,7 +130,7 @@ class BandPair {
     const Vec2<S> d = direction_of(q);
     // centre = mid + n_unit * h cot(psi) on the bulge's far side: with
     // n = |u| n_unit and h = |u| / 2 that is mid + n (d.x / d.y) / 2.
-    return mid_ + n_ * (d.x / (S(2) * d.y));
+    return mid_ + (b_ - a_).perp() * S(orient_) * (d.x / (S(2) * d.y));
   }
 
  private:
@@ -145,40 +147,42 @@ class BandPair {
     }
   }
 
-  S area(Vec2<S> q) const { return (q - a_).dot(q - b_); }
+  S area(Vec2<S> q) const { return ((q - a_) * f_).dot((q - b_) * f_); }
   // Measured from a, not from the midpoint: (b - a).perp(b - a) is exactly
   // 0 in floating point, so a point on a or b gets exactly w = 0 (no
   // condition) instead of a rounding residue that would cut the range.
-  S offset(Vec2<S> q) const { return (q - a_).dot(n_); }
+  S offset(Vec2<S> q) const { return ((q - a_) * f_).dot(n_); }
   void outside(PsiRange<S>& r, Vec2<S> q) const { cut(r, {-offset(q), area(q)}); }
   void inside(PsiRange<S>& r, Vec2<S> q) const { cut(r, {offset(q), -area(q)}); }
 
   // min over t in [0, 1] of the power of q1 + t (q2 - q1) is >= 0 at d
   // (the end points are already known to be outside).
   bool clear(Vec2<S> d, S a1, S y1, S vd, S dd, S dn) const {
-    const S c2 = d.y * dd;
+    S c[3] = {d.y * dd, S(2) * d.y * vd - d.x * dn, d.y * a1 - d.x * y1};  // c2, c1, p1
+    band_detail::balance(c, 3);
+    const S c2 = c[0], c1 = c[1], p1 = c[2];
     if (!(c2 > S(0))) return true;
-    const S c1 = S(2) * d.y * vd - d.x * dn;
     if (!(c1 < S(0)) || -c1 >= S(2) * c2) return true;  // minimum at an end
-    const S p1 = d.y * a1 - d.x * y1;
     return S(4) * c2 * p1 >= c1 * c1;
   }
 
   void segment(PsiRange<S>& r, Vec2<S> lo, Vec2<S> hi, Vec2<S> q1, Vec2<S> q2) const {
     const Vec2<S> dq = q2 - q1;
-    const S a1 = area(q1);
-    const S y1 = offset(q1);
-    const S vd = dq.dot((q1 - a_) + (q1 - b_)) / S(2);  // (q1 - mid).dq
-    const S dd = dq.norm2();
-    const S dn = dq.dot(n_);
+    const Vec2<S> fq = dq * f_;  // in the pair's frame
+    // area and offset of q1, (q1 - mid).dq, |dq|^2, dq.n and 2 (q2 - mid).dq:
+    // all of degree 2 in lengths, so balanced together (band_numeric.hpp).
+    S v[6] = {area(q1), offset(q1), fq.dot(((q1 - a_) + (q1 - b_)) * f_) / S(2), fq.norm2(),
+              fq.dot(n_), fq.dot(((q2 - a_) + (q2 - b_)) * f_)};
+    band_detail::balance(v, 6);
+    const S a1 = v[0], y1 = v[1], vd = v[2], dd = v[3], dn = v[4], vd2 = v[5];
     if (clear(lo, a1, y1, vd, dd, dn) && clear(hi, a1, y1, vd, dd, dn)) return;
     // The circle through a, b and q(t) is extreme where A Y' = Y A':
     //   dd dn t^2 + 2 y1 dd t + (2 y1 vd - a1 dn) = 0.
     // An end on a or b (w = 0 there) is always a root; it is divided out,
     // since rounding would put it just inside (0, 1).
-    const S qa = dd * dn;
-    const S qb = S(2) * y1 * dd;
-    const S qc = S(2) * y1 * vd - a1 * dn;
+    S qs[3] = {dd * dn, S(2) * y1 * dd, S(2) * y1 * vd - a1 * dn};
+    band_detail::balance(qs, 3);
+    const S qa = qs[0], qb = qs[1], qc = qs[2];
     const S a2 = area(q2);
     const S y2 = offset(q2);
     const bool from_end = a1 == S(0) && y1 == S(0);
@@ -210,7 +214,7 @@ class BandPair {
     // has w(t) = (-Y, A) -> 0 there, and the binding condition is the limit
     // of its direction: the segment must leave that end outside the disc.
     if (from_end) cut(r, {-dn, S(2) * vd});                             // t -> 0+
-    if (to_end) cut(r, {dn, -dq.dot((q2 - a_) + (q2 - b_))});          // t -> 1-
+    if (to_end) cut(r, {dn, -vd2});                                     // t -> 1-
   }
 
   const BandRegion<S>& r_;
@@ -222,6 +226,7 @@ class BandPair {
   Vec2<S> mid_{};
   Vec2<S> u_{};
   Vec2<S> n_{};
+  S f_{};  // the frame's scale: lengths in u_, n_, area and offset are times f_
 };
 
 }  // namespace kerf::fit

@@ -1,6 +1,7 @@
 // Definitions behind fit/band_region.hpp (see the construction there).
 #pragma once
 
+#include "kerf/fit/band_numeric.hpp"
 #include "kerf/fit/band_region.hpp"
 
 namespace kerf::fit {
@@ -49,7 +50,7 @@ void BandRegion<S>::set_vertex(std::uint32_t k, S left, S right) {
   }
   const Vec2<S> n1 = v.n;
   const Vec2<S> sum = n0 + n1;
-  const S len = sum.norm();
+  const S len = band_detail::length(sum);
   if (!(len > S(1e-6))) {  // a cusp: the path turns back on itself
     v.b = n0;
     v.gate_left = v.gate_right = S(0);
@@ -63,8 +64,7 @@ void BandRegion<S>::set_vertex(std::uint32_t k, S left, S right) {
   const S si = M::abs(v.b.cross(n1));
   const S c = (left - right) / S(2);
   const S w = (left + right) / S(2);
-  const S disc = w * w - c * c * si * si;
-  const S root = M::sqrt(disc > S(0) ? disc : S(0));
+  const S root = band_detail::gate_root(w, c, si);
   // A side of width 0 has a gate half of exactly 0 (the formula leaves a
   // rounding residue, which would put a chain point next to, not on, p_k).
   v.gate_left = left == S(0) ? S(0) : max_of(S(0), c * co + root);
@@ -89,7 +89,7 @@ void BandRegion<S>::set_vertex(std::uint32_t k, S left, S right) {
 // halving takes c to sqrt((1 + c) / 2). At most 4 (16 chords).
 template <class S>
 std::uint8_t BandRegion<S>::split_depth(Vec2<S> e1, Vec2<S> e2, S w, S width) {
-  S c = (e1 + e2).norm() / S(2);
+  S c = band_detail::length(e1 + e2) / S(2);
   std::uint8_t depth = 0;
   while (depth < 4 && w * (S(1) - c) > S(0.01) * width) {
     c = Scalar<S>::sqrt((S(1) + c) / S(2));
@@ -119,7 +119,7 @@ void BandRegion<S>::corner(std::uint32_t k, std::uint32_t edge, Vec2<S> from, Ve
     while (top > 0) {
       const Piece s = stack[--top];
       const Vec2<S> sum = s.e1 + s.e2;
-      const S len = sum.norm();
+      const S len = band_detail::length(sum);
       if (s.depth >= depth || !(len > S(0))) {
         if (top > 0) band_detail::push(out, centre + s.e2 * w);  // the last one is `to`
         continue;
@@ -153,7 +153,7 @@ void BandRegion<S>::chain(std::uint32_t k, int side, BandChain<S>& out) const {
   Vec2<S> t1 = p_[k + 1] + n * sb;
   if (wa != wb) {
     const Vec2<S> d = c1 - c0;
-    const S len = d.norm();
+    const S len = band_detail::length(d);
     const S delta = (wb - wa) / len;
     if (delta < S(1) && delta > S(-1)) {
       const Vec2<S> e = d * (S(1) / len);
@@ -202,15 +202,15 @@ bool BandRegion<S>::cell_convex(std::uint32_t k, int& bad_side) const {
   const S big = max_of(max_of(Scalar<S>::abs(p_[k].x), Scalar<S>::abs(p_[k].y)),
                        max_of(Scalar<S>::abs(p_[k + 1].x), Scalar<S>::abs(p_[k + 1].y)));
   const S noise = S(4096) * Scalar<S>::epsilon() * big;
-  const S tiny = max_of(S(1e-12) * (p_[k + 1] - p_[k]).norm(), noise);
+  const S tiny = max_of(S(1e-12) * band_detail::length(p_[k + 1] - p_[k]), noise);
   auto add = [&](Vec2<S> q, int side) {
-    if (m > 0 && (q - loop[m - 1]).norm() <= tiny) return;
+    if (m > 0 && band_detail::length(q - loop[m - 1]) <= tiny) return;
     loop[m] = q;
     side_of[m++] = side;
   };
   for (int t = 0; t < l.size; ++t) add(l.pt[t], 1);
   for (int t = r.size; t-- > 0;) add(r.pt[t], -1);
-  while (m > 1 && (loop[m - 1] - loop[0]).norm() <= tiny) --m;
+  while (m > 1 && band_detail::length(loop[m - 1] - loop[0]) <= tiny) --m;
   if (m < 3) return true;  // a cell narrowed to a segment
   S total = S(0);
   bool reflex_left = false;
@@ -219,7 +219,8 @@ bool BandRegion<S>::cell_convex(std::uint32_t k, int& bad_side) const {
     const Vec2<S> e1 = loop[t] - loop[(t + m - 1) % m];
     const Vec2<S> e2 = loop[(t + 1) % m] - loop[t];
     const S cross = e1.cross(e2);
-    if (cross > S(1e-9) * e1.norm() * e2.norm() && cross > noise * (e1 + e2).norm()) {
+    if (cross > S(1e-9) * band_detail::length(e1) * band_detail::length(e2) &&
+        cross > noise * band_detail::length(e1 + e2)) {
       (side_of[t] > 0 ? reflex_left : reflex_right) = true;
     }
     S d = band_detail::diamond(e2) - band_detail::diamond(e1);
@@ -238,7 +239,7 @@ Status BandRegion<S>::build(const BandWidth<S>* widths, S scale) {
   if (n_ < 2) return Status::invalid_argument;
   for (std::uint32_t k = 0; k + 1 < n_; ++k) {
     const Vec2<S> d = p_[k + 1] - p_[k];
-    v_[k].n = d.perp() * (S(1) / d.norm());
+    v_[k].n = d.perp() * (S(1) / band_detail::length(d));
   }
   v_[n_ - 1].n = v_[n_ - 2].n;
   for (std::uint32_t k = 0; k < n_; ++k)
