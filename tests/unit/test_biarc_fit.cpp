@@ -43,7 +43,7 @@ std::uint32_t checked_fit(const std::vector<VPoint>& p, const std::vector<VPoint
   CoreBiarcFitter core(p, tangents, tol);
   const auto fit = core.fit();
   // Stopping early at far ends changes nothing here.
-  const auto exact = core.fit({64, true, 16});
+  const auto exact = core.fit({16, true});
   EXPECT_TRUE(exact.ok());
   if (exact.ok() && fit.ok()) {
     EXPECT_EQ(exact.value().pieces, fit.value().pieces);
@@ -284,7 +284,7 @@ TEST(BiarcTwin, KerfNeverNeedsMoreThanTheTwin) {
     }
     const double tol = rng.uniform(0.02, 0.3);
     CoreBiarcFitter core(p, {}, tol);
-    const auto fit = core.fit({64, true, 16});  // every pair
+    const auto fit = core.fit({16, true});  // every pair
     const auto widths = kerf_test::symmetric_widths(p.size(), tol);
     kerf_test::CoreBandFitter band(p, widths);
     const kerf_test::BandRegion region = band.region();
