@@ -50,13 +50,15 @@ namespace kerf::fit {
 template <class S>
 class JointSet {
  public:
-  static constexpr int kMax = 48;
+  static constexpr int kMax = 256;
   struct Range {
     S lo, hi;
   };
 
   void reset_to(S lo, S hi) {
     size_ = 0;
+    peak_ = 1;
+    overflow_ = false;
     v_[size_++] = {lo, hi};
   }
   int size() const { return size_; }
@@ -69,34 +71,38 @@ class JointSet {
       if (v_[k].lo < hi && v_[k].hi > lo) return true;
     return false;
   }
-  // Removes the closed interval [lo, hi].
+  // Removes the closed interval [lo, hi]. The intervals it touches are a
+  // run [a, b); they give way to at most their two outer remains.
   void remove(S lo, S hi) {
-    Range out[kMax];
+    int a = 0;
+    while (a < size_ && !(v_[a].hi > lo)) ++a;
+    int b = a;
+    while (b < size_ && v_[b].lo < hi) ++b;
+    if (a == b) return;
+    Range keep[2];
     int m = 0;
-    for (int k = 0; k < size_; ++k) {
-      const Range r = v_[k];
-      if (!(r.lo < hi && r.hi > lo)) {
-        push(out, m, r);
-        continue;
-      }
-      if (r.lo < lo) push(out, m, {r.lo, lo});
-      if (hi < r.hi) push(out, m, {hi, r.hi});
-    }
-    for (int k = 0; k < m; ++k) v_[k] = out[k];
-    size_ = m;
-  }
-
- private:
-  void push(Range* out, int& m, Range r) {
-    if (m == kMax) {
+    if (v_[a].lo < lo) keep[m++] = {v_[a].lo, lo};
+    if (hi < v_[b - 1].hi) keep[m++] = {hi, v_[b - 1].hi};
+    const int grow = m - (b - a);  // <= 1
+    if (size_ + grow > kMax) {
       overflow_ = true;  // the caller reports it; nothing is dropped silently
       return;
     }
-    out[m++] = r;
+    if (grow > 0) {
+      for (int k = size_; k-- > b;) v_[k + grow] = v_[k];
+    } else if (grow < 0) {
+      for (int k = b; k < size_; ++k) v_[k + grow] = v_[k];
+    }
+    for (int k = 0; k < m; ++k) v_[a + k] = keep[k];
+    size_ += grow;
+    if (size_ > peak_) peak_ = size_;
   }
+  int peak() const { return peak_; }
 
+ private:
   Range v_[kMax]{};
   int size_ = 0;
+  int peak_ = 0;
   bool overflow_ = false;
 };
 
@@ -164,6 +170,17 @@ class BiarcJoints {
       for (int side = -1; side <= 1 && !out.empty(); side += 2) {
         r_.chain(i_ + rev, side, c);
         for (int e = 0; e + 1 < c.size && !out.empty(); ++e) cut(c.pt[e], c.pt[e + 1], out);
+      }
+    }
+    // Intervals with no double strictly inside hold no joint kerf can use.
+    for (int q = 0; q < out.size();) {
+      const S lo = out[q].lo;
+      const S hi = out[q].hi;
+      const S mid = lo + (hi - lo) / S(2);
+      if (mid > lo && mid < hi) {
+        ++q;
+      } else {
+        out.remove(lo, hi);
       }
     }
     return !out.overflow();
