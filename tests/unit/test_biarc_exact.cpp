@@ -131,28 +131,29 @@ TEST(BiarcJointSet, AgreesWithTheSingleJointTestOnADenseScan) {
 // interval of J around the true joint. It is narrower than the spacing of
 // the 64 joints the old fitter sampled on J (s = (q + 1/2) / 32), and none
 // of them lies in it; the exact set still has it, and the fit is 1 biarc.
+// (The old fitter, main at da828cb, also missed it in its finer search
+// near the closest samples and returned 2 biarcs, points 0..15..400.)
 TEST(BiarcJointSet, FindsAValidIntervalNarrowerThanAnySampling) {
-  // First arc: radius 4 about (0, 4), from (0, 0) anticlockwise through 50
-  // degrees; second: radius 1.5, turning the other way. The joint angle is
-  // chosen so the joint falls between two old samples (checked below).
+  // First arc: radius 4 about (0, 4), from (0, 0) anticlockwise through 80
+  // degrees; second: radius 1, turning clockwise through 120 degrees.
   std::vector<Vec2<double>> p, t;
-  const double a1 = 50.0 * kPi / 180;
-  for (int k = 0; k <= 150; ++k) {
-    const double a = a1 * k / 150;
+  const double a1 = 80.0 * kPi / 180;
+  for (int k = 0; k <= 200; ++k) {
+    const double a = a1 * k / 200;
     p.push_back({4 * std::sin(a), 4 - 4 * std::cos(a)});
     t.push_back({std::cos(a), std::sin(a)});
   }
   const Vec2<double> joint = p.back();
   const Vec2<double> tj = t.back();
-  const Vec2<double> c2 = joint - tj.perp() * 1.5;  // centre of the clockwise arc
-  for (int k = 1; k <= 150; ++k) {
-    const double a = 70.0 * kPi / 180 * k / 150;  // turned so far, clockwise
+  const Vec2<double> c2 = joint - tj.perp() * 1.0;  // centre of the clockwise arc
+  for (int k = 1; k <= 200; ++k) {
+    const double a = 120.0 * kPi / 180 * k / 200;  // turned so far, clockwise
     const Vec2<double> r0 = (joint - c2);
     const Vec2<double> r{r0.x * std::cos(a) + r0.y * std::sin(a), -r0.x * std::sin(a) + r0.y * std::cos(a)};
     p.push_back(c2 + r);
     t.push_back({tj.x * std::cos(a) + tj.y * std::sin(a), -tj.x * std::sin(a) + tj.y * std::cos(a)});
   }
-  const double tol = 2e-4;  // the chords' sagitta is below 2e-5
+  const double tol = 1e-4;  // the chords' sagitta is below 2.5e-5
   const Problem pr(p, tol, t);
   const auto n = static_cast<std::uint32_t>(p.size());
   const auto bj = pr.joints(0, n - 1);
