@@ -377,3 +377,4 @@ TEST(BiarcCertifiedError, BoundsTheSampledDeviationAndStaysInTheBand) {
 }
 
 }  // namespace
+

@@ -194,12 +194,22 @@ TEST(BiarcFit, SampledCircleArcIsOneBiarc) {
   }
 }
 
-TEST(BiarcFit, FullCircleTakesTwo) {
-  // A closed polyline: the start gate is crossed again by a single biarc.
+TEST(BiarcFit, NearlyClosedCircleIsOneArc) {
+  // A closed polyline on a circle whose last point stops 1e-9 short of the
+  // first: one circle (this one) passes both ends with both tangents, so J
+  // is that circle and one biarc, the near-full circle, is valid; it never
+  // reaches the start gate. (The former sampling fitter returned 2 here: the
+  // pair 0 -> 100 is badly conditioned, |p_100 - p_0| = 1e-9, and its
+  // samples missed.)
   auto p = circle_points(101, 5, 0, 2 * kPi);  // sagitta 0.0025
   p.pop_back();
-  p.push_back({5, -1e-9});  // close, but keep the last point distinct
-  EXPECT_EQ(checked_fit(p, {}, 5e-3), 2u);
+  p.push_back({5, -1e-9});
+  std::vector<VBiarc> b;
+  ASSERT_EQ(checked_fit(p, {}, 5e-3, &b), 1u);
+  for (const kerf_test::VPiece* a : {&b[0].a1, &b[0].a2}) {
+    EXPECT_EQ(a->dir, 1);
+    EXPECT_NEAR(std::hypot(a->sx - a->cx, a->sy - a->cy), 5.0, 0.01);
+  }
 }
 
 TEST(BiarcFit, SCurveWithGivenTangentsIsOneBiarc) {

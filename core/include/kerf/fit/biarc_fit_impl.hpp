@@ -198,9 +198,15 @@ Result<Fit<S>> fit_biarc_min_count(Span<const Vec2<S>> pts, Span<const Vec2<S>> 
       const bool possible = opts.exact || back[j] <= i + 1 || reaches(back[j] - 1);
       if (!reached && possible) {
         const BiarcJoints<S> bj(region, i, j, tangents[i], tangents[j]);
-        if (!bj.compute(set)) return Status::capacity_exceeded;
         S s{};
-        if (bj.verified(set, s, b)) {
+        // A valid joint among a few likely ones proves the pair; otherwise
+        // the exact set decides (so no valid pair is missed).
+        bool valid = bj.quick_yes(s);
+        if (!valid) {
+          if (!bj.compute(set)) return Status::capacity_exceeded;
+          valid = bj.verified(set, s, b);
+        }
+        if (valid) {
           dist[j] = dist[i] + 1;
           prev[j] = i;
         }
@@ -221,7 +227,10 @@ Result<Fit<S>> fit_biarc_min_count(Span<const Vec2<S>> pts, Span<const Vec2<S>> 
     const BiarcJoints<S> bj(region, i, j, tangents[i], tangents[j]);
     S s{};
     if (!bj.compute(set)) return Status::capacity_exceeded;
-    if (!bj.verified(set, s, b)) return Status::infeasible;  // cannot happen: it was found valid
+    // The pair was found valid: by a joint of its set or by a quick joint.
+    // (Both agree but for rounding, seen only when p_i and p_j nearly
+    // coincide, as where a closed path meets its start.)
+    if (!bj.verified(set, s, b) && !bj.quick_yes(s)) return Status::infeasible;
     const Biarc<S> best = biarc_detail::best_joint(bj, set, pts, i, j, opts.samples, widest, s);
     BiarcPiece<S>& piece = out[p];
     piece.first = i;

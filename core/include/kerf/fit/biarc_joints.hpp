@@ -186,6 +186,29 @@ class BiarcJoints {
     return !out.overflow();
   }
 
+  // A shortcut for "has the pair a valid joint?": when one of a few
+  // likely joints (the middles and quarters of J's two arcs) passes the
+  // full test, the answer is yes without the set. A "no" here proves
+  // nothing; compute() then decides.
+  bool quick_yes(S& found) const {
+    if (!check_.ends(t1_, t2_)) return false;
+    const S at[4] = {S(0.5), S(1.5), S(0.25), S(1.75)};
+    Biarc<S> b[4];
+    bool alive[4];
+    std::uint32_t m = 0;
+    for (const S s : at) {
+      if (jc_.biarc(s, b[m])) alive[m++] = true;
+    }
+    if (m == 0 || check_.filter(b, alive, m) == 0) return false;
+    for (std::uint32_t q = 0; q < m; ++q) {
+      if (alive[q]) {
+        found = b[q].s;
+        return true;
+      }
+    }
+    return false;
+  }
+
   // A joint of `set` that passes the full test, or false: the middle, then
   // the quarters of each interval (the middle fails only by rounding, in an
   // interval a few ulps wide).
