@@ -4,7 +4,7 @@
 // fitter's fit/band_deviation.hpp, whose arc probe it reuses.
 //
 // Each arc is cut where it crosses the lines of gates i..j (sorted along
-// the arc by its pseudo-angle). A stretch between two cuts bounded by gates
+// the arc). A stretch between two cuts bounded by gates
 // a and b lies in one cell when the biarc is inside R, and that cell's edge
 // is one of a-1, a, b-1, b. For each of those edges the largest distance
 // from the stretch to the edge is found exactly (it is attained at the
@@ -69,7 +69,9 @@ S arc_deviation(const BandRegion<S>& r, std::uint32_t i, std::uint32_t j, const 
                 int gate_a, int gate_b) {
   if (part.empty()) return S(0);
   const ArcProbe<S> arc = probe_of(part);
-  const S end = arc.sigma(part.b);
+  // Crossings are ordered by ArcPart::position (a pseudo-angle on an arc,
+  // the distance along t on a line, where the probe's sigma is flat).
+  const S end = part.position(part.b);
   S worst = S(0);
   Vec2<S> from = part.a;
   S at = S(0);
@@ -83,7 +85,7 @@ S arc_deviation(const BandRegion<S>& r, std::uint32_t i, std::uint32_t j, const 
       Vec2<S> x[2];
       const int m = arc.meet_line(r.point(k), r.vertex(k).b, x);
       for (int t = 0; t < m; ++t) {
-        const S s = arc.sigma(x[t]);
+        const S s = part.position(x[t]);
         if (s > at && s < best) {
           best = s;
           to = x[t];

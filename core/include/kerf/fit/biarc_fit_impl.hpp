@@ -117,8 +117,11 @@ Biarc<S> best_joint(const BiarcJoints<S>& bj, const JointSet<S>& set, Span<const
 
 template <class S>
 S biarc_deviation(Span<const Vec2<S>> pts, std::uint32_t i, std::uint32_t j, const Biarc<S>& b) {
-  // Samples per arc grow with the span, so that each cell sees several.
-  const std::uint32_t m = 8 + 4 * (j - i);
+  // Samples per arc grow with the span, so that each cell sees several, up
+  // to 32 cells' worth: each costs O(j - i), and this only ranks joints (the
+  // reported error is certified, fit/biarc_deviation.hpp).
+  const std::uint32_t span = j - i < 32 ? j - i : 32;
+  const std::uint32_t m = 8 + 4 * span;
   S worst = S(0);
   const ArcPart<S>* arcs[2] = {&b.first, &b.second};
   for (const ArcPart<S>* arc : arcs) {
@@ -173,6 +176,7 @@ Result<Fit<S>> fit_biarc_min_count(Span<const Vec2<S>> pts, Span<const Vec2<S>> 
   }
   JointSet<S> set;
   Biarc<S> b;
+  bool overflow = false;
   for (std::uint32_t i = 0; i + 1 < count; ++i) {
     if (dist[i] == kNone) continue;
     // F_i of fit/biarc_reach.hpp, extended only as far as a j needs it.
@@ -191,26 +195,41 @@ Result<Fit<S>> fit_biarc_min_count(Span<const Vec2<S>> pts, Span<const Vec2<S>> 
       }
       return fwd >= need;
     };
-    for (std::uint32_t j = i + 1; j < count; ++j) {
+    // Nothing through p_i can shorten the path to the last point.
+    if (dist[n - 1] != kNone && dist[n - 1] <= dist[i] + 1) continue;
+    // The last point first: if p_i reaches it, no other end of p_i can
+    // lead to a shorter path (a long straight or circular run ends here).
+    auto test = [&](std::uint32_t j) {
+      if (!opts.exact && back[j] > i + 1 && !reaches(back[j] - 1)) return false;
+      const BiarcJoints<S> bj(region, i, j, tangents[i], tangents[j]);
+      S s{};
+      // A valid joint among a few likely ones proves the pair; otherwise
+      // the exact set decides (so no valid pair is missed).
+      bool valid = bj.quick_yes(s);
+      if (!valid) {
+        if (!bj.compute(set)) {
+          overflow = true;
+          return false;
+        }
+        valid = bj.verified(set, s, b);
+      }
+      return valid;
+    };
+    if (test(count - 1)) {
+      dist[n - 1] = dist[i] + 1;
+      prev[n - 1] = i;
+      continue;
+    }
+    if (overflow) return Status::capacity_exceeded;
+    for (std::uint32_t j = i + 1; j + 1 < count; ++j) {
       // No biarc from p_i reaches any p_j' with j' >= j (B_j' - 1 > F_i).
       if (!opts.exact && back_min[j] > i + 1 && !reaches(back_min[j] - 1)) break;
       const bool reached = dist[j] != kNone && dist[j] <= dist[i] + 1;
-      const bool possible = opts.exact || back[j] <= i + 1 || reaches(back[j] - 1);
-      if (!reached && possible) {
-        const BiarcJoints<S> bj(region, i, j, tangents[i], tangents[j]);
-        S s{};
-        // A valid joint among a few likely ones proves the pair; otherwise
-        // the exact set decides (so no valid pair is missed).
-        bool valid = bj.quick_yes(s);
-        if (!valid) {
-          if (!bj.compute(set)) return Status::capacity_exceeded;
-          valid = bj.verified(set, s, b);
-        }
-        if (valid) {
-          dist[j] = dist[i] + 1;
-          prev[j] = i;
-        }
+      if (!reached && test(j)) {
+        dist[j] = dist[i] + 1;
+        prev[j] = i;
       }
+      if (overflow) return Status::capacity_exceeded;
       if (region.vertex(j).barrier) break;  // nothing passes through it
     }
   }
