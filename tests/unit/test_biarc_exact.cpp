@@ -376,5 +376,24 @@ TEST(BiarcCertifiedError, BoundsTheSampledDeviationAndStaysInTheBand) {
   EXPECT_GT(pieces, 40);
 }
 
+TEST(BiarcCertifiedError, StraightPartsAreCertifiedToo) {
+  // Collinear points: two lines on the polyline, error 0 (to rounding); a
+  // bent line with a long straight run: within the band.
+  std::vector<VPoint> p;
+  for (int k = 0; k < 50; ++k) p.push_back({0.3 * k, 0.1 * k});
+  CoreBiarcFitter line(p, {}, 0.01);
+  const auto f = line.fit();
+  ASSERT_TRUE(f.ok());
+  EXPECT_EQ(f.value().pieces, 1u);
+  EXPECT_LE(f.value().max_error, 1e-9);
+  for (int k = 1; k < 30; ++k) p.push_back({p[49].x + 0.2 * k, p[49].y + 0.01 * k * k});
+  CoreBiarcFitter bent(p, {}, 0.02);
+  const auto g = bent.fit();
+  ASSERT_TRUE(g.ok());
+  for (std::uint32_t k = 0; k < g.value().pieces; ++k)
+    EXPECT_GE(bent.piece(k).error, sampled_deviation(p, bent.piece(k)) * (1 - 1e-12)) << k;
+  EXPECT_LE(g.value().max_error, 0.02 * (1 + 1e-9));
+}
+
 }  // namespace
 

@@ -27,13 +27,23 @@ namespace kerf::fit {
 
 namespace biarc_detail {
 
+// The arc's probe. An arc turning by less than 2e-7 rad is probed as its
+// chord (the probe's arithmetic on a radius of 1e7 chords and more loses
+// its digits) and `sagitta` is set to how far the arc leaves the chord,
+// which the caller adds: every point of the arc is that close to a chord
+// point, so the bound stays certified.
 template <class S>
-ArcProbe<S> probe_of(const ArcPart<S>& arc) {
+ArcProbe<S> probe_of(const ArcPart<S>& arc, bool& straight, S& sagitta) {
   const Vec2<S> c = arc.b - arc.a;
   const Vec2<S> u = c * (S(1) / c.norm());
   const int orient = arc.t.cross(c) >= S(0) ? 1 : -1;
   const Vec2<S> n = u.perp() * S(orient);
-  return ArcProbe<S>(arc.a, arc.b, Vec2<S>{arc.t.dot(u), max_of(S(0), -arc.t.dot(n))}, orient);
+  Vec2<S> d{arc.t.dot(u), max_of(S(0), -arc.t.dot(n))};  // (cos psi, sin psi)
+  straight = d.y <= S(1e-7);
+  // h tan(psi / 2), h half the chord
+  sagitta = straight ? c.norm() / S(2) * d.y / (S(1) + d.x) : S(0);
+  if (straight) d = Vec2<S>{S(1), S(0)};
+  return ArcProbe<S>(arc.a, arc.b, d, orient);
 }
 
 // The largest distance from the stretch [from, to] of `arc` (sigma lo..hi)
@@ -68,10 +78,15 @@ template <class S>
 S arc_deviation(const BandRegion<S>& r, std::uint32_t i, std::uint32_t j, const ArcPart<S>& part,
                 int gate_a, int gate_b) {
   if (part.empty()) return S(0);
-  const ArcProbe<S> arc = probe_of(part);
-  // Crossings are ordered by ArcPart::position (a pseudo-angle on an arc,
-  // the distance along t on a line, where the probe's sigma is flat).
-  const S end = part.position(part.b);
+  bool straight = false;
+  S sagitta{};
+  const ArcProbe<S> arc = probe_of(part, straight, sagitta);
+  // Crossings are ordered by ArcPart::position (a pseudo-angle on an arc),
+  // or by the distance along the chord when probed as one (the probe's
+  // sigma is flat along a line).
+  const Vec2<S> chord = part.b - part.a;
+  auto position = [&](Vec2<S> x) { return straight ? (x - part.a).dot(chord) : part.position(x); };
+  const S end = position(part.b);
   S worst = S(0);
   Vec2<S> from = part.a;
   S at = S(0);
@@ -85,7 +100,7 @@ S arc_deviation(const BandRegion<S>& r, std::uint32_t i, std::uint32_t j, const 
       Vec2<S> x[2];
       const int m = arc.meet_line(r.point(k), r.vertex(k).b, x);
       for (int t = 0; t < m; ++t) {
-        const S s = part.position(x[t]);
+        const S s = position(x[t]);
         if (s > at && s < best) {
           best = s;
           to = x[t];
@@ -111,7 +126,7 @@ S arc_deviation(const BandRegion<S>& r, std::uint32_t i, std::uint32_t j, const 
         bound = bound < S(0) ? d : min_of(bound, d);
       }
     }
-    worst = max_of(worst, bound);
+    worst = max_of(worst, bound + sagitta);
     if (!(best < end)) break;
     at = best;
     from = to;
