@@ -59,12 +59,12 @@ KappaRange<S> pencil_range(Vec2<S> p, Vec2<S> t, Vec2<S> q1, Vec2<S> q2) {
     const S a = n.dot(p - q1);
     const S along = u.dot(p - q1);
     // The segment passes through (or within rounding of) p: kappa unbounded.
-    if (Scalar<S>::abs(a) <= scale * S(1e-12) && along >= -scale * S(1e-12) &&
-        along <= len + scale * S(1e-12)) {
+    if (Scalar<S>::abs(a) <= scale * S(1e-9) && along >= -scale * S(1e-9) &&
+        along <= len + scale * S(1e-9)) {
       r.all = true;
       return r;
     }
-  } else if (v1.norm() <= scale * S(1e-12)) {
+  } else if (v1.norm() <= scale * S(1e-9)) {
     r.all = true;
     return r;
   }
