@@ -45,8 +45,10 @@
 namespace kerf::fit {
 
 // A set of disjoint open intervals of (0, 2), in order. Fixed capacity: the
-// valid joints of a pair form at most a few arcs (Lemma 3.6), and the set
-// only shrinks while segments are removed.
+// valid joints of a pair form at most a few arcs (Lemma 3.6), but on the
+// way, before all segments are removed, the set can fragment (at most 63
+// intervals seen on sines at tol 1e-5 .. 5; 256 fit). Overflow is
+// reported (the fit fails with capacity_exceeded), never dropped.
 template <class S>
 class JointSet {
  public:
