@@ -126,6 +126,38 @@ TEST(BiarcJointSet, AgreesWithTheSingleJointTestOnADenseScan) {
   EXPECT_GT(outside, 10000);
 }
 
+// A wide band on a sine: the set fragments past its capacity while the
+// segments are removed, and compute() falls back to windows of J. The
+// result still agrees with the single-joint test.
+TEST(BiarcJointSet, WindowsWhenTheSetFragmentsAgreeToo) {
+  std::vector<Vec2<double>> p;
+  for (int k = 0; k < 120; ++k) p.push_back({0.5 * k, 50 * std::sin(2 * kPi * 0.5 * k / 200)});
+  const Problem pr(p, 1.0);
+  int windowed = 0, checked = 0;
+  for (std::uint32_t i = 0; i < 120; i += 5) {
+    for (std::uint32_t j = i + 1; j < 120; j += 3) {
+      const auto bj = pr.joints(i, j);
+      fit::JointSet<double> set;
+      ASSERT_TRUE(bj.compute(set));
+      if (bj.windows() == 0) continue;
+      ++windowed;
+      for (int q = 1; q < 2000; ++q) {
+        const double s = 2.0 * q / 2000;
+        fit::Biarc<double> b;
+        const bool ok = bj.circle().biarc(s, b) && bj.check().valid(b);
+        if (in_set(set, s, 1e-9)) {
+          EXPECT_TRUE(ok) << i << "," << j << " s " << s;
+        } else if (!near_set(set, s, 1e-9)) {
+          EXPECT_FALSE(ok) << i << "," << j << " s " << s;
+        }
+        ++checked;
+      }
+    }
+  }
+  EXPECT_GT(windowed, 0);
+  EXPECT_GT(checked, 0);
+}
+
 // Points on an exact biarc (two arcs with a common tangent at a known joint),
 // with their exact tangents, in a tight band: the valid joints are a narrow
 // interval of J around the true joint. It is narrower than the spacing of

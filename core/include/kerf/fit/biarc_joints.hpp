@@ -46,13 +46,13 @@ namespace kerf::fit {
 
 // A set of disjoint open intervals of (0, 2), in order. Fixed capacity: the
 // valid joints of a pair form at most a few arcs (Lemma 3.6), but on the
-// way, before all segments are removed, the set can fragment (at most 63
-// intervals seen on sines at tol 1e-5 .. 5; 256 fit). Overflow is
-// reported (the fit fails with capacity_exceeded), never dropped.
+// way, before all segments are removed, the set can fragment (up to 63
+// intervals seen on sines at tol 1e-5 .. 5). Overflow is flagged, never
+// dropped: BiarcJoints::compute then splits J into windows.
 template <class S>
 class JointSet {
  public:
-  static constexpr int kMax = 256;
+  static constexpr int kMax = 32;
   struct Range {
     S lo, hi;
   };
@@ -62,6 +62,20 @@ class JointSet {
     peak_ = 1;
     overflow_ = false;
     v_[size_++] = {lo, hi};
+  }
+  void clear() {
+    size_ = 0;
+    peak_ = 0;
+    overflow_ = false;
+  }
+  // Adds r after every interval held (the caller keeps the order).
+  void append(Range r) {
+    if (size_ == kMax) {
+      overflow_ = true;
+      return;
+    }
+    v_[size_++] = r;
+    if (size_ > peak_) peak_ = size_;
   }
   int size() const { return size_; }
   bool empty() const { return size_ == 0; }
@@ -146,44 +160,38 @@ class BiarcJoints {
   }
 
   const BiarcCheck<S>& check() const { return check_; }
+  // How many windows the last compute() needed beyond the whole of J.
+  int windows() const { return split_; }
   const JointCircle<S>& circle() const { return jc_; }
 
-  // Computes the valid joints into `out`. Returns false when the set
-  // overflowed its capacity (never seen; the caller reports it).
+  // Computes the valid joints into `out`. When the set fragments past its
+  // capacity on the way, J is cut into 4 windows (then 16, 64), each
+  // computed alone: the result stays exact. Returns false only when even
+  // that overflows (never seen; the caller reports it).
   bool compute(JointSet<S>& out) const {
-    out.reset_to(S(0), S(2));
-    out.remove(S(1), S(1));  // p_j itself (see JointCircle::biarc)
-    if (!check_.ends(t1_, t2_)) {
-      out.remove(S(0), S(2));
-      return true;
-    }
-    cut(r_.gate_end(i_, -1), r_.gate_end(i_, 1), out);
-    if (!out.empty()) cut(r_.gate_end(j_, -1), r_.gate_end(j_, 1), out);
-    // The cells middle first (bit-reversed order): a biarc that strays
-    // usually meets the boundary there, and the set empties early.
-    const std::uint32_t len = j_ - i_;
-    std::uint32_t bits = 0;
-    while ((1u << bits) < len) ++bits;
-    BandChain<S> c;
-    for (std::uint32_t t = 0; t < (1u << bits) && !out.empty(); ++t) {
-      std::uint32_t rev = 0;
-      for (std::uint32_t q = 0; q < bits; ++q) rev |= ((t >> q) & 1u) << (bits - 1 - q);
-      if (rev >= len) continue;
-      for (int side = -1; side <= 1 && !out.empty(); side += 2) {
-        r_.chain(i_ + rev, side, c);
-        for (int e = 0; e + 1 < c.size && !out.empty(); ++e) cut(c.pt[e], c.pt[e + 1], out);
+    out.clear();
+    split_ = 0;
+    if (!check_.ends(t1_, t2_)) return true;
+    struct Window {
+      S lo, hi;
+      int depth;
+    };
+    Window stack[16];
+    int top = 0;
+    stack[top++] = {S(0), S(2), 0};
+    JointSet<S> part;
+    while (top > 0) {
+      const Window w = stack[--top];
+      if (w.depth > 0) ++split_;
+      if (window(w.lo, w.hi, part)) {
+        for (int q = 0; q < part.size(); ++q) out.append(part[q]);
+        continue;
       }
-    }
-    // Intervals with no double strictly inside hold no joint kerf can use.
-    for (int q = 0; q < out.size();) {
-      const S lo = out[q].lo;
-      const S hi = out[q].hi;
-      const S mid = lo + (hi - lo) / S(2);
-      if (mid > lo && mid < hi) {
-        ++q;
-      } else {
-        out.remove(lo, hi);
-      }
+      if (w.depth == 3) return false;
+      const S step = (w.hi - w.lo) / S(4);
+      for (int k = 4; k-- > 0;)  // pushed right to left: popped left to right
+        stack[top++] = {k == 0 ? w.lo : w.lo + step * S(k), k == 3 ? w.hi : w.lo + step * S(k + 1),
+                        w.depth + 1};
     }
     return !out.overflow();
   }
@@ -311,6 +319,42 @@ class BiarcJoints {
     return 2;
   }
 
+  // The valid joints within (lo, hi); false when the set overflowed.
+  bool window(S lo, S hi, JointSet<S>& out) const {
+    out.reset_to(lo, hi);
+    out.remove(S(1), S(1));  // p_j itself (see JointCircle::biarc)
+    cut(r_.gate_end(i_, -1), r_.gate_end(i_, 1), out);
+    if (!out.empty()) cut(r_.gate_end(j_, -1), r_.gate_end(j_, 1), out);
+    // The cells middle first (bit-reversed order): a biarc that strays
+    // usually meets the boundary there, and the set empties early.
+    const std::uint32_t len = j_ - i_;
+    std::uint32_t bits = 0;
+    while ((1u << bits) < len) ++bits;
+    BandChain<S> c;
+    for (std::uint32_t t = 0; t < (1u << bits) && !out.empty() && !out.overflow(); ++t) {
+      std::uint32_t rev = 0;
+      for (std::uint32_t q = 0; q < bits; ++q) rev |= ((t >> q) & 1u) << (bits - 1 - q);
+      if (rev >= len) continue;
+      for (int side = -1; side <= 1 && !out.empty(); side += 2) {
+        r_.chain(i_ + rev, side, c);
+        for (int e = 0; e + 1 < c.size && !out.empty(); ++e) cut(c.pt[e], c.pt[e + 1], out);
+      }
+    }
+    if (out.overflow()) return false;
+    // Intervals with no double strictly inside hold no joint kerf can use.
+    for (int q = 0; q < out.size();) {
+      const S a = out[q].lo;
+      const S b = out[q].hi;
+      const S mid = a + (b - a) / S(2);
+      if (mid > a && mid < b) {
+        ++q;
+      } else {
+        out.remove(a, b);
+      }
+    }
+    return true;
+  }
+
   // Removes from `set` the joints whose biarc meets the segment q1 q2.
   void cut(Vec2<S> q1, Vec2<S> q2, JointSet<S>& set) const {
     // A point (a barrier's gate): the one-segment test never meets it.
@@ -378,6 +422,7 @@ class BiarcJoints {
   S dd_{}, a1_{}, c1_{}, b2_{}, c2_{};
   S known_[4]{};
   int nk_ = 0;
+  mutable int split_ = 0;
 };
 
 }  // namespace kerf::fit
