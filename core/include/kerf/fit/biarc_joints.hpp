@@ -47,12 +47,13 @@ namespace kerf::fit {
 // A set of disjoint open intervals of (0, 2), in order. Fixed capacity: the
 // valid joints of a pair form at most a few arcs (Lemma 3.6), but on the
 // way, before all segments are removed, the set can fragment (up to 63
-// intervals seen on sines at tol 1e-5 .. 5). Overflow is flagged, never
+// intervals seen on sines at tol 1e-5 .. 5; more than 32 even within
+// 1/64 of J on the demo job's straight sides). Overflow is flagged, never
 // dropped: BiarcJoints::compute then splits J into windows.
 template <class S>
 class JointSet {
  public:
-  static constexpr int kMax = 32;
+  static constexpr int kMax = 128;
   struct Range {
     S lo, hi;
   };
