@@ -71,12 +71,14 @@ std::vector<Vec2<double>> random_path(kerf_test::Rng& rng, int n) {
   return p;
 }
 
-bool in_set(const fit::JointSet<double>& set, double s, double margin) {
+template <class Set>
+bool in_set(const Set& set, double s, double margin) {
   for (int q = 0; q < set.size(); ++q)
     if (s > set[q].lo + margin && s < set[q].hi - margin) return true;
   return false;
 }
-bool near_set(const fit::JointSet<double>& set, double s, double margin) {
+template <class Set>
+bool near_set(const Set& set, double s, double margin) {
   for (int q = 0; q < set.size(); ++q)
     if (s > set[q].lo - margin && s < set[q].hi + margin) return true;
   return false;
@@ -136,8 +138,9 @@ TEST(BiarcJointSet, WindowsWhenTheSetFragmentsAgreeToo) {
   int windowed = 0, checked = 0;
   for (std::uint32_t i = 0; i < 120; i += 5) {
     for (std::uint32_t j = i + 1; j < 120; j += 3) {
-      const auto bj = pr.joints(i, j);
-      fit::JointSet<double> set;
+      // Room for 16 intervals only, so that the windows are needed.
+      const fit::BiarcJoints<double, 16> bj(pr.region, i, j, pr.tan[i], pr.tan[j]);
+      fit::JointSet<double, 16> set;
       ASSERT_TRUE(bj.compute(set));
       if (bj.windows() == 0) continue;
       ++windowed;

@@ -50,10 +50,10 @@ namespace kerf::fit {
 // intervals seen on sines at tol 1e-5 .. 5; more than 32 even within
 // 1/64 of J on the demo job's straight sides). Overflow is flagged, never
 // dropped: BiarcJoints::compute then splits J into windows.
-template <class S>
+template <class S, int Cap = 128>
 class JointSet {
  public:
-  static constexpr int kMax = 128;
+  static constexpr int kMax = Cap;
   struct Range {
     S lo, hi;
   };
@@ -123,7 +123,9 @@ class JointSet {
   bool overflow_ = false;
 };
 
-template <class S>
+// Cap: the capacity of the sets it computes (tests make it small to reach
+// the windows).
+template <class S, int Cap = 128>
 class BiarcJoints {
  public:
   BiarcJoints(const BandRegion<S>& r, std::uint32_t i, std::uint32_t j, Vec2<S> ti, Vec2<S> tj)
@@ -169,7 +171,7 @@ class BiarcJoints {
   // capacity on the way, J is cut into 4 windows (then 16, 64), each
   // computed alone: the result stays exact. Returns false only when even
   // that overflows (never seen; the caller reports it).
-  bool compute(JointSet<S>& out) const {
+  bool compute(JointSet<S, Cap>& out) const {
     out.clear();
     split_ = 0;
     if (!check_.ends(t1_, t2_)) return true;
@@ -180,7 +182,7 @@ class BiarcJoints {
     Window stack[16];
     int top = 0;
     stack[top++] = {S(0), S(2), 0};
-    JointSet<S> part;
+    JointSet<S, Cap> part;
     while (top > 0) {
       const Window w = stack[--top];
       if (w.depth > 0) ++split_;
@@ -223,7 +225,7 @@ class BiarcJoints {
   // A joint of `set` that passes the full test, or false: the middle, then
   // the quarters of each interval (the middle fails only by rounding, in an
   // interval a few ulps wide).
-  bool verified(const JointSet<S>& set, S& found, Biarc<S>& b) const {
+  bool verified(const JointSet<S, Cap>& set, S& found, Biarc<S>& b) const {
     for (int q = 0; q < set.size(); ++q) {
       const S lo = set[q].lo;
       const S hi = set[q].hi;
@@ -321,7 +323,7 @@ class BiarcJoints {
   }
 
   // The valid joints within (lo, hi); false when the set overflowed.
-  bool window(S lo, S hi, JointSet<S>& out) const {
+  bool window(S lo, S hi, JointSet<S, Cap>& out) const {
     out.reset_to(lo, hi);
     out.remove(S(1), S(1));  // p_j itself (see JointCircle::biarc)
     cut(r_.gate_end(i_, -1), r_.gate_end(i_, 1), out);
@@ -357,7 +359,7 @@ class BiarcJoints {
   }
 
   // Removes from `set` the joints whose biarc meets the segment q1 q2.
-  void cut(Vec2<S> q1, Vec2<S> q2, JointSet<S>& set) const {
+  void cut(Vec2<S> q1, Vec2<S> q2, JointSet<S, Cap>& set) const {
     // A point (a barrier's gate): the one-segment test never meets it.
     if (q1 == q2) return;
     S crit[24];
