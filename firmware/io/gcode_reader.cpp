@@ -110,23 +110,6 @@ bool split_words(GBlock& b, std::string& reason) {
   return true;
 }
 
-// An I/J arc whose end lies on its circle: the end's distance from the
-// centre is the start's within 0.01 mm (CAM rounding) plus 1e-4 of the
-// radius. Otherwise the program is not an arc (I or J is wrong) and a
-// controller would cut a spiral or jump; kerf refuses to guess.
-bool arc_closes(const GBlock& b, const double* end, bool inches, std::string& reason) {
-  const double r0 = std::hypot(b.start[0] - b.centre[0], b.start[1] - b.centre[1]);
-  const double r1 = std::hypot(end[0] - b.centre[0], end[1] - b.centre[1]);
-  if (!(r0 > 0)) return reason = "an arc with its centre on its start point", false;
-  const double slack = (inches ? 0.01 / kMmPerInch : 0.01) + 1e-4 * r0;
-  if (std::fabs(r1 - r0) <= slack) return true;
-  char buf[160];
-  std::snprintf(buf, sizeof buf, "the arc's end is off its circle: radius %.6g at the start, %.6g at the end",
-                r0, r1);
-  reason = buf;
-  return false;
-}
-
 int code10(double v) { return static_cast<int>(std::lround(v * 10.0)); }
 
 std::string word_text(const GBlock& b, const GWord& w) { return b.text.substr(w.pos, w.len); }
@@ -227,7 +210,6 @@ bool apply_block(GBlock& b, State& st, std::string& reason) {
       if (has_ij) {
         b.centre[0] = b.start[0] + ij[0];
         b.centre[1] = b.start[1] + ij[1];
-        if (b.known_start && !arc_closes(b, st.pos, st.inches, reason)) return false;
       } else {
         const double dx = st.pos[0] - b.start[0], dy = st.pos[1] - b.start[1];
         const double d = std::hypot(dx, dy);
@@ -368,6 +350,25 @@ std::string describe_error(const GcodeFile& f) {
 
 namespace {
 
+// An arc whose end lies on its circle: the end's distance from the centre is
+// the start's within 0.01 mm (CAM rounding) plus 1e-4 of the radius.
+// Otherwise (I or J is wrong) a cut would spiral or jump, so a job refuses
+// it; `kerf weld` passes arcs through as written and does not ask.
+bool arc_closes(const GBlock& b, std::string& reason) {
+  const double* end = b.end_pos;
+  const bool inches = b.inches;
+  const double r0 = std::hypot(b.start[0] - b.centre[0], b.start[1] - b.centre[1]);
+  const double r1 = std::hypot(end[0] - b.centre[0], end[1] - b.centre[1]);
+  if (!(r0 > 0)) return reason = "an arc with its centre on its start point", false;
+  const double slack = (inches ? 0.01 / kMmPerInch : 0.01) + 1e-4 * r0;
+  if (std::fabs(r1 - r0) <= slack) return true;
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "the arc's end is off its circle: radius %.6g at the start, %.6g at the end",
+                r0, r1);
+  reason = buf;
+  return false;
+}
+
 // Points along an arc from `from` (exclusive) to `to` (inclusive), chord error
 // below `chord`.
 void sample_arc(Vec2<double> from, Vec2<double> to, Vec2<double> c, bool ccw, double chord,
@@ -441,6 +442,9 @@ bool gcode_job_from(const GcodeFile& g, PointFile& out, std::string& error) {
     }
     if (!b.xy_plane && (b.motion == Motion::cw || b.motion == Motion::ccw))
       return refuse(b.line, "an arc outside the XY plane (G18/G19) cannot be cut");
+    std::string why;
+    if ((b.motion == Motion::cw || b.motion == Motion::ccw) && b.known_start && !arc_closes(b, why))
+      return refuse(b.line, why);
     if (!b.known_start) {
       const bool xy_still = b.motion == Motion::linear && b.start[0] == b.end_pos[0] && b.start[1] == b.end_pos[1];
       if (xy_still) continue;  // a Z move before any X Y: no point of a path

@@ -122,6 +122,45 @@ double unround(const std::vector<kerf_test::VPoint>& pts, std::vector<kerf_test:
   return moved;
 }
 
+// An arc must pass its points in order: walking them about the centre in
+// the arc's direction (a step of more than 270 degrees is a small step
+// back), the walk never leaves [0, sweep] by more than 2 tol / r and ends on
+// the sweep. The checkers above measure each point against the circle (and
+// the farthest one against the sweep) only, so a point path that winds
+// round twice, or runs backwards, passes them. Radii within tol are skipped.
+bool in_order(const std::vector<kerf_test::VPoint>& pts, const kerf_test::VPiece& pc, double tol,
+              std::string& why) {
+  const double two_pi = 6.283185307179586;
+  const double r = std::hypot(pc.sx - pc.cx, pc.sy - pc.cy);
+  if (!pc.arc || !(r > tol)) return true;
+  auto at = [&](double x, double y) { return std::atan2(y - pc.cy, x - pc.cx); };
+  auto wrap = [&](double a) {
+    a = std::fmod(a, two_pi);
+    return a < 0 ? a + two_pi : a;
+  };
+  const bool closed = pc.sx == pc.ex && pc.sy == pc.ey;
+  const double sweep = closed ? two_pi : wrap(pc.dir * (at(pc.ex, pc.ey) - at(pc.sx, pc.sy)));
+  const double slack = 2 * tol / r;
+  double walked = 0, prev = at(pc.sx, pc.sy);
+  for (std::size_t k = pc.first + 1; k <= pc.last; ++k) {
+    const double a = at(pts[k].x, pts[k].y);
+    double step = wrap(pc.dir * (a - prev));
+    if (step > 0.75 * two_pi) step -= two_pi;
+    walked += step;
+    prev = a;
+    if (walked < -slack || walked > sweep + slack) {
+      why = "arc " + std::to_string(pc.first) + ".." + std::to_string(pc.last) + " reaches point " +
+            std::to_string(k) + " out of order (walked " + std::to_string(walked) + " of a sweep of " +
+            std::to_string(sweep) + " rad)";
+      return false;
+    }
+  }
+  if (std::fabs(walked - sweep) <= slack) return true;
+  why = "arc " + std::to_string(pc.first) + ".." + std::to_string(pc.last) + " ends after walking " +
+        std::to_string(walked) + " rad, its sweep is " + std::to_string(sweep);
+  return false;
+}
+
 int fail(const std::string& why) {
   std::printf("referee: FAIL: %s\n", why.c_str());
   return 1;
@@ -164,6 +203,8 @@ int main(int argc, char** argv) {
   }
   const double moved = unround(moved_pts, pieces, tol, why);
   if (moved < 0) return fail(why);
+  for (const kerf_test::VPiece& pc : pieces)
+    if (!in_order(moved_pts, pc, tol, why)) return fail(why);
   double worst = 0;
   if (mode == "vertex") {
     const kerf_test::VerifyReport r = kerf_test::verify(moved_pts, pieces, tol + 2 * moved);
