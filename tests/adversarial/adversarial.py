@@ -557,6 +557,34 @@ def case_gcode_unknown_words(ctx):
         ctx.referee_ok("weld", name, out, 0.1)
 
 
+def case_sim_inputs(ctx):
+    """kerf sim (the controller on the simulated machine) refuses the same
+    hostile inputs before it moves anything (registered when kerf sim is
+    built, with libmodbus)."""
+    sim = ["sim", "--link", "modbus-tcp", "--speed", "0", "--tol"]
+    ctx.write("nan.txt", "0 0\n1 nan\n2 2\n")
+    ctx.refused(sim + ["0.1", "nan.txt"], r"nan\.txt:2: NaN or infinite coordinate\n")
+    for tol, why in [("0", "must be > 0, got 0"), ("-1", "must be > 0, got -1"),
+                     ("nan", "must be finite, got nan"), ("inf", "must be finite, got inf")]:
+        ctx.refused(sim + [tol, "nan.txt"], r"kerf: --tol: " + why + r"\n")
+    write_big_line(ctx.path("line.txt"), b"1 ")
+    ctx.refused(sim + ["0.1", "line.txt"],
+                r"line\.txt:1: line longer than 65536 bytes \(not a point file\?\)\n")
+    os.remove(ctx.path("line.txt"))
+    ctx.write("empty.txt", "")
+    ctx.refused(sim + ["0.1", "empty.txt"], r"empty\.txt: fewer than two distinct points \(got 0\)\n")
+    ctx.write("ij.nc", "G21 G90\nG0 X0 Y0\nM3\nG2 X10 Y0 I1 J0\nM5\n")
+    ctx.refused(sim + ["0.1", "ij.nc"],
+                r"ij\.nc:4: the arc's end is off its circle: radius 1 at the start, 9 at the end\n")
+    ctx.write("gx.nc", "G21 G90\nG0 X0 Y0\nM3\nG1 X Y1\nM5\n")
+    ctx.refused(sim + ["0.1", "gx.nc"], r"gx\.nc:4: word X has no number\n")
+    # A path winding round twice: before, the machine cut one clockwise arc
+    # against the path; now nothing runs (exit 1, the fit's own check).
+    ctx.write_points("wind.txt", [(math.cos(k / 5), math.sin(k / 5)) for k in range(40)])
+    ctx.refused(sim + ["0.1", "wind.txt"], r"kerf: wind\.txt: .*does not pass its points in order.*\n",
+                rc=1)
+
+
 CASES = {name[len("case_"):]: fn for name, fn in globals().items() if name.startswith("case_")}
 
 
