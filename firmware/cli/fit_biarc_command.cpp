@@ -101,6 +101,7 @@ int run_fit_biarc(const FitOptions& opts) {
   report.pieces = {arcs.data(), arcs.size()};
   report.zero_below = io::resolution({in.points.data(), n});
   report.biarcs = true;
+  report.digits = io::coordinate_digits(report.pieces, tol);
   const std::string text = opts.format == "json" ? io::format_json(report) : io::format_esgi(report);
   if (!io::write_output("-", text)) {
     std::fprintf(stderr, "kerf: cannot write output: %s\n", std::strerror(errno));

@@ -136,6 +136,34 @@ int check_options(const FitOptions& opts, bool band, fit::Method& method, std::u
   return kExitOk;
 }
 
+// --numeric fixed: every coordinate inside Q31.32's range (else FILE:LINE),
+// and a tol (0: none given) the grid resolves at the points' magnitude.
+bool fixed_fits(const io::PointFile& in, double tol) {
+  for (std::size_t k = 0; k < in.points.size(); ++k) {
+    const Vec2<double> p = in.points[k];
+    if (std::fabs(p.x) < kFixedLimit && std::fabs(p.y) < kFixedLimit) continue;
+    std::fprintf(stderr,
+                 "%s:%zu: coordinate out of the fixed-point fit's range (|x|, |y| < 2^30 = "
+                 "1073741824) for --numeric fixed: \"%.17g\"\n",
+                 in.file.c_str(), in.point_lines[k], std::fabs(p.x) < kFixedLimit ? p.y : p.x);
+    return false;
+  }
+  if (tol == 0.0) return true;
+  const double finest = fixed_min_tol(Span<const Vec2<double>>(in.points.data(), in.points.size()));
+  char buf[200];
+  if (tol >= kFixedLimit)
+    std::snprintf(buf, sizeof buf, "%.6g is out of the fixed-point fit's range (< 2^30 = 1073741824)", tol);
+  else if (tol < finest)
+    std::snprintf(buf, sizeof buf,
+                  "%.6g is finer than the fixed-point fit resolves for these points (at least "
+                  "%.3g; or use --numeric double)",
+                  tol, finest);
+  else
+    return true;
+  usage_error(std::string("--tol: ") + buf);
+  return false;
+}
+
 }  // namespace
 
 int run_fit(const FitOptions& opts) {
@@ -165,6 +193,7 @@ int run_fit(const FitOptions& opts) {
 
   const std::size_t n = in.points.size();
   const Span<const Vec2<double>> pts(in.points.data(), n);
+  if (opts.numeric == "fixed" && !fixed_fits(in, by_pieces ? 0.0 : tol)) return kExitUsage;
   // A job of several paths (blank-line separated) is fitted path by path.
   std::vector<std::size_t> begins = in.path_begin;
   if (begins.empty()) begins.push_back(0);
@@ -248,6 +277,7 @@ int run_fit(const FitOptions& opts) {
   report.fit = total;
   report.pieces = fitted;
   report.zero_below = io::resolution(pts);
+  report.digits = io::coordinate_digits(fitted, total.tol);
   const std::string text = opts.format == "json" ? io::format_json(report) : io::format_esgi(report);
   if (!io::write_output("-", text)) {
     std::fprintf(stderr, "kerf: cannot write output: %s\n", std::strerror(errno));
