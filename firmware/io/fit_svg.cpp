@@ -51,7 +51,7 @@ void legend(std::string& out, const FitPlot& plot, double band) {
     out += "</text></g>\n";
     x += 30 + 7.0 * static_cast<double>(name.size());
   };
-  item("<circle class=\"pt\" cx=\"10\" cy=\"0\" r=\"2\"/>",
+  item("<circle class=\"pt key\" cx=\"10\" cy=\"0\" r=\"2\"/>",
        "input points (" + std::to_string(plot.points.size()) + ")");
   item("<line x1=\"0\" y1=\"0\" x2=\"20\" y2=\"0\" stroke=\"#1f77b4\" stroke-width=\"2\"/>",
        "fitted pieces (" + std::to_string(plot.pieces.size()) + ")");
