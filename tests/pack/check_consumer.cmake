@@ -8,7 +8,9 @@ file(REMOVE_RECURSE ${BINARY})
 set(args -S ${SOURCE} -B ${BINARY} -G ${GENERATOR} -DCMAKE_PREFIX_PATH=${PREFIX}
          -DCMAKE_BUILD_TYPE=Release)
 if(TOOLCHAIN)
-  list(APPEND args -DCMAKE_TOOLCHAIN_FILE=${TOOLCHAIN})
+  # A cross toolchain roots package searches in the target's root
+  # (CMAKE_FIND_ROOT_PATH_MODE_PACKAGE ONLY): name the package folder instead.
+  list(APPEND args -DCMAKE_TOOLCHAIN_FILE=${TOOLCHAIN} -Dkerf_DIR=${PREFIX}/lib/cmake/kerf)
 endif()
 execute_process(COMMAND ${CMAKE_COMMAND} ${args} RESULT_VARIABLE rc OUTPUT_VARIABLE out
                 ERROR_VARIABLE err)
