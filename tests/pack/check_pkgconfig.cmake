@@ -2,7 +2,7 @@
 # PKG_CONFIG_PATH at PREFIX, then the consumer program compiled and linked
 # with exactly those flags, and run.
 #   cmake -DPREFIX=... -DLIBDIR=lib -DSOURCE=<main.cpp> -DBINARY=<scratch> -DCXX=<compiler>
-#         [-DEMULATOR=list] -P check_pkgconfig.cmake
+#         [-DEMULATOR=list] [-DCXX_FLAGS=...] [-DLD_FLAGS=...] -P check_pkgconfig.cmake
 cmake_minimum_required(VERSION 3.25)
 include(${CMAKE_CURRENT_LIST_DIR}/run_consumer.cmake)
 file(REMOVE_RECURSE ${BINARY})
@@ -19,7 +19,9 @@ if(NOT flags MATCHES "-lkerf_io" OR NOT flags MATCHES "-I")
   message(FATAL_ERROR "pkg-config kerf gave: ${flags}")
 endif()
 separate_arguments(flag_list UNIX_COMMAND "${flags}")
-execute_process(COMMAND ${CXX} -std=c++20 -O2 ${SOURCE} ${flag_list} -o ${BINARY}/consumer
+# The build's own flags too (the sanitizers of debug-asan must link the same way).
+separate_arguments(build_flags UNIX_COMMAND "${CXX_FLAGS} ${LD_FLAGS}")
+execute_process(COMMAND ${CXX} -std=c++20 -O2 ${build_flags} ${SOURCE} ${flag_list} -o ${BINARY}/consumer
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "compiling with `${flags}` failed (${rc}):\n${out}${err}")
