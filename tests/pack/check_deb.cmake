@@ -1,7 +1,8 @@
 # The .deb: built with cpack from this build, unpacked with dpkg -x into a
 # scratch root, and the installed kerf run from there.
 #   cmake -DCPACK_CONFIG=<build>/CPackConfig.cmake -DOUT=<scratch> -DARCH=amd64|arm64
-#         -DVERSION=x.y.z -DPOINTS=<point file> [-DEMULATOR=list] -P check_deb.cmake
+#         -DVERSION=x.y.z -DSOURCE_DIR=<tree> -DPOINTS=<point file> [-DEMULATOR=list]
+#         [-DOBJDUMP=<objdump>] -P check_deb.cmake
 cmake_minimum_required(VERSION 3.25)
 file(REMOVE_RECURSE ${OUT})
 file(MAKE_DIRECTORY ${OUT})
@@ -61,6 +62,24 @@ endif()
 file(READ ${root}/lib/systemd/system/kerf.service unit)
 if(NOT unit MATCHES "ExecStart=/usr/bin/kerf ")
   message(FATAL_ERROR "the unit does not start /usr/bin/kerf, where the package puts it")
+endif()
+
+# Depends names a libc6 at least as new as the newest GLIBC_ symbol version
+# kerf needs (for a cross build, Depends is written by hand).
+if(OBJDUMP)
+  run(${OBJDUMP} -T ${root}/usr/bin/kerf)
+  string(REGEX MATCHALL "GLIBC_2\\.[0-9]+" versions "${out}")
+  set(need 0)
+  foreach(v IN LISTS versions)
+    string(REGEX REPLACE "GLIBC_2\\." "" minor ${v})
+    if(minor GREATER need)
+      set(need ${minor})
+    endif()
+  endforeach()
+  run(dpkg-deb -f ${deb} Depends)
+  if(NOT out MATCHES "libc6 \\(>= 2\\.([0-9]+)\\)" OR CMAKE_MATCH_1 LESS need)
+    message(FATAL_ERROR "kerf needs GLIBC_2.${need}; Depends says: ${out}")
+  endif()
 endif()
 
 # The installed command runs (under qemu-user for a cross build).

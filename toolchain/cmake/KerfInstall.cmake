@@ -105,10 +105,11 @@ set(CPACK_DEBIAN_PACKAGE_ARCHITECTURE ${kerf_deb_arch})
 set(CPACK_DEBIAN_PACKAGE_SECTION misc)
 set(CPACK_DEBIAN_PACKAGE_HOMEPAGE "https://example.invalid/kerf")
 if(CMAKE_CROSSCOMPILING)
-  # Debian 12's (bookworm's) runtimes, what the cross compiler links against;
+  # Debian 12's (bookworm's) runtimes, what the cross compiler links against
+  # (pack_deb checks libc6 against the GLIBC_ versions the binary needs);
   # this build has no libmodbus or libgpiod (KerfDeps.cmake).
   set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS OFF)
-  set(CPACK_DEBIAN_PACKAGE_DEPENDS "libc6 (>= 2.34), libgcc-s1 (>= 3.0), libstdc++6 (>= 12)")
+  set(CPACK_DEBIAN_PACKAGE_DEPENDS "libc6 (>= 2.35), libgcc-s1 (>= 3.0), libstdc++6 (>= 12)")
 else()
   set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 endif()
