@@ -83,7 +83,8 @@ std::string format_fit_gcode(const GcodeFit& g) {
   const std::vector<fit::Piece<double>> w = rounded_pieces(g);
   const int d = g.decimals;
   std::string out = "; ";
-  out += g.comment;
+  for (const char c : g.comment)  // a line end in a file name would end the comment
+    out += static_cast<unsigned char>(c) < 0x20 ? '?' : c;
   out += "\nG21 G90 G17\n";
   char feed[64];
   std::snprintf(feed, sizeof feed, " F%g", g.feed);

@@ -281,3 +281,19 @@ TEST(FitSvg, DeviationOverTolIsVisibleOutsideTheLimits) {
 }
 
 }  // namespace
+
+namespace {
+
+// A file name with a line end stays inside the first comment line.
+TEST(FitGcode, CommentCannotBreakTheFile) {
+  const Job j = two_paths();
+  const std::vector<Piece> pieces = fit(j, 0.05, "band");
+  kerf::io::GcodeFit g = gcode_of(j, pieces, 0.05);
+  g.comment = "a\nG0 X999\rb";
+  const std::string text = kerf::io::format_fit_gcode(g);
+  EXPECT_EQ(text.rfind("; a?G0 X999?b\nG21 G90 G17\n", 0), 0u) << text.substr(0, 60);
+  const kerf::io::GcodeFile f = kerf::io::parse_gcode(text, "fit.nc");
+  ASSERT_TRUE(f.ok) << kerf::io::describe_error(f);
+}
+
+}  // namespace
