@@ -26,7 +26,7 @@ void label(std::string& out, double v);
 void escaped(std::string& out, const std::string& s);
 
 struct Box {
-  double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+  double x0 = HUGE_VAL, y0 = HUGE_VAL, x1 = -HUGE_VAL, y1 = -HUGE_VAL;  // HUGE_VAL: double (clang warns on INFINITY, a float)
   void add(Vec2<double> p) {
     if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;
     x0 = std::fmin(x0, p.x);
