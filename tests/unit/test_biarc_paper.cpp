@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "bridge/biarc_bridge.hpp"
 #include "kerf/fit/biarc_visibility.hpp"
 #include "kerf/fit/tangent.hpp"
 #include "rng.hpp"
@@ -438,6 +439,55 @@ TEST(BiarcPaper, AJointAtAnEndPointIsNeverInTheSet) {
     }
   }
   EXPECT_GT(checked, 20);
+}
+
+}  // namespace
+
+// --- the fitter with either method --------------------------------------------------------
+
+namespace {
+
+using kerf_test::CoreBiarcFitter;
+using kerf_test::VPoint;
+
+// Both methods fit the same curve with the same number of biarcs, each
+// biarc passes the independent checker (tests/support/biarc_checker).
+void expect_same_counts(const std::vector<VPoint>& p, double tol, const char* what) {
+  CoreBiarcFitter sets(p, {}, tol), paper(p, {}, tol);
+  fit::BiarcOptions opts;
+  const auto a = sets.fit(opts);
+  opts.method = fit::BiarcMethod::paper;
+  const auto b = paper.fit(opts);
+  ASSERT_EQ(a.ok(), b.ok()) << what;
+  if (!a.ok()) return;
+  EXPECT_EQ(a.value().pieces, b.value().pieces) << what << " tol " << tol;
+  const auto rep = kerf_test::check_biarc_fit(p, paper.tangents(),
+                                              kerf_test::symmetric_widths(p.size(), tol),
+                                              paper.biarcs(b.value().pieces),
+                                              1e-9 * kerf_test::scale_of(p) + 1e-12);
+  EXPECT_TRUE(rep.ok) << what << ": " << rep.why;
+}
+
+TEST(BiarcPaperFit, SameCountsAsTheExactSets) {
+  int fits = 0;
+  std::vector<VPoint> sine, parabola, circle;
+  for (int k = 0; k <= 80; ++k) sine.push_back({0.25 * k, 2 * std::sin(0.25 * k)});
+  for (int k = -30; k <= 30; ++k) parabola.push_back({0.1 * k, 0.05 * k * k * 0.1});
+  for (int k = 0; k <= 40; ++k) circle.push_back({5 * std::cos(0.12 * k), 5 * std::sin(0.12 * k)});
+  for (double tol : {0.002, 0.01, 0.05}) {
+    expect_same_counts(sine, tol, "sine");
+    expect_same_counts(parabola, tol, "parabola");
+    expect_same_counts(circle, tol, "circle");
+    fits += 3;
+  }
+  kerf_test::Rng rng(73);
+  for (int trial = 0; trial < 10; ++trial) {
+    std::vector<VPoint> p;
+    for (const auto& q : random_path(rng, rng.integer(10, 30))) p.push_back({q.x, q.y});
+    expect_same_counts(p, rng.uniform(0.02, 0.3), "random path");
+    ++fits;
+  }
+  EXPECT_EQ(fits, 19);
 }
 
 }  // namespace

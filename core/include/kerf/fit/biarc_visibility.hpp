@@ -148,7 +148,10 @@ class BiarcPaper {
     };
     add_edge(q1, q2);
     any_edge(add_edge);
-    if (m + 4 > kCritMax) out.overflow = true;
+    if (m + 4 > kCritMax) {
+      out.overflow = true;
+      overflow_ = true;
+    }
     sort(crit, m);
     // The ends: beyond the extreme critical curvatures by the curvature scale.
     const S pad = S(1) / scale_;
@@ -189,14 +192,17 @@ class BiarcPaper {
     st.first_in = j_;
     st.single_circle = single_;
     bool ok = true;
-    if (check_.ends(t1_, t2_)) ok = joints(out, st);
+    overflow_ = false;
+    if (check_.ends(t1_, t2_)) ok = joints(out, st) && !overflow_;
     st.arcs = out.size();
     if (stats != nullptr) *stats = st;
     return ok;
   }
 
  private:
-  static constexpr int kCritMax = 1024;
+  // Critical curvatures or joints of one pair: about six per boundary edge
+  // between g_i and g_j. Overflow is reported (compute returns false).
+  static constexpr int kCritMax = 2048;
 
   static Vec2<S> mul(Vec2<S> a, Vec2<S> b) { return {a.x * b.x - a.y * b.y, a.x * b.y + a.y * b.x}; }
   static S s_of(S lambda) {
@@ -470,7 +476,10 @@ class BiarcPaper {
     const Vec2<S> p = from_end ? p2_ : p1_;
     const Vec2<S> t = from_end ? -t2_ : t1_;
     any_edge([&](Vec2<S> q1, Vec2<S> q2) {
-      if (m + 8 > kCritMax) return true;
+      if (m + 8 > kCritMax) {
+        overflow_ = true;
+        return true;
+      }
       S kap[4];
       int c = 0;
       add_kappa_through(p, t, q1, kap, c);
@@ -577,6 +586,7 @@ class BiarcPaper {
   Vec2<S> p1_{}, p2_{}, t1_{}, t2_{}, d_{}, k_{}, tau_{};
   S dd_{}, scale_{}, kj_{}, sigma_{}, a1_{}, c1_{}, b2_{}, c2_{};
   bool single_ = false;
+  mutable bool overflow_ = false;  // a critical list was full: the answer is not exact
 };
 
 // The valid joints of the pair p_i -> p_j by the paper's construction, in
