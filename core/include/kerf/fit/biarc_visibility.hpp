@@ -160,9 +160,13 @@ class BiarcPaper {
       const S hi = a + 1 < m ? crit[a + 1] : (m > 0 ? crit[m - 1] + pad : pad);
       if (!(lo < hi)) continue;
       const S mid = lo + (hi - lo) / S(2);
+      // The crossings with the gate's whole line, numbered in arc order (a
+      // branch keeps its number over the interval); those off the gate skip.
       Vec2<S> x[2];
-      const int c = crossings(p, t, mid, q1, u, len, x, true);
+      const int c = crossings(p, t, mid, q1, u, len, x, false);
       for (int br = 0; br < c; ++br) {
+        const S at = u.dot(x[br] - q1);
+        if (!(at >= S(0) && at <= len)) continue;
         if (!clear(p, t, x[br], from_end)) continue;
         // The branch's positions at both ends of the interval (limits).
         const S here = u.dot(x[br] - q1);
@@ -289,9 +293,11 @@ class BiarcPaper {
   }
 
   // Where the pencil circle of curvature kappa crosses the line q1 + s u,
-  // in order along the arc from p; only s in [0, len] when `inside`.
+  // in order along the arc from p; only s in [0, len] when `inside`. With
+  // `touch`, a circle that misses the line by rounding (a critical kappa of
+  // tangency) touches it at the closest point.
   static int crossings(Vec2<S> p, Vec2<S> t, S kappa, Vec2<S> q1, Vec2<S> u, S len, Vec2<S>* x,
-                       bool inside) {
+                       bool inside, bool touch = false) {
     const Vec2<S> e = q1 - p;
     const S qa = kappa;
     const S qb = S(2) * (kappa * e.dot(u) - t.cross(u));
@@ -301,7 +307,8 @@ class BiarcPaper {
     if (qa == S(0)) {
       if (qb != S(0)) roots[c++] = -qc / qb;
     } else {
-      const S disc = qb * qb - S(4) * qa * qc;
+      S disc = qb * qb - S(4) * qa * qc;
+      if (touch && disc < S(0)) disc = S(0);
       if (disc >= S(0)) {
         const S sq = Scalar<S>::sqrt(disc);
         const S q = -(qb + (qb < S(0) ? -sq : sq)) / S(2);
@@ -342,7 +349,7 @@ class BiarcPaper {
   // infinity) keeps the middle's value `here`.
   static S branch_at(Vec2<S> p, Vec2<S> t, S kappa, Vec2<S> q1, Vec2<S> u, S len, int br, S here) {
     Vec2<S> x[2];
-    const int all = crossings(p, t, kappa, q1, u, len, x, false);
+    const int all = crossings(p, t, kappa, q1, u, len, x, false, true);
     if (all == 0) return here;
     const S s = u.dot(x[br < all ? br : all - 1] - q1);
     if (!(Scalar<S>::abs(s) < S(1e300))) return here;
