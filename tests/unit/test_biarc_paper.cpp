@@ -575,7 +575,14 @@ TEST(BiarcPaperFit, SameCountsAsTheExactSets) {
     expect_same_counts(p, rng.uniform(0.02, 0.3), "random path");
     ++fits;
   }
-  EXPECT_EQ(fits, 19);
+  // Wiggly paths with a band about as wide as a step.
+  for (int trial = 0; trial < 10; ++trial) {
+    std::vector<VPoint> p;
+    for (const auto& q : random_path(rng, rng.integer(10, 30), 1.2)) p.push_back({q.x, q.y});
+    expect_same_counts(p, rng.uniform(0.1, 0.5), "wiggly path");
+    ++fits;
+  }
+  EXPECT_EQ(fits, 29);
 }
 
 }  // namespace
