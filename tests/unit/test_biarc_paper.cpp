@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <cstdint>
 #include <cstdio>
 #include <string>
@@ -583,6 +584,129 @@ TEST(BiarcPaperFit, SameCountsAsTheExactSets) {
     ++fits;
   }
   EXPECT_EQ(fits, 29);
+}
+
+}  // namespace
+
+// --- Lemma 3.6, literally ------------------------------------------------------------------
+
+namespace {
+
+using C = std::complex<double>;
+
+// J's parameter s of a point m on J (inverse of JointCircle::point).
+double s_on_j(Vec2<double> p1, Vec2<double> p2, Vec2<double> k, Vec2<double> m) {
+  const C z = C(m.x - p1.x, m.y - p1.y) / C(p2.x - p1.x, p2.y - p1.y);
+  const double lambda = (z / (1.0 - z) / C(k.x, k.y)).real();
+  return lambda >= 0 ? lambda / (1 + lambda) : (2 - lambda) / (1 - lambda);
+}
+
+// The paper's A1 (Figure 14): on g_l, the point of W_i outside J closest
+// to Q_l = J n g_l; the pencil arc from p_i through it meets J at A1, and
+// every joint of J from A1 on to Q_r (between g_l and g_r) is reached from
+// p_i inside R, none between Q_l and A1. Checked on pairs where J crosses
+// g_l and g_r once each (the two-crossing case is Lemma 3.5's).
+TEST(BiarcPaper, LemmaThreeSixA1BoundsTheReachableJoints) {
+  kerf_test::Rng rng(61);
+  int checked = 0, joints = 0, a1_inside = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    const bool wild = trial >= 30;  // wiggly paths, wide band
+    const Problem pr(random_path(rng, rng.integer(6, 12), wild ? 1.5 : 0.5),
+                     wild ? rng.uniform(0.2, 1.0) : rng.uniform(0.05, 0.5));
+    const auto n = static_cast<std::uint32_t>(pr.pts.size());
+    for (std::uint32_t i = 0; i + 3 < n; ++i) {
+      for (std::uint32_t j = i + 3; j < n; ++j) {
+        const auto bp = pr.paper(i, j);
+        fit::JointSet<double> ps;
+        fit::PaperPairStats st;
+        ASSERT_TRUE(bp.compute(ps, &st));
+        if (st.single_circle || !region_simple(pr, i, j)) continue;
+        const auto l = static_cast<std::uint32_t>(st.first_in), r = static_cast<std::uint32_t>(st.last_out);
+        if (!(l < r && l > i && r < j)) continue;  // an arc Q_l Q_r, not a point
+        const Vec2<double> p1 = pr.pts[i], p2 = pr.pts[j], t1 = pr.tan[i];
+        const Vec2<double> d = p2 - p1, k = bp.circle().k();
+        const Vec2<double> tau = fit::unit_of(Vec2<double>{d.x * k.x - d.y * k.y, d.x * k.y + d.y * k.x});
+        const double kj = 2 * tau.cross(d) / d.norm2();
+        const double sigma = -tau.cross(t1) > 0 ? 1 : -1;
+        auto f = [&](Vec2<double> x) { return sigma * (kj * (x - p1).norm2() - 2 * tau.cross(x - p1)); };
+        // J n gate g, by a fine scan for the sign change (one crossing only).
+        auto crossing = [&](std::uint32_t g, double& uq, int& out_side) {
+          const auto& v = pr.region.vertex(g);
+          int changes = 0;
+          constexpr int kScan = 2000;
+          double prev = f(pr.pts[g] - v.b * v.gate_right);
+          for (int q = 1; q <= kScan; ++q) {
+            const double u = -v.gate_right + (v.gate_left + v.gate_right) * q / kScan;
+            const double now = f(pr.pts[g] + v.b * u);
+            if ((now > 0) != (prev > 0)) {
+              ++changes;
+              double a = u - (v.gate_left + v.gate_right) / kScan, b = u;  // bisect
+              for (int it = 0; it < 60; ++it) {
+                const double m = 0.5 * (a + b);
+                if ((f(pr.pts[g] + v.b * m) > 0) == (prev > 0)) a = m; else b = m;
+              }
+              uq = 0.5 * (a + b);
+              out_side = now > 0 ? 1 : -1;  // outside J (first arc's side) at larger u?
+            }
+            prev = now;
+          }
+          return changes == 1;
+        };
+        double ul{}, ur{};
+        int side_l{}, side_r{};
+        if (!crossing(l, ul, side_l) || !crossing(r, ur, side_r)) continue;
+        // The W_i point on g_l^out closest to Q_l.
+        fit::GateVisibility<double> vis;
+        bp.gate_visibility(l, false, vis);
+        double best = 1e300, ua = 0;
+        for (int q = 0; q < vis.size; ++q) {
+          const double lo = side_l > 0 ? std::max(vis.v[q].lo, ul) : vis.v[q].lo;
+          const double hi = side_l > 0 ? vis.v[q].hi : std::min(vis.v[q].hi, ul);
+          if (!(hi >= lo)) continue;
+          const double cand = side_l > 0 ? lo : hi;
+          if (std::fabs(cand - ul) < best) {
+            best = std::fabs(cand - ul);
+            ua = cand;
+          }
+        }
+        if (best == 1e300) continue;
+        const Vec2<double> xa = pr.pts[l] + pr.region.vertex(l).b * ua;
+        const double kappa = 2 * t1.cross(xa - p1) / (xa - p1).norm2();
+        // The joint of the first arc of curvature kappa (fit/biarc_joints.hpp).
+        const Vec2<double> dk{d.x * k.x - d.y * k.y, d.x * k.y + d.y * k.x};
+        const double lambda = 2 * t1.cross(dk) / (kappa * d.norm2() - 2 * t1.cross(d));
+        const double s_a1 = lambda >= 0 ? lambda / (1 + lambda) : (2 - lambda) / (1 - lambda);
+        const double s_ql = s_on_j(p1, p2, k, pr.pts[l] + pr.region.vertex(l).b * ul);
+        const double s_qr = s_on_j(p1, p2, k, pr.pts[r] + pr.region.vertex(r).b * ur);
+        // A1 lies on the arc Q_l Q_r (else nothing is reachable there).
+        const double lo = std::min(s_ql, s_qr), hi = std::max(s_ql, s_qr);
+        if (!(s_a1 >= lo - 1e-9 && s_a1 <= hi + 1e-9)) continue;
+        ++checked;
+        if (std::fabs(s_a1 - s_ql) > 1e-9 * (hi - lo)) ++a1_inside;
+        // Joints strictly between: reached from p_i iff beyond A1 (seen from Q_l).
+        for (int q = 1; q < 40; ++q) {
+          const double s = lo + (hi - lo) * q / 40;
+          if (std::fabs(s - s_a1) < 1e-6 * (hi - lo) || s == 1.0) continue;
+          const Vec2<double> m = bp.circle().point(s);
+          fit::Biarc<double> b;
+          b.first = {p1, m, t1};
+          b.second = {p2, p2, pr.tan[j]};
+          bool clear = true;
+          for (const auto& e : pair_boundary(pr, i, j))
+            if (e.first != e.second && bp.check().meets(b, e.first, e.second)) clear = false;
+          const bool beyond = (s_ql < s_qr) ? s > s_a1 : s < s_a1;
+          EXPECT_EQ(clear, beyond) << trial << " pair " << i << "," << j << " l " << l << " r " << r
+                                   << " s " << s << " A1 " << s_a1 << " Ql " << s_ql << " Qr " << s_qr;
+          ++joints;
+        }
+      }
+    }
+  }
+  std::printf("[paper] Lemma 3.6: A1 checked on %d pairs (A1 != Q_l on %d), %d joints between Q_l "
+              "and Q_r\n",
+              checked, a1_inside, joints);
+  EXPECT_GT(checked, 20);
+  EXPECT_GT(a1_inside, 5);
 }
 
 }  // namespace
