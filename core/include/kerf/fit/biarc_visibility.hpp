@@ -45,7 +45,13 @@
 // is the arc A1A2 (its ends A1, A2 are where the first resp. second arc
 // starts to be blocked). The paper proves it is one arc between g_l and
 // g_r; kerf does not assume that: it keeps every interval and reports how
-// many there are, so the tests can count the cases where it is not.
+// many there are, so the tests can count the cases where it is not (none
+// seen). The tests also check the paper's own A1 (the W_i point of g_l
+// outside J closest to Q_l, extended to J) against W_i n J.
+//
+// Cost: the gate intervals are recomputed per pair, O(m^2) in the pair's m
+// boundary edges, not the paper's O(n^2) table with O(log n) per pair; the
+// exact sets of fit/biarc_joints.hpp stay the fitter's default.
 //
 // Degenerate cases: one circle through p_i and p_j with both tangents (t_i
 // tangent to J): every joint on the arc p_i -> p_j of that circle gives the
