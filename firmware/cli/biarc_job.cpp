@@ -23,13 +23,15 @@ double distance_to(const Segment<double>& s, Vec2<double> p) { return distance_t
 
 bool fit_biarc_path(const std::vector<Vec2<double>>& pts, const std::vector<Vec2<double>>& given,
                     double tol, std::vector<fit::BiarcPiece<double>>& out, fit::Fit<double>& fit,
-                    std::string& error, Status& status) {
+                    std::string& error, Status& status, fit::BiarcMethod method) {
   const std::size_t n = pts.size();
   const std::vector<Vec2<double>> tangents = given.empty() ? io::estimated_tangents(pts) : given;
   std::vector<fit::BandWidth<double>> widths(n, {tol, tol});
   io::BiarcStorage storage(n);
+  fit::BiarcOptions opts;
+  opts.method = method;
   const Result<fit::Fit<double>> r = fit::fit_biarc_min_count<double>(
-      {pts.data(), n}, {tangents.data(), n}, {widths.data(), n}, fit::BiarcOptions{},
+      {pts.data(), n}, {tangents.data(), n}, {widths.data(), n}, opts,
       storage.workspace(), storage.pieces());
   if (!r.ok()) {
     status = r.status();

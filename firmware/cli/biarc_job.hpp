@@ -17,7 +17,8 @@ namespace kerf::cli {
 // prefix) and `status` set.
 bool fit_biarc_path(const std::vector<Vec2<double>>& pts, const std::vector<Vec2<double>>& tangents,
                     double tol, std::vector<fit::BiarcPiece<double>>& out, fit::Fit<double>& fit,
-                    std::string& error, Status& status);
+                    std::string& error, Status& status,
+                    fit::BiarcMethod method = fit::BiarcMethod::exact_sets);
 
 // What a fitted path must satisfy (a check of the output, not a proof): each
 // biarc starts on p_first with the point's tangent, its arcs meet at the

@@ -25,6 +25,8 @@ std::string count(std::size_t n, const char* one, const char* many) {
 
 int check_biarc_options(const FitOptions& opts, double& tol, bool& estimate) {
   std::string error;
+  if (!opts.biarc_method.empty() && opts.biarc_method != "sets" && opts.biarc_method != "paper")
+    return usage_error("--biarc-method: expected sets or paper, got " + quoted(opts.biarc_method));
   if (opts.method != "optimal")
     return usage_error("--method: " + quoted(opts.method) +
                        " is a vertex-criterion rule; --criterion biarc is always optimal");
@@ -78,7 +80,9 @@ int run_fit_biarc(const FitOptions& opts) {
     std::string error;
     Status status = Status::ok;
     const auto t0 = std::chrono::steady_clock::now();
-    const bool ok = fit_biarc_path(pts, tangents, tol, biarcs, fit, error, status);
+    const fit::BiarcMethod how =
+        opts.biarc_method == "paper" ? fit::BiarcMethod::paper : fit::BiarcMethod::exact_sets;
+    const bool ok = fit_biarc_path(pts, tangents, tol, biarcs, fit, error, status, how);
     ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     if (!ok) {
       const std::string where = begins.size() > 1 ? " (path " + std::to_string(p + 1) + ")" : "";

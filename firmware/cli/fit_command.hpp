@@ -30,6 +30,7 @@ struct FitOptions {
   std::string tangents;                  // biarc: given | estimate (default: given when
                                          // the file has them)
   std::string tangent_format = "vector";  // biarc: vector (x y tx ty) | angle (x y deg)
+  std::string biarc_method;  // biarc: sets (default, fit/biarc_joints.hpp) | paper (biarc_visibility.hpp)
   std::string numeric = "double";  // vertex and band criteria: double or fixed (kerf::Fixed)
   bool stream = false;   // --stream: read and write piece by piece (cli/fit_stream.cpp)
   std::string window;    // --stream: the points held at most

@@ -10,6 +10,7 @@
 // resident size (getrusage) is printed after each n for the whole run.
 //
 // usage: kerf_bench_biarc [--max-n N] [--exact-max-n N] [--repeat R] [--tol T] [--dx D]
+//                         [--method sets|paper]
 #include <sys/resource.h>
 
 #include <algorithm>
@@ -28,6 +29,10 @@ namespace {
 using kerf::Vec2;
 namespace fit = kerf::fit;
 
+// --method paper: the pair test of fit/biarc_visibility.hpp instead of the
+// exact joint sets.
+fit::BiarcMethod g_method = fit::BiarcMethod::exact_sets;
+
 struct Run {
   std::uint32_t biarcs = 0;
   double seconds = 1e300;
@@ -41,6 +46,7 @@ Run once(const std::vector<Vec2<double>>& p, double tol, bool exact) {
   kerf::io::BiarcStorage s(n);
   fit::BiarcOptions opts;
   opts.exact = exact;
+  opts.method = g_method;
   const auto r = fit::fit_biarc_min_count<double>({p.data(), n}, {t.data(), n}, {widths.data(), n},
                                                   opts, s.workspace(), s.pieces());
   const std::clock_t t1 = std::clock();
@@ -85,10 +91,13 @@ int main(int argc, char** argv) {
     if (!std::strcmp(argv[a], "--repeat")) repeat = std::atoi(argv[a + 1]);
     if (!std::strcmp(argv[a], "--tol")) tol = std::atof(argv[a + 1]);
     if (!std::strcmp(argv[a], "--dx")) dx = std::atof(argv[a + 1]);
+    if (!std::strcmp(argv[a], "--method") && !std::strcmp(argv[a + 1], "paper"))
+      g_method = fit::BiarcMethod::paper;
   }
-  std::printf("biarc fitter, symmetric tol %g on y = %g sin(2 pi x / %g), dx = %g, estimated "
-              "tangents\n",
-              tol, kerf_bench::kAmplitude, kerf_bench::kPeriod, dx);
+  std::printf("biarc fitter (%s pair test), symmetric tol %g on y = %g sin(2 pi x / %g), dx = %g, "
+              "estimated tangents\n",
+              g_method == fit::BiarcMethod::paper ? "paper" : "exact-sets", tol,
+              kerf_bench::kAmplitude, kerf_bench::kPeriod, dx);
   std::printf("%8s %8s %8s %12s %14s %12s %12s %10s\n", "n", "biarcs", "span", "pt/s",
               "all-pair pt/s", "a.p. biarcs", "storage KiB", "peak MiB");
   std::vector<double> ns, ts;

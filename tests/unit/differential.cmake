@@ -36,3 +36,14 @@ target_link_libraries(kerf_biarc_tests PRIVATE kerf_io kerf_test_support GTest::
 target_include_directories(kerf_biarc_tests PRIVATE ${PROJECT_SOURCE_DIR}/tests/support)
 kerf_warnings(kerf_biarc_tests)
 gtest_discover_tests(kerf_biarc_tests DISCOVERY_MODE PRE_TEST)
+
+# The paper's biarc pair test (visibility regions, Lemmas 3.3-3.7) against
+# the exact joint sets.
+add_executable(kerf_biarc_paper_tests
+  assert_handler.cpp
+  test_biarc_paper.cpp
+)
+target_link_libraries(kerf_biarc_paper_tests PRIVATE kerf_io kerf_test_support GTest::gtest_main)
+target_include_directories(kerf_biarc_paper_tests PRIVATE ${PROJECT_SOURCE_DIR}/tests/support)
+kerf_warnings(kerf_biarc_paper_tests)
+gtest_discover_tests(kerf_biarc_paper_tests DISCOVERY_MODE PRE_TEST)

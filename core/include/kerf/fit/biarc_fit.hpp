@@ -40,11 +40,19 @@ struct BiarcPiece {
 // The most joints sampled per valid interval when the joint is chosen.
 inline constexpr std::uint32_t kBiarcMaxSamples = 64;
 
+// How a pair's valid joints are found: kerf's exact sets
+// (fit/biarc_joints.hpp), or the paper's construction through the
+// visibility regions W_i, W~_j and the (In)/(Out) search
+// (fit/biarc_visibility.hpp). Both give the same sets (the tests
+// cross-check them); the paper's is the slower here.
+enum class BiarcMethod : std::uint8_t { exact_sets, paper };
+
 struct BiarcOptions {
   std::uint32_t samples = 16;  // joints scored per valid interval (1..64), then a golden-section search
   // Test every pair, ignoring the proven reach bound of fit/biarc_reach.hpp
   // (slow; the tests use it to show the bound changes no count).
   bool exact = false;
+  BiarcMethod method = BiarcMethod::exact_sets;
 };
 
 constexpr std::size_t biarc_workspace_words(std::size_t n) { return 4 * n; }

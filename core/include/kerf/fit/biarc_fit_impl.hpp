@@ -6,6 +6,7 @@
 #include "kerf/fit/biarc_fit.hpp"
 #include "kerf/fit/biarc_joints.hpp"
 #include "kerf/fit/biarc_reach.hpp"
+#include "kerf/fit/biarc_visibility.hpp"
 
 namespace kerf::fit {
 
@@ -203,6 +204,15 @@ Result<Fit<S>> fit_biarc_min_count(Span<const Vec2<S>> pts, Span<const Vec2<S>> 
       if (!opts.exact && back[j] > i + 1 && !reaches(back[j] - 1)) return false;
       const BiarcJoints<S> bj(region, i, j, tangents[i], tangents[j]);
       S s{};
+      if (opts.method == BiarcMethod::paper) {
+        // The paper's construction alone (no quick joints), so that it is
+        // what decides and what the benchmark measures.
+        if (!biarc_valid_joints_paper(region, i, j, tangents[i], tangents[j], set)) {
+          overflow = true;
+          return false;
+        }
+        return bj.verified(set, s, b);
+      }
       // A valid joint among a few likely ones proves the pair; otherwise
       // the exact set decides (so no valid pair is missed).
       bool valid = bj.quick_yes(s);
@@ -245,7 +255,10 @@ Result<Fit<S>> fit_biarc_min_count(Span<const Vec2<S>> pts, Span<const Vec2<S>> 
     const std::uint32_t i = prev[j];
     const BiarcJoints<S> bj(region, i, j, tangents[i], tangents[j]);
     S s{};
-    if (!bj.compute(set)) return Status::capacity_exceeded;
+    const bool got = opts.method == BiarcMethod::paper
+                         ? biarc_valid_joints_paper(region, i, j, tangents[i], tangents[j], set)
+                         : bj.compute(set);
+    if (!got) return Status::capacity_exceeded;
     // The pair was found valid: by a joint of its set or by a quick joint.
     // (Both agree but for rounding, seen only when p_i and p_j nearly
     // coincide, as where a closed path meets its start.)
