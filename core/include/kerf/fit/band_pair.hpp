@@ -64,6 +64,7 @@ class BandPair {
     f_ = band_detail::frame_factor(u);
     u_ = u * f_;
     n_ = u_.perp() * S(orient);
+    reach_ = band_detail::rounding_reach(a_, b_);
   }
 
   // The end conditions alone.
@@ -84,6 +85,14 @@ class BandPair {
     }
     BandChain<S> c;
     r_.chain(k, -orient_, c);
+    // A width below the coordinates' resolution puts the chain's first or
+    // last point a rounding step beside a or b instead of on it. The
+    // segment test then finds its binding point within a step of the end
+    // (t rounds to 0 or 1 and is dropped) and skips the end's limit: arcs
+    // far outside the band passed (tests/fuzz/corpus/fit_band/
+    // sharp_turn_arc_out_of_band, one_sided_sub_ulp_width). Such a point is
+    // the end itself.
+    for (int t = 0; t < c.size; ++t) c.pt[t] = snapped(c.pt[t]);
     // Every point, the one shared with the previous cell too: cells are not
     // visited in order, and the segment test below needs both ends applied.
     for (int t = 0; t < c.size; ++t) outside(range, c.pt[t]);
@@ -156,6 +165,12 @@ class BandPair {
     } else if (w.y < S(0)) {
       r.hi = min_of(r.hi, S(0));
     }
+  }
+
+  Vec2<S> snapped(Vec2<S> q) const {
+    if (band_detail::within(q, a_, reach_)) return a_;
+    if (band_detail::within(q, b_, reach_)) return b_;
+    return q;
   }
 
   S area(Vec2<S> q) const { return ((q - a_) * f_).dot((q - b_) * f_); }
@@ -238,6 +253,7 @@ class BandPair {
   Vec2<S> u_{};
   Vec2<S> n_{};
   S f_{};  // the frame's scale: lengths in u_, n_, area and offset are times f_
+  S reach_{};  // rounding's reach around a and b (band_numeric.hpp)
 };
 
 }  // namespace kerf::fit
