@@ -133,6 +133,20 @@ S rounding_reach(Vec2<S> a, Vec2<S> b) {
   }
 }
 
+// How close to a or b (along each axis) the end of a chain segment d
+// (= q2 - q1) may lie before the pair test takes it as a or b itself:
+// 2^-26 of the segment, about sqrt(epsilon). There the circle through a, b
+// and a point of the segment is extreme within that fraction of the end,
+// at a double root of the segment test's quadratic, which rounding moves
+// by about sqrt(epsilon): past the end, where it was dropped. The end's
+// limit condition (band_pair.hpp) is then the binding one, to within that
+// fraction of the segment's angle.
+template <class S>
+S segment_end_reach(Vec2<S> d) {
+  const S m = max_of(Scalar<S>::abs(d.x), Scalar<S>::abs(d.y));
+  return m / S(67108864);  // 2^26: exact in fixed point too
+}
+
 // Are p and q within `reach` of each other along both axes?
 template <class S>
 bool within(Vec2<S> p, Vec2<S> q, S reach) {

@@ -167,9 +167,11 @@ class BandPair {
     }
   }
 
-  Vec2<S> snapped(Vec2<S> q) const {
-    if (band_detail::within(q, a_, reach_)) return a_;
-    if (band_detail::within(q, b_, reach_)) return b_;
+  // q, or a or b when q lies within `reach` of it (at least rounding's).
+  Vec2<S> snapped(Vec2<S> q, S reach = S(0)) const {
+    const S d = max_of(reach, reach_);
+    if (band_detail::within(q, a_, d)) return a_;
+    if (band_detail::within(q, b_, d)) return b_;
     return q;
   }
 
@@ -193,6 +195,15 @@ class BandPair {
   }
 
   void segment(PsiRange<S>& r, Vec2<S> lo, Vec2<S> hi, Vec2<S> q1, Vec2<S> q2) const {
+    // An end a hair from a or b (a gate end of a sharp turn, whose gate
+    // runs almost along the edges: a sub-resolution width gives a half gate
+    // of many ulps) is a or b itself: the binding point would lie within
+    // rounding of t = 1 and be lost (band_numeric.hpp, segment_end_reach).
+    // Both ends' own conditions were applied in cell().
+    const S near = band_detail::segment_end_reach(q2 - q1);
+    q1 = snapped(q1, near);
+    q2 = snapped(q2, near);
+    if (q1 == q2) return;
     const Vec2<S> dq = q2 - q1;
     const Vec2<S> fq = dq * f_;  // in the pair's frame
     // area and offset of q1, (q1 - mid).dq, |dq|^2, dq.n and 2 (q2 - mid).dq:
