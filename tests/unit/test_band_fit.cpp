@@ -107,6 +107,29 @@ TEST(BandReference, OneSidedWidthBelowTheResolutionFitsLikeZero) {
   EXPECT_NEAR(fit.value().max_error, z.value().max_error, 1e-9 * left);
 }
 
+// Found by fuzzing (tests/fuzz/corpus/fit_band/near_cusp_one_sided_sub_ulp_width):
+// the same widths, and a turn of 179.4 degrees at p9. Its gate runs almost
+// along the edges, so the sub-resolution right width gives a half gate of
+// many ulps: the chain's end is a hair from p9, not a rounding step. The
+// binding point near t = 1 was lost again, and 7..9 took an arc 1408 out.
+TEST(BandReference, NearCuspWithASubResolutionWidthKeepsTheArcInTheBand) {
+  const std::vector<VPoint> p{
+      {-80, -224},    {-176, -144},   {-128, 128},   {-176, -80},    {14624, 880},
+      {14384, 688},   {14144, 960},   {1888, 1760},  {1888, 1888},   {-1296, 1888},
+      {-352, 1872},   {1888, -1296},  {1632, -1808}, {1376, -2320},  {1120, -2832},
+      {880, -3344},   {1888, 1888},   {1888, 1616},  {2048, 1568},   {2224, 1696},
+      {-7584, 640},   {1888, 1888},   {1888, -6432}, {1712, -6528},  {1488, -6080},
+      {-8720, -15088}};
+  const double left = 61.999999999999787;
+  const auto w = kerf_test::asymmetric_widths(p.size(), left, 2.1338822635968979e-13);
+  CoreBandFitter core(p, w);
+  const auto fit = core.fit();
+  ASSERT_TRUE(fit.ok()) << kerf::to_string(fit.status());
+  const auto report = kerf_test::check_band_fit(p, w, core.pieces(fit.value().pieces), slack_for(p));
+  EXPECT_TRUE(report.ok) << report.why;
+  EXPECT_LE(fit.value().max_error, left);
+}
+
 TEST(BandReference, MinErrorIsTheSmallestBandForTheBudget) {
   const auto p = load("parabola.txt");
   CoreBandFitter core(p, kerf_test::symmetric_widths(p.size(), 1.0));
