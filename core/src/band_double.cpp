@@ -7,6 +7,10 @@ template class BandRegion<double>;
 template Result<Fit<double>> fit_band_min_count(Span<const Vec2<double>>,
                                                 Span<const BandWidth<double>>,
                                                 BandWorkspace<double>, Span<Piece<double>>);
+template Result<Fit<double>> fit_band_min_count(Span<const Vec2<double>>,
+                                                Span<const BandWidth<double>>,
+                                                BandWorkspace<double>, Span<Piece<double>>,
+                                                double);
 template Result<Fit<double>> fit_band_min_error(Span<const Vec2<double>>,
                                                 Span<const BandWidth<double>>, std::uint32_t,
                                                 BandWorkspace<double>, Span<Piece<double>>);

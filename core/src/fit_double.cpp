@@ -5,6 +5,8 @@ namespace kerf::fit {
 
 template Result<Fit<double>> fit_min_count(Span<const Vec2<double>>, double, Method,
                                            Workspace<double>, Span<Piece<double>>);
+template Result<Fit<double>> fit_min_count(Span<const Vec2<double>>, double, Method,
+                                           Workspace<double>, Span<Piece<double>>, double);
 template Result<Fit<double>> fit_min_error(Span<const Vec2<double>>, std::uint32_t, Method,
                                            Workspace<double>, Span<Piece<double>>);
 template Result<std::uint32_t> count_min(Span<const Vec2<double>>, double, Method,

@@ -28,6 +28,40 @@ std::string piece_error(std::size_t k, const std::string& what) {
   return s;
 }
 
+constexpr double kTwoPi = 6.283185307179586;
+
+// [0, 2 pi)
+double wrap(double a) {
+  a = std::fmod(a, kTwoPi);
+  return a < 0.0 ? a + kTwoPi : a;
+}
+
+// Does the arc follow its points in order? Walking the points from start to
+// end, each step turns about the centre (in the arc's direction; a step back
+// of up to 90 degrees counts as backwards) and the total must be the arc's
+// sweep, never running past it or back before the start by more than the tol
+// allows. A point path that winds round more than once, or the other way,
+// cannot be one arc even when every point is near its circle. Skipped for
+// radii within the tol, where any order is within tol of the arc.
+bool follows_in_order(Span<const Vec2<double>> pts, const fit::Piece<double>& pc, double tol) {
+  const Segment<double>& s = pc.segment;
+  const double r = s.radius();
+  if (!(r > tol)) return true;
+  const double slack = 2.0 * tol / r;
+  auto angle = [&](Vec2<double> p) { return std::atan2(p.y - s.centre.y, p.x - s.centre.x); };
+  const double sweep = s.start == s.end ? kTwoPi : wrap(s.dir * (angle(s.end) - angle(s.start)));
+  double walked = 0.0, prev = angle(s.start);
+  for (std::uint32_t i = pc.first + 1; i <= pc.last; ++i) {
+    const double a = angle(pts[i]);
+    double step = wrap(s.dir * (a - prev));
+    if (step > 1.5 * 3.141592653589793) step -= kTwoPi;  // a small step backwards
+    walked += step;
+    prev = a;
+    if (walked < -slack || walked > sweep + slack) return false;
+  }
+  return std::fabs(walked - sweep) <= slack;
+}
+
 }  // namespace
 
 std::string check_fit(Span<const Vec2<double>> pts, Span<const fit::Piece<double>> pieces,
@@ -49,6 +83,9 @@ std::string check_fit(Span<const Vec2<double>> pts, Span<const fit::Piece<double
     const double radius = s.is_arc() ? s.radius() : 0.0;
     if (s.is_arc() && !(std::isfinite(radius) && radius > 0.0))
       return piece_error(k, "arc without a finite radius");
+    if (s.is_arc() && !follows_in_order(pts, pc, tol))
+      return piece_error(k, "the arc does not pass its points in order (they wind round "
+                            "more than once, or the other way)");
     for (std::uint32_t i = pc.first + 1; i < pc.last; ++i) {
       const double d = s.is_arc() ? distance_to_circle(s.centre, s.start, pts[i])
                                   : distance_to_line(s.start, s.end, pts[i]);

@@ -2,7 +2,9 @@
 // pieces chain from the first point to the last, start and end on their
 // points, and keep every point in between within the tolerance? It is
 // measured here independently of the fitter, with the vertex criterion's
-// distance (to the piece's full circle, or its line). A failure is a bug or
+// distance (to the piece's full circle, or its line), plus that an arc
+// passes its points in order (not round the circle more than once, nor
+// backwards: the fitters test the circle, not the order). A failure is a bug or
 // a numeric breakdown in the fitter, and no output must be written.
 #pragma once
 

@@ -10,9 +10,9 @@
 #include "cli/biarc_job.hpp"
 #include "cli/fit_command.hpp"
 #include "cli/fit_job.hpp"
+#include "cli/fit_write.hpp"
 #include "cli/options.hpp"
 #include "io/fit_output.hpp"
-#include "io/output_file.hpp"
 #include "io/point_file.hpp"
 
 namespace kerf::cli {
@@ -31,8 +31,6 @@ int check_biarc_options(const FitOptions& opts, double& tol, bool& estimate) {
   if (!opts.pieces.empty()) return usage_error("--pieces: not available with --criterion biarc");
   if (!opts.tol_left.empty() || !opts.tol_right.empty())
     return usage_error("--tol-left and --tol-right: --criterion biarc takes a symmetric --tol");
-  if (opts.format != "esgi" && opts.format != "json")
-    return usage_error("--format: unknown format " + quoted(opts.format) + " (expected esgi or json)");
   if (opts.tangent_format != "vector" && opts.tangent_format != "angle")
     return usage_error("--tangent-format: unknown format " + quoted(opts.tangent_format) +
                        " (expected vector or angle)");
@@ -49,6 +47,8 @@ int run_fit_biarc(const FitOptions& opts) {
   double tol = 0.0;
   bool estimate = false;
   if (const int rc = check_biarc_options(opts, tol, estimate); rc != kExitOk) return rc;
+  double feed = 1000.0;
+  if (const int rc = check_output_options(opts, feed); rc != kExitOk) return rc;
   io::PointFile in;
   if (!read_job(opts.file, "biarc", in, {true, opts.tangent_format == "angle"})) return kExitUsage;
   if (opts.tangents == "given" && in.tangents.empty())
@@ -101,11 +101,14 @@ int run_fit_biarc(const FitOptions& opts) {
   report.pieces = {arcs.data(), arcs.size()};
   report.zero_below = io::resolution({in.points.data(), n});
   report.biarcs = true;
-  const std::string text = opts.format == "json" ? io::format_json(report) : io::format_esgi(report);
-  if (!io::write_output("-", text)) {
-    std::fprintf(stderr, "kerf: cannot write output: %s\n", std::strerror(errno));
-    return kExitFailure;
-  }
+  report.digits = io::coordinate_digits(report.pieces, tol);
+  FitToWrite w;  // the biarcs' first/last already index the whole job
+  w.report = &report;
+  w.in = &in;
+  w.feed = feed;
+  w.tol_left = w.tol_right = tol;
+  std::string note;
+  if (const int rc = write_fit(opts, w, note); rc != kExitOk) return rc;
   std::size_t lines = 0;
   for (const fit::Piece<double>& a : arcs) lines += a.segment.is_arc() ? 0 : 1;
   std::string summary = "kerf: " + in.file + ": " + count(n, "point", "points") + ", " +
@@ -118,6 +121,7 @@ int run_fit_biarc(const FitOptions& opts) {
   char time[64];
   std::snprintf(time, sizeof time, ", %.3f ms", ms);
   summary += time;
+  summary += note;
   if (in.duplicates_dropped > 0)
     summary += ", dropped " + count(in.duplicates_dropped, "duplicate point", "duplicate points");
   std::fprintf(stderr, "%s\n", summary.c_str());

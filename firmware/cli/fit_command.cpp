@@ -10,17 +10,18 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <utility>
 #include <vector>
 
 #include "cli/band_widths.hpp"
 #include "cli/check_fit.hpp"
 #include "cli/fit_fixed.hpp"
 #include "cli/fit_job.hpp"
+#include "cli/fit_write.hpp"
 #include "cli/options.hpp"
 #include "io/band_storage.hpp"
 #include "io/fit_output.hpp"
 #include "io/fit_storage.hpp"
-#include "io/output_file.hpp"
 #include "io/point_file.hpp"
 #include "kerf/fit/band_fit.hpp"
 #include "kerf/fit/fit.hpp"
@@ -71,9 +72,16 @@ CLI::App* add_fit_command(CLI::App& app, FitOptions& opts) {
   fit->add_option("--method", opts.method, "optimal, esgi-max or esgi-mean")
       ->type_name("NAME")
       ->capture_default_str();
-  fit->add_option("--format", opts.format, "Output format: esgi or json")
+  fit->add_option("--format", opts.format,
+                  "Output format: esgi, json, gcode (G0/G1/G2/G3, I/J relative) or svg (plot "
+                  "with the band and the deviation)")
       ->type_name("NAME")
       ->capture_default_str();
+  fit->add_option("--feed", opts.feed, "gcode: feed rate F in mm/min (default 1000)")
+      ->type_name("F");
+  fit->add_option("-o,--output", opts.output,
+                  "Write to FILE (through a temp file and a rename) instead of stdout")
+      ->type_name("FILE");
   fit->add_option("--tangents", opts.tangents,
                   "biarc: given (from the file's tangent columns) or estimate (circle through "
                   "each point and its neighbours); default: given when the file has them")
@@ -117,9 +125,6 @@ int check_options(const FitOptions& opts, bool band, fit::Method& method, std::u
     return usage_error("--tol-left and --tol-right need --criterion band");
   if (const std::string bad = numeric_problem(opts.numeric, opts.criterion); !bad.empty())
     return usage_error(bad);
-  if (opts.format != "esgi" && opts.format != "json")
-    return usage_error("--format: unknown format " + quoted(opts.format) +
-                       " (expected esgi or json)");
   if (!opts.pieces.empty()) {
     if (!opts.tol.empty()) return usage_error("--tol and --pieces cannot be used together");
     if (!parse_pieces(opts.pieces, pieces, error)) return usage_error(error);
@@ -134,6 +139,34 @@ int check_options(const FitOptions& opts, bool band, fit::Method& method, std::u
   if (!opts.tol_right.empty() && !parse_length("--tol-right", opts.tol_right, true, side, error))
     return usage_error(error);
   return kExitOk;
+}
+
+// --numeric fixed: every coordinate inside Q31.32's range (else FILE:LINE),
+// and a tol (0: none given) the grid resolves at the points' magnitude.
+bool fixed_fits(const io::PointFile& in, double tol) {
+  for (std::size_t k = 0; k < in.points.size(); ++k) {
+    const Vec2<double> p = in.points[k];
+    if (std::fabs(p.x) < kFixedLimit && std::fabs(p.y) < kFixedLimit) continue;
+    std::fprintf(stderr,
+                 "%s:%zu: coordinate out of the fixed-point fit's range (|x|, |y| < 2^30 = "
+                 "1073741824) for --numeric fixed: \"%.17g\"\n",
+                 in.file.c_str(), in.point_lines[k], std::fabs(p.x) < kFixedLimit ? p.y : p.x);
+    return false;
+  }
+  if (tol == 0.0) return true;
+  const double finest = fixed_min_tol(Span<const Vec2<double>>(in.points.data(), in.points.size()));
+  char buf[200];
+  if (tol >= kFixedLimit)
+    std::snprintf(buf, sizeof buf, "%.6g is out of the fixed-point fit's range (< 2^30 = 1073741824)", tol);
+  else if (tol < finest)
+    std::snprintf(buf, sizeof buf,
+                  "%.6g is finer than the fixed-point fit resolves for these points (at least "
+                  "%.3g; or use --numeric double)",
+                  tol, finest);
+  else
+    return true;
+  usage_error(std::string("--tol: ") + buf);
+  return false;
 }
 
 }  // namespace
@@ -153,6 +186,8 @@ int run_fit(const FitOptions& opts) {
   std::uint32_t pieces = 0;
   double tol = 0.0;
   if (const int rc = check_options(opts, band, method, pieces, tol); rc != kExitOk) return rc;
+  double feed = 1000.0;
+  if (const int rc = check_output_options(opts, feed); rc != kExitOk) return rc;
 
   io::PointFile in;
   if (!read_job(opts.file, opts.criterion, in)) return kExitUsage;
@@ -165,6 +200,7 @@ int run_fit(const FitOptions& opts) {
 
   const std::size_t n = in.points.size();
   const Span<const Vec2<double>> pts(in.points.data(), n);
+  if (opts.numeric == "fixed" && !fixed_fits(in, by_pieces ? 0.0 : tol)) return kExitUsage;
   // A job of several paths (blank-line separated) is fitted path by path.
   std::vector<std::size_t> begins = in.path_begin;
   if (begins.empty()) begins.push_back(0);
@@ -174,6 +210,7 @@ int run_fit(const FitOptions& opts) {
   std::vector<fit::Piece<double>> piece_store(n - 1);
   fit::Fit<double> total{};
   std::size_t used = 0;
+  std::vector<std::uint32_t> piece_offset;  // each piece's path's first point
   double ms = 0.0;
   for (std::size_t p = 0; p < begins.size(); ++p) {
     const std::size_t b = begins[p];
@@ -236,6 +273,7 @@ int run_fit(const FitOptions& opts) {
       return kExitFailure;
     }
     used += r.value().pieces;
+    piece_offset.insert(piece_offset.end(), r.value().pieces, static_cast<std::uint32_t>(b));
     total.pieces += r.value().pieces;
     total.max_error = std::max(total.max_error, r.value().max_error);
     total.tol = std::max(total.tol, r.value().tol);
@@ -248,11 +286,22 @@ int run_fit(const FitOptions& opts) {
   report.fit = total;
   report.pieces = fitted;
   report.zero_below = io::resolution(pts);
-  const std::string text = opts.format == "json" ? io::format_json(report) : io::format_esgi(report);
-  if (!io::write_output("-", text)) {
-    std::fprintf(stderr, "kerf: cannot write output: %s\n", std::strerror(errno));
-    return kExitFailure;
+  report.digits = io::coordinate_digits(fitted, total.tol);
+  FitToWrite w;
+  w.report = &report;
+  w.in = &in;
+  w.piece_offset = std::move(piece_offset);
+  w.feed = feed;
+  w.tol_left = w.tol_right = total.tol;
+  if (band && !by_pieces) {  // the widths as given (a shaped band: its widest)
+    w.tol_left = w.tol_right = 0.0;
+    for (const fit::BandWidth<double>& bw : widths) {
+      w.tol_left = std::max(w.tol_left, bw.left);
+      w.tol_right = std::max(w.tol_right, bw.right);
+    }
   }
+  std::string note;
+  if (const int rc = write_fit(opts, w, note); rc != kExitOk) return rc;
 
   std::string summary = "kerf: " + in.file + ": " + count(n, "point", "points") + ", " +
                         (begins.size() > 1 ? count(begins.size(), "path", "paths") + ", " : "") +
@@ -262,6 +311,7 @@ int run_fit(const FitOptions& opts) {
   char time[64];
   std::snprintf(time, sizeof time, ", %.3f ms", ms);
   summary += time;
+  summary += note;
   if (in.duplicates_dropped > 0)
     summary += ", dropped " + count(in.duplicates_dropped, "duplicate point", "duplicate points");
   std::fprintf(stderr, "%s\n", summary.c_str());

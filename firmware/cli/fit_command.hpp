@@ -24,7 +24,9 @@ struct FitOptions {
   std::string tol_right;  // band only
   std::string criterion = "vertex";
   std::string method = "optimal";
-  std::string format = "esgi";
+  std::string format = "esgi";  // esgi, json, gcode or svg
+  std::string feed;             // gcode: F in mm/min (default 1000)
+  std::string output = "-";     // -o: a file (written atomically) or - for stdout
   std::string tangents;                  // biarc: given | estimate (default: given when
                                          // the file has them)
   std::string tangent_format = "vector";  // biarc: vector (x y tx ty) | angle (x y deg)

@@ -15,6 +15,8 @@ double fixed_fit_slack(Span<const Vec2<double>> pts) {
   return 64.0 * fixed_quantum * std::exp2(std::ceil(std::log2(big)));
 }
 
+double fixed_min_tol(Span<const Vec2<double>> pts) { return 16.0 * fixed_fit_slack(pts); }
+
 Result<fit::Fit<double>> fit_vertex_fixed(Span<const Vec2<double>> pts, double tol,
                                           std::uint32_t pieces, fit::Method method,
                                           Span<fit::Piece<double>> out) {

@@ -17,6 +17,16 @@ namespace kerf::cli {
 // two above the largest coordinate. 64 steps of that scale bound both.
 double fixed_fit_slack(Span<const Vec2<double>> pts);
 
+// Q31.32 holds |v| < 2^31 (mm), but the fitter scales the points by the
+// inverse of a power of two at least as large as the largest coordinate, and
+// that inverse saturates from 2^30 on (the fit then fails). So `kerf fit
+// --numeric fixed` refuses a point at |x| or |y| >= 2^30.
+inline constexpr double kFixedLimit = 1073741824.0;
+
+// The finest tol a fixed-point fit of these points honours: 16 times
+// fixed_fit_slack, so that the grid's slack stays a small part of the tol.
+double fixed_min_tol(Span<const Vec2<double>> pts);
+
 // fit_min_count (pieces == 0) or fit_min_error (pieces > 0) in Fixed; out
 // holds the pieces in double.
 Result<fit::Fit<double>> fit_vertex_fixed(Span<const Vec2<double>> pts, double tol,

@@ -51,7 +51,7 @@ std::string numeric_problem(const std::string& numeric, const std::string& crite
 
 bool fit_job(const std::vector<Vec2<double>>& pts, const std::vector<double>& tols, double tol,
              const std::string& criterion, std::vector<fit::Piece<double>>& out,
-             std::string& error, Status& status, const std::string& numeric) {
+             std::string& error, Status& status, const std::string& numeric, double tie_break) {
   status = Status::invalid_argument;
   if (!criterion_supported(criterion)) {
     error = "--criterion: unknown criterion \"" + criterion + "\" (expected vertex, band or biarc)";
@@ -91,12 +91,15 @@ bool fit_job(const std::vector<Vec2<double>>& pts, const std::vector<double>& to
     for (std::size_t k = 0; k < tols.size() && k < n; ++k) widths[k] = {tols[k], tols[k]};
     const Span<const fit::BandWidth<double>> w(widths.data(), n);
     io::BandStorage storage(n);
-    r = fixed ? fit_band_fixed(points, w, 0, dst) : fit::fit_band_min_count(points, w, storage.workspace(), dst);
+    r = fixed           ? fit_band_fixed(points, w, 0, dst)
+        : tie_break > 0 ? fit::fit_band_min_count(points, w, storage.workspace(), dst, tie_break)
+                        : fit::fit_band_min_count(points, w, storage.workspace(), dst);
   } else if (fixed) {
     r = fit_vertex_fixed(points, tol, 0, fit::Method::optimal, dst);
   } else {
     io::FitStorage storage(n);
-    r = fit::fit_min_count(points, tol, fit::Method::optimal, storage.workspace(), dst);
+    r = tie_break > 0 ? fit::fit_min_count(points, tol, fit::Method::optimal, storage.workspace(), dst, tie_break)
+                      : fit::fit_min_count(points, tol, fit::Method::optimal, storage.workspace(), dst);
   }
   if (!r.ok()) {
     status = r.status();

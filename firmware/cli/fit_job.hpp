@@ -40,9 +40,12 @@ std::string numeric_problem(const std::string& numeric, const std::string& crite
 
 // Fits pts (tols: one per point, or empty) at tol, in the scalar type
 // `numeric` (checked with numeric_problem first). On failure returns false
-// with `error` (no "kerf: " prefix) and `status` set.
+// with `error` (no "kerf: " prefix) and `status` set. tie_break > 0 sets the
+// double vertex and band fitters' tie-break precision (fit/fit.hpp; >= 1
+// skips it); 0 keeps their own.
 bool fit_job(const std::vector<Vec2<double>>& pts, const std::vector<double>& tols, double tol,
              const std::string& criterion, std::vector<fit::Piece<double>>& out,
-             std::string& error, Status& status, const std::string& numeric = "double");
+             std::string& error, Status& status, const std::string& numeric = "double",
+             double tie_break = 0);
 
 }  // namespace kerf::cli

@@ -103,6 +103,9 @@ int check_stream_options(const FitOptions& opts, StreamSetup& st) {
     return usage_error("--stream: needs --tol; a piece budget (--pieces) needs the whole input");
   if (opts.numeric != "double") return usage_error("--stream: runs in double only");
   if (opts.format != "esgi") return usage_error("--stream: writes the esgi format only");
+  if (opts.output != "-")
+    return usage_error("--stream: writes to stdout as it goes (an -o file could not be written atomically)");
+  if (!opts.feed.empty()) return usage_error("--stream: --feed is for --format gcode");
   if (opts.method == "optimal") st.method = fit::Method::optimal;
   else if (opts.method == "esgi-max") st.method = fit::Method::esgi_max;
   else if (opts.method == "esgi-mean") st.method = fit::Method::esgi_mean;

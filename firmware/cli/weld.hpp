@@ -28,6 +28,10 @@ struct WeldOptions {
   int decimals = -1;               // < 0: as many as the file's X/Y words use (at least 3)
   bool split_turns = true;         // fit separately at turns sharper than 90 degrees
   double jitter = 0.02;            // fit without points within jitter * tol of their chord (0: keep all)
+  // The fitters' tie-break precision (fit/fit.hpp), per criterion; it does
+  // not change the piece count, only how far under tol the pieces stay.
+  // < 0: weld's choice (tie_break_for); 0: the fitters' own; >= 1: none.
+  double tie_break = -1;
   std::function<void(std::size_t line, std::size_t lines)> progress;  // as runs are fitted; may be empty
 };
 
@@ -40,6 +44,9 @@ struct WeldStats {
   double max_deviation_mm = 0;   // measured, over the written pieces
   int decimals = 0;
 };
+
+// The tie-break precision weld uses for `criterion` (opts.tie_break < 0).
+double tie_break_for(const std::string& criterion);
 
 // Welds g into `out`. False with `error` when a fit fails (a bug or a numeric
 // breakdown): then nothing is to be written.

@@ -14,33 +14,47 @@ double resolution(Span<const Vec2<double>> pts) {
   return m * 1e-12;
 }
 
-std::string format_number(double v, double zero_below) {
+int coordinate_digits(Span<const fit::Piece<double>> pieces, double tol) {
+  double big = 0.0;
+  for (const fit::Piece<double>& p : pieces) {
+    const Segment<double>& s = p.segment;
+    big = std::fmax(big, std::fmax(std::fabs(s.start.x), std::fabs(s.start.y)));
+    big = std::fmax(big, std::fmax(std::fabs(s.end.x), std::fabs(s.end.y)));
+    if (s.is_arc()) big = std::fmax(big, std::fmax(std::fabs(s.centre.x), std::fabs(s.centre.y)));
+  }
+  if (!(big > 0.0) || !(tol > 0.0) || !std::isfinite(big)) return kDigits;
+  // d digits print big to half a unit of 10^(floor(log10 big) + 1 - d).
+  const double need = std::floor(std::log10(big)) + 1.0 - std::log10(2e-3 * tol);
+  return need <= kDigits ? kDigits : need >= 17.0 ? 17 : static_cast<int>(std::ceil(need));
+}
+
+std::string format_number(double v, double zero_below, int digits) {
   if (std::fabs(v) < zero_below || v == 0.0) v = 0.0;  // also prints -0 as 0
   char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*g", kDigits, v);
+  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
   return buf;
 }
 
 namespace {
 
-void add_point(std::string& out, Vec2<double> p, double z) {
+void add_point(std::string& out, Vec2<double> p, double z, int digits) {
   out += '(';
-  out += format_number(p.x, z);
+  out += format_number(p.x, z, digits);
   out += ',';
-  out += format_number(p.y, z);
+  out += format_number(p.y, z, digits);
   out += ')';
 }
 
 // JSON has no NaN or infinity.
-void add_json_number(std::string& out, double v, double z) {
-  out += std::isfinite(v) ? format_number(v, z) : std::string("null");
+void add_json_number(std::string& out, double v, double z, int digits = kDigits) {
+  out += std::isfinite(v) ? format_number(v, z, digits) : std::string("null");
 }
 
-void add_json_point(std::string& out, Vec2<double> p, double z) {
+void add_json_point(std::string& out, Vec2<double> p, double z, int digits) {
   out += '[';
-  add_json_number(out, p.x, z);
+  add_json_number(out, p.x, z, digits);
   out += ", ";
-  add_json_number(out, p.y, z);
+  add_json_number(out, p.y, z, digits);
   out += ']';
 }
 
@@ -100,12 +114,12 @@ std::string format_esgi(const FitReport& r) {
       out += '\n';
     }
     out += s.is_arc() ? "A " : "L ";
-    add_point(out, s.start, z);
+    add_point(out, s.start, z, r.digits);
     out += ' ';
-    add_point(out, s.end, z);
+    add_point(out, s.end, z, r.digits);
     if (s.is_arc()) {
       out += ' ';
-      add_point(out, s.centre, z);
+      add_point(out, s.centre, z, r.digits);
       out += s.dir > 0 ? " 1" : " -1";
     }
     out += '\n';
@@ -157,14 +171,14 @@ std::string format_json(const FitReport& r) {
       out += ", ";
     }
     add_key(out, "start");
-    add_json_point(out, s.start, z);
+    add_json_point(out, s.start, z, r.digits);
     out += ", ";
     add_key(out, "end");
-    add_json_point(out, s.end, z);
+    add_json_point(out, s.end, z, r.digits);
     if (s.is_arc()) {
       out += ", ";
       add_key(out, "centre");
-      add_json_point(out, s.centre, z);
+      add_json_point(out, s.centre, z, r.digits);
       out += ", ";
       add_key(out, "dir");
       out += s.dir > 0 ? "1" : "-1";

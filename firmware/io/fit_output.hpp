@@ -10,27 +10,35 @@
 
 namespace kerf::io {
 
+// Every number is printed with this many significant digits (coordinates
+// with more where needed: coordinate_digits): enough to
+// rebuild the path, few enough to be the same on every target. (At 12, the
+// last digits of errors and centres differed between x86-64 and aarch64,
+// where GCC contracts a * b + c into fused multiply-adds.)
+inline constexpr int kDigits = 10;
+
 struct FitReport {
   const char* criterion = "vertex";
   const char* method = "optimal";  // as spelled on the command line
   fit::Fit<double> fit{};
   Span<const fit::Piece<double>> pieces{};  // fit.pieces of them
   double zero_below = 0.0;  // numbers smaller than this print as 0: see resolution()
+  int digits = kDigits;     // significant digits of coordinates: see coordinate_digits()
   // Biarcs: pieces 2k and 2k+1 are biarc k's two arcs (fit.pieces counts the
   // arcs, biarcs = fit.pieces / 2).
   bool biarcs = false;
 };
 
-// Every number is printed with this many significant digits: enough to
-// rebuild the path, few enough to be the same on every target. (At 12, the
-// last digits of errors and centres differed between x86-64 and aarch64,
-// where GCC contracts a * b + c into fused multiply-adds.)
-inline constexpr int kDigits = 10;
-
 // The size below which a number computed from these points is rounding noise
 // (1e-12 of the largest coordinate): a centre at 3e-17 instead of 0, say,
 // whose digits would differ from one target to another.
 double resolution(Span<const Vec2<double>> pts);
+
+// The significant digits that print every coordinate of the pieces (ends and
+// centres) to within tol / 1000: kDigits, or more (up to 17, all a double
+// has) far from the origin or for a tiny tol, where kDigits would move a
+// printed arc by more than the tol (at 1e9 mm, ten digits are 0.1 mm).
+int coordinate_digits(Span<const fit::Piece<double>> pieces, double tol);
 
 // "# ..." comment lines, "Number of arcs is Narc = N", then one line per piece:
 //   A (x1,y1) (x2,y2) (xc,yc) E     an arc, E = 1 counter-clockwise, -1 clockwise
@@ -45,7 +53,8 @@ std::string format_esgi(const FitReport& r);
 std::string format_json(const FitReport& r);
 
 // One number as both formats print it: kDigits significant digits ("%.10g"),
+// or `digits`,
 // 0 for anything smaller in magnitude than zero_below, never "-0".
-std::string format_number(double v, double zero_below = 0.0);
+std::string format_number(double v, double zero_below = 0.0, int digits = kDigits);
 
 }  // namespace kerf::io

@@ -84,7 +84,9 @@ bool split_words(GBlock& b, std::string& reason) {
         if (next != std::string::npos && s[next] == '[')
           return reason = "expressions ([...]) are not supported", false;
         std::string word(1, c);
-        if (j < s.size() && std::isalpha(static_cast<unsigned char>(s[j])) != 0)
+        // Letters run together ("ATAN", "XYZ") are a name; a letter, blanks and
+        // the next word ("G1 X Y1") is a word whose number is missing.
+        if (i + 1 < s.size() && std::isalpha(static_cast<unsigned char>(s[i + 1])) != 0)
           return reason = "not a word: \"" + s.substr(i, s.find_first_of(" \t;(", i) - i) +
                           "\" (macros and named functions are not supported)", false;
         return reason = "word " + word + " has no number", false;
@@ -279,6 +281,10 @@ GcodeFile parse_gcode(std::string_view text, std::string display_name) {
     ++line;
     std::size_t j = i;
     while (j < text.size() && text[j] != '\n' && text[j] != '\r') ++j;
+    if (j - i > kMaxLineBytes) {
+      fail(f, line, "line longer than 65536 bytes (not a G-code file?)");
+      return f;
+    }
     GBlock b;
     b.line = line;
     b.text.assign(text.substr(i, j - i));
@@ -314,7 +320,21 @@ GcodeFile read_gcode(const std::string& path) {
   std::string text;
   char buf[65536];
   std::size_t n = 0;
-  while ((n = std::fread(buf, 1, sizeof buf, in)) > 0) text.append(buf, n);
+  // Reading stops inside a line longer than kMaxLineBytes (parse_gcode then
+  // reports it, or an earlier error), so a runaway line is not read whole.
+  std::size_t line_bytes = 0;
+  bool too_long = false;
+  while (!too_long && (n = std::fread(buf, 1, sizeof buf, in)) > 0) {
+    for (std::size_t k = 0; k < n; ++k) {
+      if (buf[k] == '\n' || buf[k] == '\r') {
+        line_bytes = 0;
+      } else if (++line_bytes > kMaxLineBytes) {
+        too_long = true;
+        break;
+      }
+    }
+    text.append(buf, n);
+  }
   const bool bad = std::ferror(in) != 0;
   if (!use_stdin) std::fclose(in);
   if (bad) {
@@ -329,6 +349,25 @@ std::string describe_error(const GcodeFile& f) {
 }
 
 namespace {
+
+// An arc whose end lies on its circle: the end's distance from the centre is
+// the start's within 0.01 mm (CAM rounding) plus 1e-4 of the radius.
+// Otherwise (I or J is wrong) a cut would spiral or jump, so a job refuses
+// it; `kerf weld` passes arcs through as written and does not ask.
+bool arc_closes(const GBlock& b, std::string& reason) {
+  const double* end = b.end_pos;
+  const bool inches = b.inches;
+  const double r0 = std::hypot(b.start[0] - b.centre[0], b.start[1] - b.centre[1]);
+  const double r1 = std::hypot(end[0] - b.centre[0], end[1] - b.centre[1]);
+  if (!(r0 > 0)) return reason = "an arc with its centre on its start point", false;
+  const double slack = (inches ? 0.01 / kMmPerInch : 0.01) + 1e-4 * r0;
+  if (std::fabs(r1 - r0) <= slack) return true;
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "the arc's end is off its circle: radius %.6g at the start, %.6g at the end",
+                r0, r1);
+  reason = buf;
+  return false;
+}
 
 // Points along an arc from `from` (exclusive) to `to` (inclusive), chord error
 // below `chord`.
@@ -403,6 +442,9 @@ bool gcode_job_from(const GcodeFile& g, PointFile& out, std::string& error) {
     }
     if (!b.xy_plane && (b.motion == Motion::cw || b.motion == Motion::ccw))
       return refuse(b.line, "an arc outside the XY plane (G18/G19) cannot be cut");
+    std::string why;
+    if ((b.motion == Motion::cw || b.motion == Motion::ccw) && b.known_start && !arc_closes(b, why))
+      return refuse(b.line, why);
     if (!b.known_start) {
       const bool xy_still = b.motion == Motion::linear && b.start[0] == b.end_pos[0] && b.start[1] == b.end_pos[1];
       if (xy_still) continue;  // a Z move before any X Y: no point of a path

@@ -70,6 +70,9 @@ bool parse_number(std::string_view tok, double& out, std::string& reason) {
   return true;
 }
 
+const char* const kLongLine = "line longer than 65536 bytes (not a point file?)";
+static_assert(kMaxLineBytes == 65536, "kLongLine names the limit");
+
 PointFile fail(PointFile f, std::size_t line, std::string reason) {
   f.ok = false;
   f.line = line;
@@ -107,6 +110,7 @@ PointFile parse_points(std::string_view text, std::string display_name, bool thi
     if (eol == std::string_view::npos) eol = text.size();
     std::string_view line = text.substr(pos, eol - pos);
     pos = eol + 1;
+    if (line.size() > kMaxLineBytes) return fail(std::move(f), line_no, kLongLine);
     const std::size_t hash = line.find('#');
     if (hash != std::string_view::npos) line = line.substr(0, hash);
     if (!split_fields(line, fields)) return fail(std::move(f), line_no, "empty field");
@@ -190,7 +194,21 @@ PointFile read_points(const std::string& path, bool third_is_angle) {
   std::string text;
   char buf[65536];
   std::size_t got;
-  while ((got = std::fread(buf, 1, sizeof buf, in)) > 0) text.append(buf, got);
+  // Reading stops inside a line longer than kMaxLineBytes; the parser reports
+  // it (or an error on an earlier line) from what was read.
+  std::size_t line_bytes = 0;
+  bool too_long = false;
+  while (!too_long && (got = std::fread(buf, 1, sizeof buf, in)) > 0) {
+    for (std::size_t k = 0; k < got; ++k) {
+      if (buf[k] == '\n') {
+        line_bytes = 0;
+      } else if (++line_bytes > kMaxLineBytes) {
+        too_long = true;  // stop reading: the rest is not looked at
+        break;
+      }
+    }
+    text.append(buf, got);
+  }
   const bool read_failed = std::ferror(in) != 0;
   const int err = errno;
   if (!use_stdin) std::fclose(in);

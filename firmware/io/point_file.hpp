@@ -33,6 +33,10 @@ namespace kerf::io {
 // is a million km), so such a file is a unit or format mistake.
 inline constexpr double kMaxCoordinate = 1e15;
 
+// A line longer than this is refused (a point line is a few dozen bytes): a
+// binary or runaway file is reported at once, not read whole into memory.
+inline constexpr std::size_t kMaxLineBytes = 65536;
+
 struct PointFile {
   bool ok = false;
   std::string file;          // display name: the path, or "<stdin>" for "-"

@@ -4,9 +4,12 @@
 // welder measured here (greedy_moves) for comparison.
 // Prints figures measured in this run; it asserts nothing about speed.
 //
-// usage: kerf_bench_weld [--criterion band|vertex|both] [--tol MM] [--no-split] [--jitter F] [FILE...]
+// Times are CPU seconds of this process; "weld lines/s" includes the read.
+//
+// usage: kerf_bench_weld [--criterion band|vertex|both] [--tol MM] [--no-split] [--jitter F]
+//                        [--tie-break R] [--no-greedy] [--dump DIR] [FILE...]
 #include <algorithm>
-#include <chrono>
+#include <ctime>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -20,8 +23,12 @@
 
 namespace {
 
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+// CPU time of this process (single-threaded): the machine is shared, and
+// wall time would count the other processes' share.
+double cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
 // A greedy welder in ArcWelder's manner, as a baseline measured here: from
@@ -126,6 +133,9 @@ int main(int argc, char** argv) {
   std::vector<std::string> criteria{"band", "vertex"};
   bool split = true;
   double jitter = kerf::cli::WeldOptions{}.jitter;
+  double tie_break = kerf::cli::WeldOptions{}.tie_break;
+  std::string dump;  // a directory to write each output to
+  bool with_greedy = true;
   std::vector<std::string> files;
   for (int k = 1; k < argc; ++k) {
     if (std::strcmp(argv[k], "--tol") == 0 && k + 1 < argc) tol = std::atof(argv[++k]);
@@ -134,6 +144,9 @@ int main(int argc, char** argv) {
       criteria = c == "both" ? std::vector<std::string>{"band", "vertex"} : std::vector<std::string>{c};
     } else if (std::strcmp(argv[k], "--no-split") == 0) split = false;
     else if (std::strcmp(argv[k], "--jitter") == 0 && k + 1 < argc) jitter = std::atof(argv[++k]);
+    else if (std::strcmp(argv[k], "--tie-break") == 0 && k + 1 < argc) tie_break = std::atof(argv[++k]);
+    else if (std::strcmp(argv[k], "--dump") == 0 && k + 1 < argc) dump = argv[++k];
+    else if (std::strcmp(argv[k], "--no-greedy") == 0) with_greedy = false;
     else files.emplace_back(argv[k]);
   }
   if (files.empty())
@@ -149,28 +162,32 @@ int main(int argc, char** argv) {
     std::stringstream ss;
     ss << in.rdbuf();
     const std::string text = ss.str();
-    auto t0 = std::chrono::steady_clock::now();
+    double t0 = cpu_seconds();
     const kerf::io::GcodeFile g = kerf::io::parse_gcode(text, path);
-    const double read_s = seconds_since(t0);
+    const double read_s = cpu_seconds() - t0;
     if (!g.ok) {
       std::fprintf(stderr, "%s\n", kerf::io::describe_error(g).c_str());
       return 1;
     }
-    const std::size_t greedy = greedy_file(g, tol);
+    const std::size_t greedy = with_greedy ? greedy_file(g, tol) : 0;
     for (const std::string& c : criteria) {
       kerf::cli::WeldOptions o;
       o.tol_mm = tol;
       o.criterion = c;
       o.split_turns = split;
       o.jitter = jitter;
+      o.tie_break = tie_break;
       std::string out, error;
       kerf::cli::WeldStats st;
-      t0 = std::chrono::steady_clock::now();
+      t0 = cpu_seconds();
       if (!kerf::cli::weld_gcode(g, o, out, st, error)) {
         std::fprintf(stderr, "%s\n", error.c_str());
         return 1;
       }
-      const double weld_s = seconds_since(t0) + read_s;
+      const double weld_s = cpu_seconds() - t0 + read_s;
+      if (!dump.empty()) {  // the output, to compare runs byte for byte
+        std::ofstream(dump + "/" + path.substr(path.find_last_of('/') + 1) + "." + c, std::ios::binary) << out;
+      }
       const double lines = static_cast<double>(g.blocks.size());
       const std::string name = path.substr(path.find_last_of('/') + 1);
       std::printf("%-46s %-7s %8zu %8zu %6.2f%% %8.1f%% %7.2f%% %12.0f %12.0f\n", name.c_str(), c.c_str(),

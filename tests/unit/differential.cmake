@@ -30,6 +30,7 @@ gtest_discover_tests(kerf_band_tests DISCOVERY_MODE PRE_TEST)
 add_executable(kerf_biarc_tests
   assert_handler.cpp
   test_biarc_fit.cpp
+  test_biarc_exact.cpp
 )
 target_link_libraries(kerf_biarc_tests PRIVATE kerf_io kerf_test_support GTest::gtest_main)
 target_include_directories(kerf_biarc_tests PRIVATE ${PROJECT_SOURCE_DIR}/tests/support)

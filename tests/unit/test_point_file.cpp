@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "io/point_file.hpp"
@@ -14,7 +15,7 @@ using kerf::io::PointFile;
 using V = kerf::Vec2<double>;
 using Begins = std::vector<std::size_t>;
 
-PointFile parse(const char* text) { return parse_points(text, "job.txt"); }
+PointFile parse(const std::string& text) { return parse_points(text, "job.txt"); }
 
 TEST(PointFilePaths, OnePathStartsAtZero) {
   const PointFile f = parse("0 0\n1 0\n2 1\n");
@@ -143,6 +144,19 @@ TEST(PointFileTangents, BadTangentsAreRefusedWithTheirLine) {
   // Without the angle reading a third column is still a tol (> 0).
   f = parse("0 0 -45\n1 1 -45\n");
   EXPECT_FALSE(f.ok);
+}
+
+// A runaway line (a binary file, a file without line ends) is refused with
+// its line, however long; a line up to the limit is read.
+TEST(PointFileLines, LineLongerThanTheLimitIsRefusedWithItsLine) {
+  const std::string longest = "1 2 #" + std::string(kerf::io::kMaxLineBytes - 5, 'x');
+  PointFile f = parse("0 0\n" + longest + "\n3 4\n");
+  EXPECT_TRUE(f.ok) << kerf::io::describe_error(f);
+  f = parse("0 0\n1 1\n" + longest + "x\n3 4\n");
+  EXPECT_FALSE(f.ok);
+  EXPECT_EQ(kerf::io::describe_error(f), "job.txt:3: line longer than 65536 bytes (not a point file?)");
+  f = parse("0 0\n1 nan\n" + longest + "x");  // an earlier error comes first
+  EXPECT_EQ(kerf::io::describe_error(f), "job.txt:2: NaN or infinite coordinate");
 }
 
 }  // namespace

@@ -95,7 +95,8 @@ BandRegion<S> build_region(const Problem<S>& pb, S scale) {
 // Pieces needed in `region`, or 0 when more than budget.
 template <class S>
 Result<std::uint32_t> count_in(const Problem<S>& pb, const BandRegion<S>& region,
-                               std::uint32_t budget, std::uint32_t*& pred) {
+                               std::uint32_t budget, std::uint32_t*& pred,
+                               const std::uint32_t* layer_of = nullptr) {
   const auto n = static_cast<std::uint32_t>(pb.pts.size());
   std::uint32_t* next_barrier = pb.ws.words.data() + 5 * static_cast<std::size_t>(n);
   S longest = S(0);
@@ -107,7 +108,7 @@ Result<std::uint32_t> count_in(const Problem<S>& pb, const BandRegion<S>& region
   longest = max_of(longest, max_of(region.vertex(n - 1).gate_left, region.vertex(n - 1).gate_right));
   const Oracle<S> oracle{&region, next_barrier, longest};
   const Result<MinCount> r =
-      min_count(n, oracle, pb.ws.words.subspan(0, 5 * static_cast<std::size_t>(n)), budget, pred);
+      min_count(n, oracle, pb.ws.words.subspan(0, 5 * static_cast<std::size_t>(n)), budget, pred, layer_of);
   if (!r.ok()) return r.status();
   return r.value().pieces;
 }
@@ -115,8 +116,8 @@ Result<std::uint32_t> count_in(const Problem<S>& pb, const BandRegion<S>& region
 // Pieces needed with the widths times `scale`, or 0 when more than budget.
 template <class S>
 Result<std::uint32_t> count_at(const Problem<S>& pb, S scale, std::uint32_t budget,
-                               std::uint32_t*& pred) {
-  return count_in(pb, build_region(pb, scale), budget, pred);
+                               std::uint32_t*& pred, const std::uint32_t* layer_of = nullptr) {
+  return count_in(pb, build_region(pb, scale), budget, pred, layer_of);
 }
 
 // The widest width at scale 1, in the scaled problem.
@@ -129,21 +130,32 @@ S widest_scaled(const Problem<S>& pb) {
 }
 
 // Smallest scale in (0, hi] (to `rel` relative) at which `pieces` suffice,
-// given that they suffice at hi.
+// given that they suffice at hi. `seeded`: the search at hi, with exactly
+// `pieces`, has just run, so its layers bound every later search
+// (min_count's layer_of), kept in the workspace's seventh n words if it has
+// them.
 template <class S>
-Result<S> bisect_scale(const Problem<S>& pb, std::uint32_t pieces, S hi, S rel) {
+Result<S> bisect_scale(const Problem<S>& pb, std::uint32_t pieces, S hi, S rel, bool seeded = false) {
   std::uint32_t* pred = nullptr;
+  const std::size_t n = pb.pts.size();
+  std::uint32_t* layers = seeded && pb.ws.words.size() >= 7 * n ? pb.ws.words.data() + 6 * n : nullptr;
+  if (layers != nullptr) detail::copy_words(pb.ws.words.data(), layers, n);
   S lo = smallest_scale(hi, widest_scaled(pb));
   {
-    const Result<std::uint32_t> c = count_at(pb, lo, pieces, pred);
+    const Result<std::uint32_t> c = count_at(pb, lo, pieces, pred, layers);
     if (!c.ok()) return c.status();
     if (c.value() != 0) return lo;  // exact data: any positive width is enough
   }
   for (int it = 0; it < 200 && hi - lo > hi * rel; ++it) {
     const S mid = lo + (hi - lo) / S(2);
-    const Result<std::uint32_t> c = count_at(pb, mid, pieces, pred);
+    const Result<std::uint32_t> c = count_at(pb, mid, pieces, pred, layers);
     if (!c.ok()) return c.status();
-    if (c.value() != 0) hi = mid; else lo = mid;
+    if (c.value() != 0) {
+      hi = mid;
+      if (layers != nullptr) detail::copy_words(pb.ws.words.data(), layers, n);
+    } else {
+      lo = mid;
+    }
   }
   return hi;
 }
@@ -240,7 +252,7 @@ Status check_band_inputs(Span<const Vec2<S>> pts, Span<const BandWidth<S>> width
     if (!Scalar<S>::is_finite(w.left) || !Scalar<S>::is_finite(w.right)) return Status::invalid_argument;
     if (w.left < S(0) || w.right < S(0) || !(w.left + w.right > S(0))) return Status::invalid_argument;
   }
-  if (ws.words.size() < band_workspace_words(n) || ws.points.size() < n || ws.vertices.size() < n)
+  if (ws.words.size() < 6 * n || ws.points.size() < n || ws.vertices.size() < n)
     return Status::capacity_exceeded;
   return Status::ok;
 }
@@ -265,15 +277,26 @@ Result<std::uint32_t> count_band_min(Span<const Vec2<S>> pts, Span<const BandWid
 template <class S>
 Result<Fit<S>> fit_band_min_count(Span<const Vec2<S>> pts, Span<const BandWidth<S>> widths,
                                   BandWorkspace<S> ws, Span<Piece<S>> out) {
+  // To 1e-6: each step is a whole search; finer would change no cut.
+  return fit_band_min_count(pts, widths, ws, out, S(1e-6));
+}
+
+template <class S>
+Result<Fit<S>> fit_band_min_count(Span<const Vec2<S>> pts, Span<const BandWidth<S>> widths,
+                                  BandWorkspace<S> ws, Span<Piece<S>> out, S tie_break) {
   if (const Status s = band_detail::check_band_inputs(pts, widths, ws); s != Status::ok) return s;
   const band_detail::Problem<S> pb = band_detail::problem(pts, widths, ws);
+  const auto n = static_cast<std::uint32_t>(pts.size());
+  if (!(tie_break < S(1))) {  // no tie-break: build's own search is the count
+    Result<Fit<S>> fit = band_detail::build(pts, pb, S(1), n, out);
+    if (fit.ok()) fit.value().tol = band_detail::widest(widths);
+    return fit;
+  }
   std::uint32_t* pred = nullptr;
-  const Result<std::uint32_t> count =
-      band_detail::count_at(pb, S(1), static_cast<std::uint32_t>(pts.size()), pred);
+  const Result<std::uint32_t> count = band_detail::count_at(pb, S(1), n, pred);
   if (!count.ok()) return count.status();
-  // The tie-break: the smallest band that still allows this count, to 1e-6
-  // (each step is a whole search; finer would change no cut).
-  const Result<S> best = band_detail::bisect_scale(pb, count.value(), S(1), S(1e-6));
+  // The tie-break: the smallest band that still allows this count.
+  const Result<S> best = band_detail::bisect_scale(pb, count.value(), S(1), tie_break, true);
   if (!best.ok()) return best.status();
   Result<Fit<S>> fit = band_detail::build(pts, pb, best.value(), count.value(), out);
   if (fit.ok()) fit.value().tol = band_detail::widest(widths);  // as asked

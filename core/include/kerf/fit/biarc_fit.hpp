@@ -5,13 +5,15 @@
 // and the two arcs of a biarc share theirs at the joint: the cut has no
 // corner anywhere. Tangents are given or estimated (fit/tangent.hpp).
 //
-// Per pair: the valid joints on the joint circle J (fit/biarc.hpp) are
-// searched by sampling J at `samples` points, each sample tested exactly by
-// fit/biarc_valid.hpp. The fewest biarcs are a shortest path over the valid
-// pairs (breadth-first over the DAG, O(n^2) pair tests at most, O(n)
-// memory; see BiarcOptions::exact); each
-// biarc of the path then gets the joint that minimises its deviation from
-// the polyline, by golden-section refinement around the best valid sample.
+// Per pair, the valid joints on the joint circle J (fit/biarc.hpp) are
+// computed exactly, as intervals of J (fit/biarc_joints.hpp): not sampled,
+// so no valid pair is missed and the count is the fewest. Far pairs are
+// skipped only when a proven bound on how far a biarc can reach rules them
+// out (fit/biarc_reach.hpp). The fewest biarcs are a shortest path over the
+// valid pairs (breadth-first over the DAG, O(n) memory); each biarc of the
+// path then gets the joint inside its valid set that minimises its
+// (sampled) deviation from the polyline, and its certified deviation
+// (fit/biarc_deviation.hpp) is reported.
 // Everything runs in caller-provided storage; see BiarcWorkspace.
 #pragma once
 
@@ -32,24 +34,20 @@ struct BiarcPiece {
   Segment<S> arc[2]{};      // p_first -> joint, joint -> p_last
   Vec2<S> joint{};
   Vec2<S> tangent[3]{};     // unit tangents at p_first, the joint, p_last
-  S error{};                // largest sampled distance from the polyline p_first..p_last
+  S error{};                // certified bound on the distance from the polyline p_first..p_last
 };
 
-// The most joints tried per pair (their biarcs are kept on the stack).
+// The most joints sampled per valid interval when the joint is chosen.
 inline constexpr std::uint32_t kBiarcMaxSamples = 64;
 
 struct BiarcOptions {
-  std::uint32_t samples = 64;  // joints tried per pair on J (1..64), then the finer search
-  // Test every pair (exact over the search). Otherwise a start stops after
-  // `slack` + (its longest valid reach) failed ends in a row: far ends of
-  // a smooth path fail, and testing them all costs O(n^2) pair tests of
-  // O(span) each. The twin tests run exact; on the test curves both give
-  // the same counts.
+  std::uint32_t samples = 16;  // joints scored per valid interval (1..64), then a golden-section search
+  // Test every pair, ignoring the proven reach bound of fit/biarc_reach.hpp
+  // (slow; the tests use it to show the bound changes no count).
   bool exact = false;
-  std::uint32_t slack = 16;
 };
 
-constexpr std::size_t biarc_workspace_words(std::size_t n) { return 2 * n; }
+constexpr std::size_t biarc_workspace_words(std::size_t n) { return 4 * n; }
 
 template <class S>
 struct BiarcWorkspace {
@@ -67,7 +65,7 @@ Result<Fit<S>> fit_biarc_min_count(Span<const Vec2<S>> pts, Span<const Vec2<S>> 
                                    BiarcOptions opts, BiarcWorkspace<S> ws,
                                    Span<BiarcPiece<S>> out);
 
-// The largest sampled distance of biarc b (from p_i to p_j) from the
+// The largest sampled distance of biarc b (from p_i to p_j; used to choose the joint) from the
 // polyline p_i..p_j.
 template <class S>
 S biarc_deviation(Span<const Vec2<S>> pts, std::uint32_t i, std::uint32_t j, const Biarc<S>& b);

@@ -2,34 +2,14 @@
 // per scalar type that instantiates them (src/biarc_double.cpp).
 #pragma once
 
+#include "kerf/fit/biarc_deviation.hpp"
 #include "kerf/fit/biarc_fit.hpp"
-#include "kerf/fit/biarc_valid.hpp"
+#include "kerf/fit/biarc_joints.hpp"
+#include "kerf/fit/biarc_reach.hpp"
 
 namespace kerf::fit {
 
 namespace biarc_detail {
-
-template <class S>
-struct Pair {
-  const BandRegion<S>& region;
-  Span<const Vec2<S>> tangents;
-  std::uint32_t samples;
-  S widest;  // the largest width: R lies within it of the polyline
-
-  S sample(std::uint32_t q) const { return S(2) * (S(q) + S(0.5)) / S(samples); }
-
-  // Some valid joint of p_i -> p_j; its s through `found`. First the
-  // samples; when none is valid, the valid joints may still form an interval
-  // narrower than the samples' spacing (an S-curve fitted closely, J a line),
-  // so around the two local minima of a cheap measure of how near the
-  // biarcs come to the polyline (the joint and the arcs' middles), when the
-  // measure could fall to about the band's width there, a scan 8 times
-  // finer and a golden-section search on the measure look for one, each
-  // probe tested exactly.
-  bool any(std::uint32_t i, std::uint32_t j, S& found) const;
-  bool refine(const BiarcCheck<S>& check, const JointCircle<S>& jc, std::uint32_t i,
-              std::uint32_t j, S* near, S& found) const;
-};
 
 template <class S>
 S point_deviation(Span<const Vec2<S>> pts, std::uint32_t i, std::uint32_t j, Vec2<S> x) {
@@ -54,211 +34,82 @@ S point_deviation(Span<const Vec2<S>> pts, std::uint32_t i, std::uint32_t j, Vec
   return Scalar<S>::sqrt(best);
 }
 
-// The cheap measure of how far the biarc at s strays (huge when it is not
-// one).
+// The deviation used to choose a joint (sampled: the certified one of
+// fit/biarc_deviation.hpp is computed for the result), plus a penalty: an
+// arc of a radius far below the band's width is a corner to the machine
+// (and may be shorter than its resolution), so where the band lets the
+// joint move, radii below the width cost more than any deviation.
 template <class S>
-S nearness(const JointCircle<S>& jc, Span<const Vec2<S>> pts, std::uint32_t i, std::uint32_t j, S s,
-           Biarc<S>& b) {
-  if (!(s > S(0) && s < S(2)) || !jc.biarc(s, b)) return S(1e300);
-  S d = point_deviation(pts, i, j, b.first.b);
-  d = max_of(d, point_deviation(pts, i, j, b.first.at(S(0.5))));
-  return max_of(d, point_deviation(pts, i, j, b.second.at(S(0.5))));
-}
-
-template <class S>
-bool Pair<S>::any(std::uint32_t i, std::uint32_t j, S& found) const {
-  const BiarcCheck<S> check(region, i, j);
-  if (!check.ends(tangents[i], tangents[j])) return false;
-  const JointCircle<S> jc(region.point(i), tangents[i], region.point(j), tangents[j]);
-  // The samples in bit-reversed order (the middle of each of J's arcs
-  // first), tested in growing batches: a valid pair usually succeeds in
-  // the first, and within a batch fit/biarc_valid.hpp builds each cell's
-  // chains once for all.
-  constexpr std::uint32_t kMax = kBiarcMaxSamples;  // (on the stack: ~7 KiB for doubles)
-  Biarc<S> b[kMax];
-  bool alive[kMax];
-  std::uint32_t order[kMax];
-  std::uint32_t m = 0;
-  std::uint32_t bits = 0;
-  while ((1u << bits) < samples) ++bits;
-  for (std::uint32_t t = 0; t < (1u << bits); ++t) {
-    std::uint32_t q = 0;
-    for (std::uint32_t c = 0; c < bits; ++c) q |= ((t >> c) & 1u) << (bits - 1 - c);
-    if (q < samples) order[m++] = q;
-  }
-  // The cheap measure first: a biarc whose joint or middles lie farther than
-  // the widest width from the polyline is outside R (R lies in the band).
-  // Cheaper still: a point farther than that from the box around p_i..p_j
-  // (the measure then takes that distance, plus the width so it fails).
-  const Span<const Vec2<S>> pts(&region.point(0), region.size());
-  Vec2<S> lo = pts[i];
-  Vec2<S> hi = pts[i];
-  for (std::uint32_t k = i + 1; k <= j; ++k) {
-    lo = {min_of(lo.x, pts[k].x), min_of(lo.y, pts[k].y)};
-    hi = {max_of(hi.x, pts[k].x), max_of(hi.y, pts[k].y)};
-  }
-  auto outside = [&](Vec2<S> x) {
-    const S dx = max_of(max_of(lo.x - x.x, x.x - hi.x), S(0));
-    const S dy = max_of(max_of(lo.y - x.y, x.y - hi.y), S(0));
-    return max_of(dx, dy);
-  };
-  S near[kMax];
-  for (std::uint32_t from = 0, size = 4; from < m; from += size, size *= 4) {
-    const std::uint32_t count = from + size < m ? size : m - from;
-    for (std::uint32_t q = 0; q < count; ++q) {
-      const std::uint32_t at = order[from + q];
-      if (!jc.biarc(sample(at), b[q])) {
-        near[at] = S(1e300);
-      } else {
-        const S off = max_of(outside(b[q].first.b),
-                             max_of(outside(b[q].first.at(S(0.5))), outside(b[q].second.at(S(0.5)))));
-        near[at] = off > widest ? off + widest : nearness(jc, pts, i, j, sample(at), b[q]);
-      }
-      alive[q] = near[at] <= widest;
-    }
-    if (check.filter(b, alive, count) == 0) continue;
-    for (std::uint32_t q = 0; q < count; ++q) {
-      if (alive[q]) {
-        found = b[q].s;
-        return true;
-      }
-    }
-  }
-  return refine(check, jc, i, j, near, found);
-}
-
-template <class S>
-bool Pair<S>::refine(const BiarcCheck<S>& check, const JointCircle<S>& jc, std::uint32_t i,
-                     std::uint32_t j, S* near, S& found) const {
-  const Span<const Vec2<S>> pts(&region.point(0), region.size());
-  Biarc<S> b;
-  const std::uint32_t m = samples;
-  // The two local minima that come nearest.
-  std::uint32_t best[2] = {m, m};
-  for (std::uint32_t q = 0; q < m; ++q) {
-    const S l = near[q == 0 ? m - 1 : q - 1];
-    const S r = near[q + 1 == m ? 0 : q + 1];
-    if (near[q] > l || near[q] > r || !(near[q] < S(1e299))) continue;
-    if (best[0] == m || near[q] < near[best[0]]) {
-      best[1] = best[0];
-      best[0] = q;
-    } else if (best[1] == m || near[q] < near[best[1]]) {
-      best[1] = q;
-    }
-  }
-  const S w = widest;
-  const S step = S(2) / S(m);
-  const S g = S(0.6180339887498949);
-  for (std::uint32_t c : best) {
-    if (c == m) continue;
-    // Worth a search only when the measure, falling at the rate it does
-    // towards a neighbour, could come down to about the band's width.
-    const S l = near[c == 0 ? m - 1 : c - 1];
-    const S r = near[c + 1 == m ? 0 : c + 1];
-    const S fall = max_of(Scalar<S>::abs(l - near[c]), Scalar<S>::abs(r - near[c]));
-    if (near[c] - fall > w) continue;
-    const S s0 = sample(c);
-    // A finer scan between the neighbouring samples, then the search.
-    for (int q = 1; q < 16; ++q) {
-      const S x = s0 - step + step * S(q) / S(8);
-      if (nearness(jc, pts, i, j, x, b) <= w && check.valid(b)) {
-        found = x;
-        return true;
-      }
-    }
-    S lo = s0 - step;
-    S hi = s0 + step;
-    S x1 = hi - g * (hi - lo);
-    S x2 = lo + g * (hi - lo);
-    S f1 = nearness(jc, pts, i, j, x1, b);
-    S f2 = nearness(jc, pts, i, j, x2, b);
-    for (int it = 0; it < 40; ++it) {
-      const bool left = f1 < f2;
-      const S x = left ? x1 : x2;
-      if ((left ? f1 : f2) <= w && jc.biarc(x, b) && check.valid(b)) {
-        found = x;
-        return true;
-      }
-      if (left) {
-        hi = x2;
-        x2 = x1;
-        f2 = f1;
-        x1 = hi - g * (hi - lo);
-        f1 = nearness(jc, pts, i, j, x1, b);
-      } else {
-        lo = x1;
-        x1 = x2;
-        f1 = f2;
-        x2 = lo + g * (hi - lo);
-        f2 = nearness(jc, pts, i, j, x2, b);
-      }
-    }
-  }
-  return false;
-}
-
-template <class S>
-S score(const Pair<S>& pr, Span<const Vec2<S>> pts, std::uint32_t i, std::uint32_t j, S s,
-        Biarc<S>& b) {
-  const BiarcCheck<S> check(pr.region, i, j);
-  const JointCircle<S> jc(pts[i], pr.tangents[i], pts[j], pr.tangents[j]);
-  if (!(s > S(0) && s < S(2)) || !jc.biarc(s, b) || !check.valid(b)) return S(1e300);
-  // An arc of a radius far below the band's width is a corner to the
-  // machine (and may be shorter than its resolution): where the band lets
-  // the joint move, radii below the width cost more than any deviation.
+S score(const JointCircle<S>& jc, Span<const Vec2<S>> pts, std::uint32_t i, std::uint32_t j, S s,
+        S widest, Biarc<S>& b) {
+  if (!jc.biarc(s, b)) return S(1e300);
   S tight = S(0);
   const ArcPart<S>* arcs[2] = {&b.first, &b.second};
   for (const ArcPart<S>* arc : arcs) {
     const S k = Scalar<S>::abs(arc->curvature());
-    if (!arc->empty() && k * pr.widest > S(1)) tight = max_of(tight, pr.widest - S(1) / k);
+    if (!arc->empty() && k * widest > S(1)) tight = max_of(tight, widest - S(1) / k);
   }
   return biarc_deviation(pts, i, j, b) + S(1000) * tight;
 }
 
-// The joint of p_i -> p_j (known valid at s0) with the smallest deviation
-// (arcs tighter than the band's width penalised, see score()): the best of
-// the samples, then a golden-section search between its neighbours (an
-// invalid joint scores as infinite).
+// The joint of p_i -> p_j with the smallest score, inside the proven-valid
+// set: `samples` joints spread over each of its intervals, then a
+// golden-section search between the best one's neighbours (kept inside its
+// interval). Validity is exact already; the chosen joint is tested once
+// more in full, and the verified joint s0 stands in should rounding fail it.
 template <class S>
-Biarc<S> best_joint(const Pair<S>& pr, Span<const Vec2<S>> pts, std::uint32_t i, std::uint32_t j,
-                    S s0) {
+Biarc<S> best_joint(const BiarcJoints<S>& bj, const JointSet<S>& set, Span<const Vec2<S>> pts,
+                    std::uint32_t i, std::uint32_t j, std::uint32_t samples, S widest, S s0) {
+  const JointCircle<S>& jc = bj.circle();
   Biarc<S> b;
   Biarc<S> best;
-  S best_dev = score(pr, pts, i, j, s0, best);
-  S best_s = s0;
-  for (std::uint32_t q = 0; q < pr.samples; ++q) {
-    const S dev = score(pr, pts, i, j, pr.sample(q), b);
-    if (dev < best_dev) {
-      best_dev = dev;
-      best_s = b.s;
-      best = b;
+  S best_score = score(jc, pts, i, j, s0, widest, best);
+  for (int q = 0; q < set.size(); ++q) {
+    const S lo = set[q].lo;
+    const S hi = set[q].hi;
+    const S step = (hi - lo) / S(samples);
+    S at = lo + step / S(2);
+    S at_score = S(1e300);
+    for (std::uint32_t c = 0; c < samples; ++c) {
+      const S x = lo + step * (S(c) + S(0.5));
+      const S f = score(jc, pts, i, j, x, widest, b);
+      if (f < at_score) {
+        at_score = f;
+        at = x;
+      }
+    }
+    S a = max_of(lo, at - step);
+    S z = min_of(hi, at + step);
+    const S g = S(0.6180339887498949);
+    S x1 = z - g * (z - a);
+    S x2 = a + g * (z - a);
+    S f1 = score(jc, pts, i, j, x1, widest, b);
+    S f2 = score(jc, pts, i, j, x2, widest, b);
+    for (int it = 0; it < 30; ++it) {
+      if (f1 < f2) {
+        z = x2;
+        x2 = x1;
+        f2 = f1;
+        x1 = z - g * (z - a);
+        f1 = score(jc, pts, i, j, x1, widest, b);
+      } else {
+        a = x1;
+        x1 = x2;
+        f1 = f2;
+        x2 = a + g * (z - a);
+        f2 = score(jc, pts, i, j, x2, widest, b);
+      }
+    }
+    const S xs[2] = {at, f1 < f2 ? x1 : x2};
+    for (const S x : xs) {
+      if (!(x > lo && x < hi)) continue;
+      const S f = score(jc, pts, i, j, x, widest, b);
+      if (f < best_score && bj.check().valid(b)) {
+        best_score = f;
+        best = b;
+      }
     }
   }
-  const S step = S(2) / S(pr.samples);
-  S lo = best_s - step;
-  S hi = best_s + step;
-  const S g = S(0.6180339887498949);
-  S x1 = hi - g * (hi - lo);
-  S x2 = lo + g * (hi - lo);
-  S f1 = score(pr, pts, i, j, x1, b);
-  S f2 = score(pr, pts, i, j, x2, b);
-  for (int it = 0; it < 30; ++it) {
-    if (f1 < f2) {
-      hi = x2;
-      x2 = x1;
-      f2 = f1;
-      x1 = hi - g * (hi - lo);
-      f1 = score(pr, pts, i, j, x1, b);
-    } else {
-      lo = x1;
-      x1 = x2;
-      f1 = f2;
-      x2 = lo + g * (hi - lo);
-      f2 = score(pr, pts, i, j, x2, b);
-    }
-  }
-  const S mid = f1 < f2 ? x1 : x2;
-  if (score(pr, pts, i, j, mid, b) < best_dev) best = b;
   return best;
 }
 
@@ -266,8 +117,11 @@ Biarc<S> best_joint(const Pair<S>& pr, Span<const Vec2<S>> pts, std::uint32_t i,
 
 template <class S>
 S biarc_deviation(Span<const Vec2<S>> pts, std::uint32_t i, std::uint32_t j, const Biarc<S>& b) {
-  // Samples per arc grow with the span, so that each cell sees several.
-  const std::uint32_t m = 8 + 4 * (j - i);
+  // Samples per arc grow with the span, so that each cell sees several, up
+  // to 32 cells' worth: each costs O(j - i), and this only ranks joints (the
+  // reported error is certified, fit/biarc_deviation.hpp).
+  const std::uint32_t span = j - i < 32 ? j - i : 32;
+  const std::uint32_t m = 8 + 4 * span;
   S worst = S(0);
   const ArcPart<S>* arcs[2] = {&b.first, &b.second};
   for (const ArcPart<S>* arc : arcs) {
@@ -311,26 +165,71 @@ Result<Fit<S>> fit_biarc_min_count(Span<const Vec2<S>> pts, Span<const Vec2<S>> 
   constexpr std::uint32_t kNone = 0xffffffffu;
   std::uint32_t* dist = ws.words.data();
   std::uint32_t* prev = dist + n;
+  std::uint32_t* back = prev + n;  // B_j of fit/biarc_reach.hpp
+  std::uint32_t* back_min = back + n;  // min of B over j..n-1
   for (std::size_t k = 0; k < n; ++k) dist[k] = prev[k] = kNone;
   dist[0] = 0;
-  const biarc_detail::Pair<S> pair{region, tangents, opts.samples, widest};
+  if (!opts.exact) {
+    for (std::uint32_t k = 0; k < count; ++k) back[k] = backward_reach(region, k, tangents[k]);
+    back_min[n - 1] = back[n - 1];
+    for (std::uint32_t k = count - 1; k-- > 0;) back_min[k] = back[k] < back_min[k + 1] ? back[k] : back_min[k + 1];
+  }
+  JointSet<S> set;
+  Biarc<S> b;
+  bool overflow = false;
   for (std::uint32_t i = 0; i + 1 < count; ++i) {
     if (dist[i] == kNone) continue;
-    std::uint32_t misses = 0;
-    std::uint32_t reach = 0;
-    for (std::uint32_t j = i + 1; j < count; ++j) {
-      const bool reached = dist[j] != kNone && dist[j] <= dist[i] + 1;
+    // F_i of fit/biarc_reach.hpp, extended only as far as a j needs it.
+    KappaMeet<S> meet;
+    std::uint32_t fwd = i;
+    bool fwd_final = false;
+    auto reaches = [&](std::uint32_t need) {  // F_i >= need?
+      while (fwd < need && !fwd_final) {
+        const std::uint32_t k = fwd + 1;
+        if (meet.meet(pencil_range(region.point(i), tangents[i], region.gate_end(k, -1),
+                                   region.gate_end(k, 1)))) {
+          fwd = k;
+        } else {
+          fwd_final = true;
+        }
+      }
+      return fwd >= need;
+    };
+    // Nothing through p_i can shorten the path to the last point.
+    if (dist[n - 1] != kNone && dist[n - 1] <= dist[i] + 1) continue;
+    // The last point first: if p_i reaches it, no other end of p_i can
+    // lead to a shorter path (a long straight or circular run ends here).
+    auto test = [&](std::uint32_t j) {
+      if (!opts.exact && back[j] > i + 1 && !reaches(back[j] - 1)) return false;
+      const BiarcJoints<S> bj(region, i, j, tangents[i], tangents[j]);
       S s{};
-      if (reached) {
-        // (not tested: neither a hit nor a miss)
-      } else if (pair.any(i, j, s)) {
+      // A valid joint among a few likely ones proves the pair; otherwise
+      // the exact set decides (so no valid pair is missed).
+      bool valid = bj.quick_yes(s);
+      if (!valid) {
+        if (!bj.compute(set)) {
+          overflow = true;
+          return false;
+        }
+        valid = bj.verified(set, s, b);
+      }
+      return valid;
+    };
+    if (test(count - 1)) {
+      dist[n - 1] = dist[i] + 1;
+      prev[n - 1] = i;
+      continue;
+    }
+    if (overflow) return Status::capacity_exceeded;
+    for (std::uint32_t j = i + 1; j + 1 < count; ++j) {
+      // No biarc from p_i reaches any p_j' with j' >= j (B_j' - 1 > F_i).
+      if (!opts.exact && back_min[j] > i + 1 && !reaches(back_min[j] - 1)) break;
+      const bool reached = dist[j] != kNone && dist[j] <= dist[i] + 1;
+      if (!reached && test(j)) {
         dist[j] = dist[i] + 1;
         prev[j] = i;
-        misses = 0;
-        reach = j - i;
-      } else if (!opts.exact && ++misses >= opts.slack + reach) {
-        break;
       }
+      if (overflow) return Status::capacity_exceeded;
       if (region.vertex(j).barrier) break;  // nothing passes through it
     }
   }
@@ -344,19 +243,24 @@ Result<Fit<S>> fit_biarc_min_count(Span<const Vec2<S>> pts, Span<const Vec2<S>> 
   std::uint32_t j = count - 1;
   for (std::uint32_t p = pieces; p-- > 0;) {
     const std::uint32_t i = prev[j];
+    const BiarcJoints<S> bj(region, i, j, tangents[i], tangents[j]);
     S s{};
-    if (!pair.any(i, j, s)) return Status::infeasible;  // cannot happen: it was found valid
-    const Biarc<S> b = biarc_detail::best_joint(pair, pts, i, j, s);
+    if (!bj.compute(set)) return Status::capacity_exceeded;
+    // The pair was found valid: by a joint of its set or by a quick joint.
+    // (Both agree but for rounding, seen only when p_i and p_j nearly
+    // coincide, as where a closed path meets its start.)
+    if (!bj.verified(set, s, b) && !bj.quick_yes(s)) return Status::infeasible;
+    const Biarc<S> best = biarc_detail::best_joint(bj, set, pts, i, j, opts.samples, widest, s);
     BiarcPiece<S>& piece = out[p];
     piece.first = i;
     piece.last = j;
-    piece.arc[0] = b.first.segment();
-    piece.arc[1] = b.second.segment();
-    piece.joint = b.first.b;
+    piece.arc[0] = best.first.segment();
+    piece.arc[1] = best.second.segment();
+    piece.joint = best.first.b;
     piece.tangent[0] = tangents[i];
-    piece.tangent[1] = b.second.t;
-    piece.tangent[2] = b.second.end_tangent();
-    piece.error = biarc_deviation(pts, i, j, b);
+    piece.tangent[1] = best.second.t;
+    piece.tangent[2] = best.second.end_tangent();
+    piece.error = biarc_certified_deviation(region, i, j, best);
     fit.max_error = max_of(fit.max_error, piece.error);
     j = i;
   }

@@ -83,13 +83,16 @@ class BiarcCheck {
     return left;
   }
 
+  // Does either arc meet the boundary segment q1 q2 (but at p_i for the
+  // first arc, p_j for the second)? The one-segment test that
+  // fit/biarc_joints.hpp evaluates between critical joints.
+  bool meets(const Biarc<S>& b, Vec2<S> q1, Vec2<S> q2) const {
+    return hits(b.first, r_.point(i_), q1, q2) || hits(b.second, r_.point(j_), q1, q2);
+  }
+
  private:
   bool crosses_gate(const Biarc<S>& b, std::uint32_t k) const {
     return meets(b, r_.gate_end(k, -1), r_.gate_end(k, 1));
-  }
-
-  bool meets(const Biarc<S>& b, Vec2<S> q1, Vec2<S> q2) const {
-    return hits(b.first, r_.point(i_), q1, q2) || hits(b.second, r_.point(j_), q1, q2);
   }
 
   // Does arc meet the segment q1 q2 anywhere but at `skip`?

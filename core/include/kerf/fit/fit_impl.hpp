@@ -59,18 +59,19 @@ AngleSet<S> make_set(Workspace<S> ws) {
 
 template <class S>
 bool storage_ok(std::size_t n, Workspace<S> ws) {
-  return ws.words.size() >= workspace_words(n) && ws.intervals.size() >= workspace_intervals(n) &&
+  return ws.words.size() >= min_count_words(n) && ws.intervals.size() >= workspace_intervals(n) &&
          ws.points.size() >= workspace_points(n);
 }
 
 // Pieces needed at eps, or 0 when more than `budget`; pred is left in ws.
 template <class S>
 Result<std::uint32_t> count_at(Span<const Vec2<S>> pts, S eps, Method method, Workspace<S> ws,
-                               std::uint32_t budget, std::uint32_t*& pred) {
+                               std::uint32_t budget, std::uint32_t*& pred,
+                               const std::uint32_t* layer_of = nullptr) {
   AngleSet<S> set = make_set(ws);
   Oracle<S> oracle{pts.data(), eps, method, &set};
   const auto n = static_cast<std::uint32_t>(pts.size());
-  const Result<MinCount> r = min_count(n, oracle, ws.words, budget, pred);
+  const Result<MinCount> r = min_count(n, oracle, ws.words, budget, pred, layer_of);
   if (!r.ok()) return r.status();
   return r.value().pieces;
 }
@@ -86,23 +87,40 @@ S bbox_diagonal(Span<const Vec2<S>> pts) {
   return (hi - lo).norm();
 }
 
-// Smallest eps in [floor, hi] (to 1e-9 relative) at which `pieces` suffice,
-// given that they suffice at hi. Returns hi, the tightest known feasible eps.
+inline void copy_words(const std::uint32_t* from, std::uint32_t* to, std::size_t n) {
+  for (std::size_t k = 0; k < n; ++k) to[k] = from[k];
+}
+
+// Smallest eps in [floor, hi] (to `rel` relative) at which `pieces` suffice,
+// given that they suffice at hi. Returns hi, the tightest known feasible eps;
+// hi itself when rel >= 1. `seeded`: the search at hi, with exactly
+// `pieces`, has just run, so its layers bound every later search
+// (min_count's layer_of), kept in the workspace's sixth n words if it has
+// them.
 template <class S>
 Result<S> bisect_tol(Span<const Vec2<S>> pts, std::uint32_t pieces, Method method, Workspace<S> ws,
-                     S hi) {
+                     S hi, S rel, bool seeded = false) {
+  if (!(rel < S(1))) return hi;
   std::uint32_t* pred = nullptr;
+  const std::size_t n = pts.size();
+  std::uint32_t* layers = seeded && ws.words.size() >= 6 * n ? ws.words.data() + 5 * n : nullptr;
+  if (layers != nullptr) copy_words(ws.words.data(), layers, n);
   S lo = bbox_diagonal(pts) * S(1e-12);
   {
-    const Result<std::uint32_t> c = count_at(pts, lo, method, ws, pieces, pred);
+    const Result<std::uint32_t> c = count_at(pts, lo, method, ws, pieces, pred, layers);
     if (!c.ok()) return c.status();
     if (c.value() != 0) return lo;  // exact data: any positive tol is enough
   }
-  for (int it = 0; it < 200 && hi - lo > hi * S(1e-9); ++it) {
+  for (int it = 0; it < 200 && hi - lo > hi * rel; ++it) {
     const S mid = lo + (hi - lo) / S(2);
-    const Result<std::uint32_t> c = count_at(pts, mid, method, ws, pieces, pred);
+    const Result<std::uint32_t> c = count_at(pts, mid, method, ws, pieces, pred, layers);
     if (!c.ok()) return c.status();
-    if (c.value() != 0) hi = mid; else lo = mid;
+    if (c.value() != 0) {
+      hi = mid;
+      if (layers != nullptr) copy_words(ws.words.data(), layers, n);
+    } else {
+      lo = mid;
+    }
   }
   return hi;
 }
@@ -189,15 +207,26 @@ Result<std::uint32_t> count_min(Span<const Vec2<S>> pts, S tol, Method method, W
 template <class S>
 Result<Fit<S>> fit_min_count(Span<const Vec2<S>> pts, S tol, Method method, Workspace<S> ws,
                              Span<Piece<S>> out) {
+  return fit_min_count(pts, tol, method, ws, out, S(1e-9));
+}
+
+template <class S>
+Result<Fit<S>> fit_min_count(Span<const Vec2<S>> pts, S tol, Method method, Workspace<S> ws,
+                             Span<Piece<S>> out, S tie_break) {
   if (const Status s = detail::check_inputs(pts, ws); s != Status::ok) return s;
   if (!detail::tol_ok(tol)) return Status::invalid_argument;
   const detail::Scaled<S> sc = detail::scale_into(pts, ws.points);
+  const auto n = static_cast<std::uint32_t>(pts.size());
+  if (!(tie_break < S(1))) {  // no tie-break: build's own search is the count
+    Result<Fit<S>> fit = detail::build(pts, sc, tol * sc.factor, n, method, ws, out);
+    if (fit.ok()) fit.value().tol = tol;
+    return fit;
+  }
   std::uint32_t* pred = nullptr;
-  const Result<std::uint32_t> count = detail::count_at(
-      sc.pts, tol * sc.factor, method, ws, static_cast<std::uint32_t>(pts.size()), pred);
+  const Result<std::uint32_t> count = detail::count_at(sc.pts, tol * sc.factor, method, ws, n, pred);
   if (!count.ok()) return count.status();
   // The tie-break: the smallest tol that still allows this count.
-  const Result<S> best = detail::bisect_tol(sc.pts, count.value(), method, ws, tol * sc.factor);
+  const Result<S> best = detail::bisect_tol(sc.pts, count.value(), method, ws, tol * sc.factor, tie_break, true);
   if (!best.ok()) return best.status();
   Result<Fit<S>> fit = detail::build(pts, sc, best.value(), count.value(), method, ws, out);
   if (fit.ok()) fit.value().tol = tol;
@@ -217,7 +246,7 @@ Result<Fit<S>> fit_min_error(Span<const Vec2<S>> pts, std::uint32_t pieces, Meth
   const Result<std::uint32_t> c = detail::count_at(sc.pts, hi, method, ws, pieces, pred);
   if (!c.ok()) return c.status();
   if (c.value() == 0) return Status::infeasible;
-  const Result<S> best = detail::bisect_tol(sc.pts, pieces, method, ws, hi);
+  const Result<S> best = detail::bisect_tol(sc.pts, pieces, method, ws, hi, S(1e-9));
   if (!best.ok()) return best.status();
   return detail::build(pts, sc, best.value(), pieces, method, ws, out);
 }

@@ -33,9 +33,20 @@ struct MinCount {
 // i (a monotone necessary condition; the start is then dropped for good). pred receives, for each reached
 // node, the start of its last piece. Stops with pieces = 0 as soon as more
 // than `budget` pieces would be needed.
+//
+// layer_of, if given, names for each node the only layer at which it may be
+// reached (unreached: none), and the search reaches nothing else. A tie-break
+// passes the layers of a wider band that needs exactly `budget` pieces: if
+// feasibility only shrinks with the band, no node is reached sooner in a
+// narrower one, and one reached later cannot finish within the budget (it was
+// at least `budget - layer` pieces from the end), so the verdict "within
+// budget" is the same. Either way a path found is a real path: the
+// restriction can only make a tie-break stop at a wider band, never accept an
+// infeasible one.
 template <class Oracle>
 Result<MinCount> min_count(std::uint32_t n, Oracle& feasible, Span<std::uint32_t> words,
-                           std::uint32_t budget, std::uint32_t*& pred_out) {
+                           std::uint32_t budget, std::uint32_t*& pred_out,
+                           const std::uint32_t* layer_of = nullptr) {
   if (n < 2) return Status::invalid_argument;
   if (words.size() < min_count_words(n)) return Status::capacity_exceeded;
   std::uint32_t* dist = words.data();
@@ -58,6 +69,7 @@ Result<MinCount> min_count(std::uint32_t n, Oracle& feasible, Span<std::uint32_t
     for (std::uint32_t j = cur[0] + 1; j < n && cur_size > 0; ++j) {
       while (below < cur_size && cur[below] < j) ++below;
       if (dist[j] != unreached) continue;
+      if (layer_of != nullptr && layer_of[j] != layer + 1) continue;
       bool died = false;
       for (std::uint32_t s = below; s-- > 0;) {
         const std::uint32_t i = cur[s];

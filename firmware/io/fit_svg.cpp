@@ -1,0 +1,232 @@
+#include "io/fit_svg.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "io/fit_deviation.hpp"
+#include "io/svg_parts.hpp"
+
+// Text is built with += throughout (GCC bug 105329, see fit_output.cpp).
+
+namespace kerf::io {
+
+namespace {
+
+using namespace svg;
+
+// Canvas, in px (the same frame as the run plot's).
+constexpr double kWidth = 960;
+constexpr double kLeft = 80;
+constexpr double kRight = 20;
+constexpr double kPlotWidth = kWidth - kLeft - kRight;
+constexpr double kTitleY = 24;
+constexpr double kLegendY = 46;
+constexpr double kTopY = 70;
+constexpr double kMaxTopHeight = 560;
+constexpr double kPanelGap = 70;
+constexpr double kDevHeight = 200;
+constexpr double kBottomMargin = 50;
+
+// [begin, end) point ranges of the paths.
+std::vector<std::pair<std::size_t, std::size_t>> path_ranges(const FitPlot& plot) {
+  std::vector<std::size_t> b = plot.path_begin;
+  if (b.empty()) b.push_back(0);
+  std::vector<std::pair<std::size_t, std::size_t>> r;
+  for (std::size_t p = 0; p < b.size(); ++p)
+    r.emplace_back(b[p], p + 1 < b.size() ? b[p + 1] : plot.points.size());
+  return r;
+}
+
+void legend(std::string& out, const FitPlot& plot, double band) {
+  double x = kLeft;
+  const auto item = [&](const std::string& swatch, const std::string& name) {
+    out += "<g transform=\"translate(";
+    num(out, x);
+    out += ' ';
+    num(out, kLegendY);
+    out += ")\">";
+    out += swatch;
+    out += "<text class=\"tick\" x=\"26\" y=\"4\">";
+    escaped(out, name);
+    out += "</text></g>\n";
+    x += 30 + 7.0 * static_cast<double>(name.size());
+  };
+  item("<circle class=\"pt key\" cx=\"10\" cy=\"0\" r=\"2\"/>",
+       "input points (" + std::to_string(plot.points.size()) + ")");
+  item("<line x1=\"0\" y1=\"0\" x2=\"20\" y2=\"0\" stroke=\"#1f77b4\" stroke-width=\"2\"/>",
+       "fitted pieces (" + std::to_string(plot.pieces.size()) + ")");
+  std::string name = "tolerance band \u00b1";
+  label(name, band);
+  name += " mm";
+  item("<line class=\"bandkey\" x1=\"0\" y1=\"0\" x2=\"20\" y2=\"0\" stroke-width=\"8\"/>", name);
+  item("<line class=\"dev\" x1=\"0\" y1=\"0\" x2=\"20\" y2=\"0\"/>", "deviation");
+}
+
+// The XY panel; returns its height in px.
+double xy_panel(std::string& out, const FitPlot& plot, double band) {
+  Box box;
+  for (const Vec2<double>& p : plot.points) box.add(p);
+  for (const fit::Piece<double>& pc : plot.pieces) {
+    box.add(pc.segment.start);
+    box.add(pc.segment.end);
+    if (pc.segment.is_arc()) add_arc_points(box, pc.segment);
+  }
+  if (box.empty()) box = {0, 0, 1, 1};
+  // Room for the band around the outermost points.
+  double dx = box.x1 - box.x0, dy = box.y1 - box.y0;
+  const double pad = std::fmax(0.03 * std::fmax(std::fmax(dx, dy), 1e-9), band);
+  box.x0 -= pad;
+  box.x1 += pad;
+  box.y0 -= pad;
+  box.y1 += pad;
+  dx = box.x1 - box.x0;
+  dy = box.y1 - box.y0;
+  const double scale = std::fmin(kPlotWidth / dx, kMaxTopHeight / dy);
+  const double height = dy * scale;
+  const XyMap m{box.x0, box.y1, scale, kLeft, kTopY};
+
+  out += "<g id=\"xy\">\n";
+  frame(out, kLeft, kTopY, dx * scale, height);
+  axis(out, true, box.x0, box.x1, [&](double v) { return m.px(v); }, kTopY + height, kTopY,
+       kTopY + height);
+  axis(out, false, box.y0, box.y1, [&](double v) { return m.py(v); }, kLeft, kLeft,
+       kLeft + dx * scale);
+  text(out, kLeft + dx * scale / 2, kTopY + height + 36, "middle", "x (mm)");
+  std::string rot = " transform=\"rotate(-90 ";
+  num(rot, kLeft - 56);
+  rot += ' ';
+  num(rot, kTopY + height / 2);
+  rot += ")\"";
+  text(out, kLeft - 56, kTopY + height / 2, "middle", "y (mm)", rot.c_str());
+
+  // The band: the input polyline, stroked as wide as the band, under the rest.
+  for (const auto& [b, e] : path_ranges(plot)) {
+    out += "<path class=\"band\" stroke-width=\"";
+    num(out, 2 * band * scale);
+    out += "\" d=\"M";
+    for (std::size_t i = b; i < e; ++i) {
+      if (i > b) out += " L";
+      point(out, m, plot.points[i]);
+    }
+    out += "\"/>\n";
+  }
+  for (std::size_t k = 0; k < plot.pieces.size(); ++k) {
+    out += "<path class=\"piece\" data-piece=\"";
+    out += std::to_string(k + 1);
+    out += "\" stroke=\"";
+    out += kPalette[k % kPalette.size()];
+    out += "\" d=\"";
+    out += piece_d(m, plot.pieces[k].segment);
+    out += "\"/>\n";
+  }
+  for (const Vec2<double>& p : plot.points) {
+    out += "<circle class=\"pt\" cx=\"";
+    num(out, m.px(p.x));
+    out += "\" cy=\"";
+    num(out, m.py(p.y));
+    out += "\" r=\"1.5\"/>\n";
+  }
+  out += "</g>\n";
+  return height;
+}
+
+void deviation_panel(std::string& out, const FitPlot& plot, double top) {
+  const std::vector<double> dev = signed_deviations(plot.points, plot.pieces);
+  // Distance along the input polyline; paths follow on without the gap.
+  std::vector<double> along(plot.points.size(), 0.0);
+  double s = 0.0;
+  for (const auto& [b, e] : path_ranges(plot))
+    for (std::size_t i = b; i < e; ++i) {
+      if (i > b) s += distance(plot.points[i - 1], plot.points[i]);
+      along[i] = s;
+    }
+  const double s1 = s > 0 ? s : 1.0;
+  double lim = std::fmax(plot.tol_left, plot.tol_right);
+  for (const double d : dev)
+    if (std::isfinite(d)) lim = std::fmax(lim, std::fabs(d));
+  lim = lim > 0 ? lim * 1.15 : 1.0;
+  const auto px = [&](double v) { return kLeft + v / s1 * kPlotWidth; };
+  const auto py = [&](double v) { return top + kDevHeight / 2 - v / lim * (kDevHeight / 2); };
+
+  out += "<g id=\"deviation\">\n";
+  frame(out, kLeft, top, kPlotWidth, kDevHeight);
+  axis(out, true, 0.0, s1, px, top + kDevHeight, top, top + kDevHeight);
+  axis(out, false, -lim, lim, py, kLeft, kLeft, kLeft + kPlotWidth);
+  text(out, kLeft + kPlotWidth / 2, top + kDevHeight + 36, "middle", "distance along the path (mm)");
+  std::string rot = " transform=\"rotate(-90 ";
+  num(rot, kLeft - 56);
+  rot += ' ';
+  num(rot, top + kDevHeight / 2);
+  rot += ")\"";
+  text(out, kLeft - 56, top + kDevHeight / 2, "middle", "deviation (mm)", rot.c_str());
+  for (const double v : {plot.tol_left, -plot.tol_right}) {
+    out += "<line class=\"limit\" data-value=\"";
+    label(out, v);
+    out += "\" x1=\"";
+    num(out, kLeft);
+    out += "\" y1=\"";
+    num(out, py(v));
+    out += "\" x2=\"";
+    num(out, kLeft + kPlotWidth);
+    out += "\" y2=\"";
+    num(out, py(v));
+    out += "\"/>\n";
+  }
+  out += "<polyline class=\"dev\" points=\"";
+  for (std::size_t i = 0; i < dev.size(); ++i) {
+    if (i) out += ' ';
+    num(out, px(along[i]));
+    out += ',';
+    num(out, py(dev[i]));  // num() prints a NaN (an uncovered point) as 0
+  }
+  out += "\"/>\n</g>\n";
+}
+
+}  // namespace
+
+std::string format_fit_svg(const FitPlot& plot) {
+  const double band = std::fmax(plot.tol_left, plot.tol_right);
+  std::string body;
+  const double xy_height = xy_panel(body, plot, band);
+  const double dev_top = kTopY + xy_height + kPanelGap;
+  deviation_panel(body, plot, dev_top);
+  const double height = dev_top + kDevHeight + kBottomMargin;
+
+  std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  out += "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"";
+  num(out, kWidth);
+  out += "\" height=\"";
+  num(out, height);
+  out += "\" viewBox=\"0 0 ";
+  num(out, kWidth);
+  out += ' ';
+  num(out, height);
+  out += "\" font-family=\"sans-serif\">\n";
+  out += "<style>"
+         ".frame{fill:none;stroke:#444;stroke-width:1}"
+         ".grid{stroke:#e4e4e4;stroke-width:1}"
+         ".tick{font-size:11px;fill:#333}"
+         ".axis{font-size:13px;fill:#111}"
+         ".title{font-size:16px;font-weight:bold;fill:#111}"
+         ".pt{fill:#333}"
+         ".piece{fill:none;stroke-width:2}"
+         ".band,.bandkey{fill:none;stroke:#f2d98c;stroke-opacity:0.6;stroke-linecap:round;"
+         "stroke-linejoin:round}"
+         ".dev{fill:none;stroke:#1f5fb4;stroke-width:1}"
+         ".limit{stroke:#d00;stroke-width:1;stroke-dasharray:5 4}"
+         "</style>\n";
+  out += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  out += "<text class=\"title\" x=\"";
+  num(out, kLeft);
+  out += "\" y=\"";
+  num(out, kTitleY);
+  out += "\">";
+  escaped(out, plot.title);
+  out += "</text>\n";
+  legend(out, plot, band);
+  out += body;
+  out += "</svg>\n";
+  return out;
+}
+
+}  // namespace kerf::io

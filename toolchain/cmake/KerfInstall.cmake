@@ -1,0 +1,120 @@
+# Installing kerf (`cmake --install`) and packaging it as a .deb (`cpack`).
+#
+# cmake --install BUILD [--prefix P] puts in P:
+#   bin/kerf                              the command
+#   lib/libkerf_core.a, lib/libkerf_io.a  the fitting core and the point-file,
+#                                         fit-output and G-code I/O on top of it
+#   include/kerf/...                      the core's headers (#include <kerf/fit/fit.hpp>)
+#   include/kerf_io/io/...                kerf_io's (#include <io/gcode_reader.hpp>)
+#   lib/cmake/kerf/                       find_package(kerf): kerf::core, kerf::io
+#   lib/pkgconfig/kerf.pc                 pkg-config --cflags --libs kerf
+#   share/kerf/systemd/kerf.service       the unit and the example configuration,
+#   share/doc/kerf/examples/kerf.toml     for reference
+#
+# The .deb (cpack -G DEB in the build folder) installs under /usr and adds, as
+# component "system" (never part of a plain `cmake --install`, so that a local
+# install cannot touch the host's /etc or /lib), the unit as
+# /lib/systemd/system/kerf.service and the configuration as the conffiles
+# /etc/kerf/kerf.toml and /etc/default/kerf.
+#
+# The libraries are static and kerf links them in: the package's run-time
+# dependencies are the C and C++ runtimes, plus libmodbus and libgpiod where
+# the build found them (the host). dpkg-shlibdeps computes Depends for a
+# native build; it cannot read a cross build's target libraries (they are not
+# in the host's dpkg database), so a cross build states them by hand.
+
+include(GNUInstallDirs)
+include(CMakePackageConfigHelpers)
+
+set(kerf_cmake_dir ${CMAKE_INSTALL_LIBDIR}/cmake/kerf)
+set(kerf_io_includedir ${CMAKE_INSTALL_INCLUDEDIR}/kerf_io)
+
+# Consumers compile the headers as C++20, as kerf does.
+target_compile_features(kerf_core INTERFACE cxx_std_20)
+set_target_properties(kerf_core PROPERTIES EXPORT_NAME core)
+set_target_properties(kerf_io PROPERTIES EXPORT_NAME io)
+
+install(TARGETS kerf RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT runtime)
+install(TARGETS kerf_core kerf_io EXPORT kerfTargets
+  ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT dev)
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/core/include/kerf
+  DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} COMPONENT dev)
+file(GLOB kerf_io_headers ${PROJECT_SOURCE_DIR}/firmware/io/*.hpp)
+list(FILTER kerf_io_headers EXCLUDE REGEX "/sim_output\\.hpp$")  # kerf_simjob's, not kerf_io's
+install(FILES ${kerf_io_headers} DESTINATION ${kerf_io_includedir}/io COMPONENT dev)
+
+install(EXPORT kerfTargets NAMESPACE kerf:: DESTINATION ${kerf_cmake_dir} COMPONENT dev)
+configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/kerfConfig.cmake.in
+  ${CMAKE_BINARY_DIR}/pack/kerfConfig.cmake INSTALL_DESTINATION ${kerf_cmake_dir})
+write_basic_package_version_file(${CMAKE_BINARY_DIR}/pack/kerfConfigVersion.cmake
+  COMPATIBILITY SameMinorVersion)
+install(FILES ${CMAKE_BINARY_DIR}/pack/kerfConfig.cmake
+              ${CMAKE_BINARY_DIR}/pack/kerfConfigVersion.cmake
+  DESTINATION ${kerf_cmake_dir} COMPONENT dev)
+
+# kerf.pc finds the prefix from its own place, so that it stays right under
+# any --prefix and inside the .deb.
+file(RELATIVE_PATH kerf_pc_to_prefix /root/${CMAKE_INSTALL_LIBDIR}/pkgconfig /root)
+string(REGEX REPLACE "/$" "" kerf_pc_to_prefix "${kerf_pc_to_prefix}")
+configure_file(${CMAKE_CURRENT_LIST_DIR}/kerf.pc.in ${CMAKE_BINARY_DIR}/pack/kerf.pc @ONLY)
+install(FILES ${CMAKE_BINARY_DIR}/pack/kerf.pc
+  DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig COMPONENT dev)
+
+install(FILES ${PROJECT_SOURCE_DIR}/firmware/systemd/kerf.service
+  DESTINATION ${CMAKE_INSTALL_DATADIR}/kerf/systemd COMPONENT runtime)
+install(FILES ${PROJECT_SOURCE_DIR}/firmware/examples/kerf.toml
+  DESTINATION ${CMAKE_INSTALL_DOCDIR}/examples COMPONENT runtime)
+
+# Only in the package: absolute paths, hence DESTDIR staging (CPACK_SET_DESTDIR).
+install(FILES ${PROJECT_SOURCE_DIR}/firmware/systemd/kerf.service
+  DESTINATION /lib/systemd/system COMPONENT system EXCLUDE_FROM_ALL)
+install(FILES ${PROJECT_SOURCE_DIR}/firmware/examples/kerf.toml
+  DESTINATION /etc/kerf COMPONENT system EXCLUDE_FROM_ALL)
+install(FILES ${CMAKE_CURRENT_LIST_DIR}/kerf.default
+  DESTINATION /etc/default RENAME kerf COMPONENT system EXCLUDE_FROM_ALL)
+
+# --- CPack: one .deb holding every component ---------------------------------
+if(CMAKE_SYSTEM_PROCESSOR MATCHES "^(x86_64|AMD64|amd64)$")
+  set(kerf_deb_arch amd64)
+elseif(CMAKE_SYSTEM_PROCESSOR MATCHES "^(aarch64|arm64)$")
+  set(kerf_deb_arch arm64)
+elseif(CMAKE_SYSTEM_PROCESSOR MATCHES "^arm")
+  set(kerf_deb_arch armhf)
+else()
+  set(kerf_deb_arch ${CMAKE_SYSTEM_PROCESSOR})
+endif()
+set(KERF_DEB_ARCH ${kerf_deb_arch} CACHE INTERNAL "Debian architecture of this build")
+
+set(CPACK_GENERATOR DEB)
+set(CPACK_PACKAGE_NAME kerf)
+set(CPACK_PACKAGE_VENDOR kerf)
+set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
+set(CPACK_PACKAGE_CONTACT "kerf maintainers <kerf@localhost>")
+set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "Controller for NC thermal-cutting machines (plasma, oxy, laser)")
+set(CPACK_PACKAGE_DESCRIPTION
+  "kerf fits cutting paths with the fewest arcs within a tolerance, welds G-code polylines into arcs, and runs jobs on the machine (systemd unit kerf.service). Includes the static libraries, headers, CMake package and pkg-config file.")
+set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
+set(CPACK_INSTALL_PREFIX /usr)  # what the DESTDIR install below uses
+set(CPACK_SET_DESTDIR ON)  # the "system" component installs to /etc and /lib
+set(CPACK_STRIP_FILES ON)
+set(CPACK_DEB_COMPONENT_INSTALL ON)
+set(CPACK_COMPONENTS_GROUPING ALL_COMPONENTS_IN_ONE)
+set(CPACK_COMPONENTS_ALL runtime dev system)
+set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)  # kerf_0.1.0_amd64.deb
+set(CPACK_DEBIAN_PACKAGE_ARCHITECTURE ${kerf_deb_arch})
+set(CPACK_DEBIAN_PACKAGE_SECTION misc)
+set(CPACK_DEBIAN_PACKAGE_HOMEPAGE "https://example.invalid/kerf")
+if(CMAKE_CROSSCOMPILING)
+  # Debian 12's (bookworm's) runtimes, what the cross compiler links against
+  # (pack_deb checks libc6 against the GLIBC_ versions the binary needs);
+  # this build has no libmodbus or libgpiod (KerfDeps.cmake).
+  set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS OFF)
+  set(CPACK_DEBIAN_PACKAGE_DEPENDS "libc6 (>= 2.35), libgcc-s1 (>= 3.0), libstdc++6 (>= 12)")
+  if(NOT KERF_HAVE_MODBUS)
+    message(STATUS "kerf: the ${kerf_deb_arch} .deb's kerf has no `kerf run` (no libmodbus for the target)")
+  endif()
+else()
+  set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
+endif()
+set(CPACK_DEBIAN_PACKAGE_CONTROL_EXTRA ${CMAKE_CURRENT_LIST_DIR}/deb/conffiles)
+include(CPack)
