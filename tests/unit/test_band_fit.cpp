@@ -67,6 +67,69 @@ TEST(BandReference, SharpTurnWithUnequalWidthsKeepsTheArcInTheBand) {
   EXPECT_LE(fit.value().max_error, 1.1682835103669555 * (1 + 1e-9));
 }
 
+// Found by fuzzing (tests/fuzz/corpus/fit_band/sharp_turn_arc_out_of_band):
+// a 140-degree turn at the first inner vertex, tol 1.77 on edges of 1e3 to
+// 7e4. The tie-break's smallest scale (1e-12) left gates below the
+// coordinates' resolution; their ends fell a rounding step beside p1 and p3,
+// and the pair 1..3 passed with a 256-degree arc 44966 out of the band (two
+// pieces instead of three).
+TEST(BandReference, SharpTurnAtTheFirstVertexKeepsThreeLines) {
+  const std::vector<VPoint> p{{7872, -68096}, {8640, -68928}, {-60608, -60608}, {9920, 9920}};
+  const auto w = kerf_test::symmetric_widths(p.size(), 1.7734375);
+  CoreBandFitter core(p, w);
+  const auto fit = core.fit();
+  ASSERT_TRUE(fit.ok()) << kerf::to_string(fit.status());
+  EXPECT_EQ(fit.value().pieces, 3u);
+  const auto report = kerf_test::check_band_fit(p, w, core.pieces(fit.value().pieces), slack_for(p));
+  EXPECT_TRUE(report.ok) << report.why;
+  EXPECT_LE(fit.value().max_error, 1.7734375);
+}
+
+// Found by fuzzing (tests/fuzz/corpus/fit_band/one_sided_sub_ulp_width): a
+// right width of 2e-13 at coordinates of 1.4e4, below their resolution. The
+// chain's end sat a rounding step beside p3, the segment test lost its
+// binding point there, and 1..3 took an arc 1109 from the path in a 62 band.
+// The fit must be the one of a right width of 0.
+TEST(BandReference, OneSidedWidthBelowTheResolutionFitsLikeZero) {
+  const std::vector<VPoint> p{{14624, 1184}, {14528, 1600}, {14384, 1648}, {-272, 1392}, {-3520, -14448}};
+  const double left = 61.999999999999787;
+  const auto w = kerf_test::asymmetric_widths(p.size(), left, 2.1338822635968979e-13);
+  CoreBandFitter core(p, w);
+  const auto fit = core.fit();
+  ASSERT_TRUE(fit.ok()) << kerf::to_string(fit.status());
+  const auto report = kerf_test::check_band_fit(p, w, core.pieces(fit.value().pieces), slack_for(p));
+  EXPECT_TRUE(report.ok) << report.why;
+  EXPECT_LE(fit.value().max_error, left);
+  CoreBandFitter zero(p, kerf_test::asymmetric_widths(p.size(), left, 0.0));
+  const auto z = zero.fit();
+  ASSERT_TRUE(z.ok());
+  EXPECT_EQ(fit.value().pieces, z.value().pieces);
+  EXPECT_NEAR(fit.value().max_error, z.value().max_error, 1e-9 * left);
+}
+
+// Found by fuzzing (tests/fuzz/corpus/fit_band/near_cusp_one_sided_sub_ulp_width):
+// the same widths, and a turn of 179.4 degrees at p9. Its gate runs almost
+// along the edges, so the sub-resolution right width gives a half gate of
+// many ulps: the chain's end is a hair from p9, not a rounding step. The
+// binding point near t = 1 was lost again, and 7..9 took an arc 1408 out.
+TEST(BandReference, NearCuspWithASubResolutionWidthKeepsTheArcInTheBand) {
+  const std::vector<VPoint> p{
+      {-80, -224},    {-176, -144},   {-128, 128},   {-176, -80},    {14624, 880},
+      {14384, 688},   {14144, 960},   {1888, 1760},  {1888, 1888},   {-1296, 1888},
+      {-352, 1872},   {1888, -1296},  {1632, -1808}, {1376, -2320},  {1120, -2832},
+      {880, -3344},   {1888, 1888},   {1888, 1616},  {2048, 1568},   {2224, 1696},
+      {-7584, 640},   {1888, 1888},   {1888, -6432}, {1712, -6528},  {1488, -6080},
+      {-8720, -15088}};
+  const double left = 61.999999999999787;
+  const auto w = kerf_test::asymmetric_widths(p.size(), left, 2.1338822635968979e-13);
+  CoreBandFitter core(p, w);
+  const auto fit = core.fit();
+  ASSERT_TRUE(fit.ok()) << kerf::to_string(fit.status());
+  const auto report = kerf_test::check_band_fit(p, w, core.pieces(fit.value().pieces), slack_for(p));
+  EXPECT_TRUE(report.ok) << report.why;
+  EXPECT_LE(fit.value().max_error, left);
+}
+
 TEST(BandReference, MinErrorIsTheSmallestBandForTheBudget) {
   const auto p = load("parabola.txt");
   CoreBandFitter core(p, kerf_test::symmetric_widths(p.size(), 1.0));

@@ -115,6 +115,44 @@ S smallest_scale(S hi, S widest) {
   }
 }
 
+// How far a point computed next to a or b (p + b g with g below the
+// coordinates' resolution: a gate end, a corner's chord, a tangent point of
+// a sub-ulp width) can lie from it by rounding alone: 16 ulps of the larger
+// coordinate in floating point, 4 steps in fixed point (absolute). The pair
+// test takes such a point as a or b itself (fit/band_pair.hpp).
+template <class S>
+S rounding_reach(Vec2<S> a, Vec2<S> b) {
+  if constexpr (kFloating<S>) {
+    const S big = max_of(max_of(Scalar<S>::abs(a.x), Scalar<S>::abs(a.y)),
+                         max_of(Scalar<S>::abs(b.x), Scalar<S>::abs(b.y)));
+    return S(16) * Scalar<S>::epsilon() * big;
+  } else {
+    (void)a;
+    (void)b;
+    return S(4) * Scalar<S>::epsilon();
+  }
+}
+
+// How close to a or b (along each axis) the end of a chain segment d
+// (= q2 - q1) may lie before the pair test takes it as a or b itself:
+// 2^-26 of the segment, about sqrt(epsilon). There the circle through a, b
+// and a point of the segment is extreme within that fraction of the end,
+// at a double root of the segment test's quadratic, which rounding moves
+// by about sqrt(epsilon): past the end, where it was dropped. The end's
+// limit condition (band_pair.hpp) is then the binding one, to within that
+// fraction of the segment's angle.
+template <class S>
+S segment_end_reach(Vec2<S> d) {
+  const S m = max_of(Scalar<S>::abs(d.x), Scalar<S>::abs(d.y));
+  return m / S(67108864);  // 2^26: exact in fixed point too
+}
+
+// Are p and q within `reach` of each other along both axes?
+template <class S>
+bool within(Vec2<S> p, Vec2<S> q, S reach) {
+  return Scalar<S>::abs(p.x - q.x) <= reach && Scalar<S>::abs(p.y - q.y) <= reach;
+}
+
 // Distance from x to the segment p0 -> p1 (geom/segment.hpp's
 // distance_to_line_segment). In fixed point its squared lengths would
 // quantize a distance below 2^-16 to sqrt of a step, 2^-16 itself (the

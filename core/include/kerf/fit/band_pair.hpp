@@ -64,6 +64,7 @@ class BandPair {
     f_ = band_detail::frame_factor(u);
     u_ = u * f_;
     n_ = u_.perp() * S(orient);
+    reach_ = band_detail::rounding_reach(a_, b_);
   }
 
   // The end conditions alone.
@@ -84,6 +85,14 @@ class BandPair {
     }
     BandChain<S> c;
     r_.chain(k, -orient_, c);
+    // A width below the coordinates' resolution puts the chain's first or
+    // last point a rounding step beside a or b instead of on it. The
+    // segment test then finds its binding point within a step of the end
+    // (t rounds to 0 or 1 and is dropped) and skips the end's limit: arcs
+    // far outside the band passed (tests/fuzz/corpus/fit_band/
+    // sharp_turn_arc_out_of_band, one_sided_sub_ulp_width). Such a point is
+    // the end itself.
+    for (int t = 0; t < c.size; ++t) c.pt[t] = snapped(c.pt[t]);
     // Every point, the one shared with the previous cell too: cells are not
     // visited in order, and the segment test below needs both ends applied.
     for (int t = 0; t < c.size; ++t) outside(range, c.pt[t]);
@@ -158,6 +167,14 @@ class BandPair {
     }
   }
 
+  // q, or a or b when q lies within `reach` of it (at least rounding's).
+  Vec2<S> snapped(Vec2<S> q, S reach = S(0)) const {
+    const S d = max_of(reach, reach_);
+    if (band_detail::within(q, a_, d)) return a_;
+    if (band_detail::within(q, b_, d)) return b_;
+    return q;
+  }
+
   S area(Vec2<S> q) const { return ((q - a_) * f_).dot((q - b_) * f_); }
   // Measured from a, not from the midpoint: (b - a).perp(b - a) is exactly
   // 0 in floating point, so a point on a or b gets exactly w = 0 (no
@@ -178,6 +195,15 @@ class BandPair {
   }
 
   void segment(PsiRange<S>& r, Vec2<S> lo, Vec2<S> hi, Vec2<S> q1, Vec2<S> q2) const {
+    // An end a hair from a or b (a gate end of a sharp turn, whose gate
+    // runs almost along the edges: a sub-resolution width gives a half gate
+    // of many ulps) is a or b itself: the binding point would lie within
+    // rounding of t = 1 and be lost (band_numeric.hpp, segment_end_reach).
+    // Both ends' own conditions were applied in cell().
+    const S near = band_detail::segment_end_reach(q2 - q1);
+    q1 = snapped(q1, near);
+    q2 = snapped(q2, near);
+    if (q1 == q2) return;
     const Vec2<S> dq = q2 - q1;
     const Vec2<S> fq = dq * f_;  // in the pair's frame
     // area and offset of q1, (q1 - mid).dq, |dq|^2, dq.n and 2 (q2 - mid).dq:
@@ -238,6 +264,7 @@ class BandPair {
   Vec2<S> u_{};
   Vec2<S> n_{};
   S f_{};  // the frame's scale: lengths in u_, n_, area and offset are times f_
+  S reach_{};  // rounding's reach around a and b (band_numeric.hpp)
 };
 
 }  // namespace kerf::fit
