@@ -130,6 +130,34 @@ TEST(BandReference, NearCuspWithASubResolutionWidthKeepsTheArcInTheBand) {
   EXPECT_LE(fit.value().max_error, left);
 }
 
+// A closed circle (90 points rounded to 1e-5) at the tol kerf weld's coarse
+// tie-break lands on: the fit is 0..67 (268 degrees) and 67..90. The gate
+// line at 180 degrees meets that circle again next to p_0, where the arc's
+// order parameter is noise; the deviation took that crossing and reported
+// the diameter (1.9988) for an arc inside the band.
+TEST(BandReference, ArcPastAHalfTurnReportsItsTrueDeviation) {
+  std::vector<VPoint> p{{1, 0}};
+  for (int k = 1; k <= 90; ++k) {
+    const double a = 2 * M_PI * k / 90;
+    p.push_back({std::round(std::cos(a) * 1e5) / 1e5, std::round(std::sin(a) * 1e5) / 1e5});
+  }
+  const double tol = 0.000964;
+  const auto w = kerf_test::symmetric_widths(p.size(), tol);
+  CoreBandFitter core(p, w);
+  const auto fit = core.fit(0.1);
+  ASSERT_TRUE(fit.ok()) << kerf::to_string(fit.status());
+  ASSERT_EQ(fit.value().pieces, 2u);
+  bool long_arc = false;
+  for (std::uint32_t k = 0; k < 2; ++k) {
+    long_arc = long_arc || core.piece(k).last - core.piece(k).first > 45;
+    EXPECT_LE(core.piece(k).error, tol) << "piece " << k;
+  }
+  EXPECT_TRUE(long_arc) << "the case needs a piece of more than a half turn";
+  EXPECT_LE(fit.value().max_error, tol);
+  const auto report = kerf_test::check_band_fit(p, w, core.pieces(fit.value().pieces), slack_for(p));
+  EXPECT_TRUE(report.ok) << report.why;
+}
+
 TEST(BandReference, MinErrorIsTheSmallestBandForTheBudget) {
   const auto p = load("parabola.txt");
   CoreBandFitter core(p, kerf_test::symmetric_widths(p.size(), 1.0));

@@ -31,6 +31,11 @@ class CoreBandFitter {
     return kerf::fit::fit_band_min_count<double>(span(), widths(), storage_.workspace(),
                                                  storage_.pieces());
   }
+  // The same with the tie-break's precision (kerf weld's coarse 0.1).
+  kerf::Result<kerf::fit::Fit<double>> fit(double tie_break) {
+    return kerf::fit::fit_band_min_count<double>(span(), widths(), storage_.workspace(),
+                                                 storage_.pieces(), tie_break);
+  }
   kerf::Result<kerf::fit::Fit<double>> budget(std::uint32_t pieces) {
     return kerf::fit::fit_band_min_error<double>(span(), widths(), pieces, storage_.workspace(),
                                                  storage_.pieces());

@@ -140,12 +140,31 @@ S band_deviation(const BandRegion<S>& r, std::uint32_t i, std::uint32_t j, Vec2<
       Vec2<S> hits[2];
       const int m = arc.meet_line(p1, r.vertex(k + 1).b, hits);
       const S s_from = arc.sigma(from);
+      // A valid piece meets the gate segment itself exactly once; the gate
+      // line's other crossing lies off the segment and, on an arc of more
+      // than a half turn, can sit next to p_i, where sigma is noise (0 or a
+      // full turn). So a crossing on the segment wins over one off it.
+      const Vec2<S> e0 = r.gate_end(k + 1, orient);
+      const Vec2<S> e1 = r.gate_end(k + 1, -orient);
+      const S f = band_detail::frame_factor(e1 - e0);
+      const Vec2<S> ge = (e1 - e0) * f;
+      const S gl2 = ge.norm2();
+      auto on_gate = [&](Vec2<S> x) {
+        if (!(gl2 > S(0))) return true;
+        const S t = ((x - e0) * f).dot(ge);
+        const S slack = gl2 / S(64);
+        return !(t < -slack) && !(t > gl2 + slack);
+      };
       bool found = false;
+      bool found_on_gate = false;
       for (int t = 0; t < m; ++t) {
         const S s = arc.sigma(hits[t]);
-        if (arc.on_arc(hits[t]) && !(s < s_from) && (!found || s < arc.sigma(to))) {
+        if (!arc.on_arc(hits[t]) || s < s_from) continue;
+        const bool g = on_gate(hits[t]);
+        if (!found || (g && !found_on_gate) || (g == found_on_gate && s < arc.sigma(to))) {
           to = hits[t];
           found = true;
+          found_on_gate = g;
         }
       }
     }
