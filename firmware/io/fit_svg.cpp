@@ -71,33 +71,11 @@ double xy_panel(std::string& out, const FitPlot& plot, double band) {
     box.add(pc.segment.end);
     if (pc.segment.is_arc()) add_arc_points(box, pc.segment);
   }
-  if (box.empty()) box = {0, 0, 1, 1};
   // Room for the band around the outermost points.
-  double dx = box.x1 - box.x0, dy = box.y1 - box.y0;
-  const double pad = std::fmax(0.03 * std::fmax(std::fmax(dx, dy), 1e-9), band);
-  box.x0 -= pad;
-  box.x1 += pad;
-  box.y0 -= pad;
-  box.y1 += pad;
-  dx = box.x1 - box.x0;
-  dy = box.y1 - box.y0;
-  const double scale = std::fmin(kPlotWidth / dx, kMaxTopHeight / dy);
-  const double height = dy * scale;
-  const XyMap m{box.x0, box.y1, scale, kLeft, kTopY};
-
-  out += "<g id=\"xy\">\n";
-  frame(out, kLeft, kTopY, dx * scale, height);
-  axis(out, true, box.x0, box.x1, [&](double v) { return m.px(v); }, kTopY + height, kTopY,
-       kTopY + height);
-  axis(out, false, box.y0, box.y1, [&](double v) { return m.py(v); }, kLeft, kLeft,
-       kLeft + dx * scale);
-  text(out, kLeft + dx * scale / 2, kTopY + height + 36, "middle", "x (mm)");
-  std::string rot = " transform=\"rotate(-90 ";
-  num(rot, kLeft - 56);
-  rot += ' ';
-  num(rot, kTopY + height / 2);
-  rot += ")\"";
-  text(out, kLeft - 56, kTopY + height / 2, "middle", "y (mm)", rot.c_str());
+  const XyPanel panel = xy_panel_frame(out, box, band, kLeft, kTopY, kPlotWidth, kMaxTopHeight);
+  const XyMap& m = panel.map;
+  const double scale = m.scale;
+  const double height = panel.height;
 
   // The band: the input polyline, stroked as wide as the band, under the rest.
   for (const auto& [b, e] : path_ranges(plot)) {

@@ -133,32 +133,10 @@ double xy_panel(std::string& out, const RunPlot& plot, const std::vector<Run>& r
     if (s.is_arc()) add_arc_points(box, s);
   }
   for (const TraceSample& t : plot.trace) box.add(t.pos);
-  if (box.empty()) box = {0, 0, 1, 1};
-  double dx = box.x1 - box.x0, dy = box.y1 - box.y0;
-  const double pad = 0.03 * std::fmax(std::fmax(dx, dy), 1e-9);
-  box.x0 -= pad;
-  box.x1 += pad;
-  box.y0 -= pad;
-  box.y1 += pad;
-  dx = box.x1 - box.x0;
-  dy = box.y1 - box.y0;
-  const double scale = std::fmin(kPlotWidth / dx, kMaxTopHeight / dy);
-  const double height = dy * scale;
-  const XyMap m{box.x0, box.y1, scale, kLeft, kTopY};
-
-  out += "<g id=\"xy\">\n";
-  frame(out, kLeft, kTopY, dx * scale, height);
-  axis(out, true, box.x0, box.x1, [&](double v) { return m.px(v); }, kTopY + height, kTopY,
-       kTopY + height);
-  axis(out, false, box.y0, box.y1, [&](double v) { return m.py(v); }, kLeft, kLeft,
-       kLeft + dx * scale);
-  text(out, kLeft + dx * scale / 2, kTopY + height + 36, "middle", "x (mm)");
-  std::string ylabel_pos = " transform=\"rotate(-90 ";
-  num(ylabel_pos, kLeft - 56);
-  ylabel_pos += ' ';
-  num(ylabel_pos, kTopY + height / 2);
-  ylabel_pos += ")\"";
-  text(out, kLeft - 56, kTopY + height / 2, "middle", "y (mm)", ylabel_pos.c_str());
+  const XyPanel panel = xy_panel_frame(out, box, 0.0, kLeft, kTopY, kPlotWidth, kMaxTopHeight);
+  const XyMap& m = panel.map;
+  const double scale = m.scale;
+  const double height = panel.height;
 
   // The band under the pieces, when it is wide enough to see.
   const double band_px = 2 * plot.tol * scale;

@@ -161,4 +161,34 @@ void text(std::string& out, double x, double y, const char* anchor, const std::s
   out += "</text>\n";
 }
 
+XyPanel xy_panel_frame(std::string& out, Box box, double min_pad, double left, double top,
+                       double max_w, double max_h) {
+  if (box.empty()) box = {0, 0, 1, 1};
+  double dx = box.x1 - box.x0, dy = box.y1 - box.y0;
+  const double pad = std::fmax(0.03 * std::fmax(std::fmax(dx, dy), 1e-9), min_pad);
+  box.x0 -= pad;
+  box.x1 += pad;
+  box.y0 -= pad;
+  box.y1 += pad;
+  dx = box.x1 - box.x0;
+  dy = box.y1 - box.y0;
+  const double scale = std::fmin(max_w / dx, max_h / dy);
+  const XyPanel p{{box.x0, box.y1, scale, left, top}, dx * scale, dy * scale};
+  const XyMap& m = p.map;
+
+  out += "<g id=\"xy\">\n";
+  frame(out, left, top, p.width, p.height);
+  axis(out, true, box.x0, box.x1, [&](double v) { return m.px(v); }, top + p.height, top,
+       top + p.height);
+  axis(out, false, box.y0, box.y1, [&](double v) { return m.py(v); }, left, left, left + p.width);
+  text(out, left + p.width / 2, top + p.height + 36, "middle", "x (mm)");
+  std::string rot = " transform=\"rotate(-90 ";
+  num(rot, left - 56);
+  rot += ' ';
+  num(rot, top + p.height / 2);
+  rot += ")\"";
+  text(out, left - 56, top + p.height / 2, "middle", "y (mm)", rot.c_str());
+  return p;
+}
+
 }  // namespace kerf::io::svg

@@ -99,6 +99,18 @@ void axis(std::string& out, bool horizontal, double lo, double hi, ToPx to_px, d
 }
 
 void frame(std::string& out, double x, double y, double w, double h);
+// The XY panel's opening: `<g id="xy">`, its frame, axes and labels, for
+// `box` padded by 3% of its size or `min_pad`, whichever is more, scaled to
+// fit max_w x max_h px at (left, top). The caller draws into it and closes
+// the group.
+struct XyPanel {
+  XyMap map;
+  double width;
+  double height;
+};
+XyPanel xy_panel_frame(std::string& out, Box box, double min_pad, double left, double top,
+                       double max_w, double max_h);
+
 void text(std::string& out, double x, double y, const char* anchor, const std::string& s,
           const char* extra = "");
 
