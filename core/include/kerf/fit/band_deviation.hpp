@@ -125,6 +125,32 @@ class ArcProbe {
   S psi_{};
 };
 
+// The largest distance from the stretch [from, to] of `arc` to the segment
+// p0 p1 (see the top of this file for why these candidates suffice).
+template <class S>
+S stretch_to_edge(const ArcProbe<S>& arc, Vec2<S> from, Vec2<S> to, Vec2<S> p0, Vec2<S> p1) {
+  const S lo = arc.sigma(from);
+  const S hi = arc.sigma(to);
+  S worst = max_of(band_detail::distance_to_edge(p0, p1, from), band_detail::distance_to_edge(p0, p1, to));
+  if (arc.line()) return worst;  // a line's distance to a segment is convex
+  auto consider = [&](Vec2<S> x) {
+    const S s = arc.sigma(x);
+    if (!(s < lo) && !(s > hi)) worst = max_of(worst, band_detail::distance_to_edge(p0, p1, x));
+  };
+  const Vec2<S> e = (p1 - p0) * (S(1) / band_detail::length(p1 - p0));
+  Vec2<S> pts[2];
+  const Vec2<S> ends[2] = {p0, p1};
+  for (const Vec2<S>& base : ends) {
+    const int m = arc.meet_line(base, e.perp(), pts);
+    for (int t = 0; t < m; ++t) consider(pts[t]);
+    Vec2<S> far{};
+    if (arc.farthest_from(base, far)) consider(far);
+  }
+  const int m = arc.parallel_to(e, pts);
+  for (int t = 0; t < m; ++t) consider(pts[t]);
+  return worst;
+}
+
 // The deviation of the piece p_i -> p_j of region R with direction d and
 // orientation orient (see fit/band_pair.hpp), in R's units.
 template <class S>
@@ -168,27 +194,7 @@ S band_deviation(const BandRegion<S>& r, std::uint32_t i, std::uint32_t j, Vec2<
         }
       }
     }
-    const S lo = arc.sigma(from);
-    const S hi = arc.sigma(to);
-    auto consider = [&](Vec2<S> x) {
-      const S s = arc.sigma(x);
-      if (!(s < lo) && !(s > hi)) worst = max_of(worst, band_detail::distance_to_edge(p0, p1, x));
-    };
-    worst = max_of(worst, band_detail::distance_to_edge(p0, p1, from));
-    worst = max_of(worst, band_detail::distance_to_edge(p0, p1, to));
-    if (!arc.line()) {
-      const Vec2<S> e = (p1 - p0) * (S(1) / band_detail::length(p1 - p0));
-      Vec2<S> pts[2];
-      const Vec2<S> ends[2] = {p0, p1};
-      for (const Vec2<S>& base : ends) {
-        const int m = arc.meet_line(base, e.perp(), pts);
-        for (int t = 0; t < m; ++t) consider(pts[t]);
-        Vec2<S> far{};
-        if (arc.farthest_from(base, far)) consider(far);
-      }
-      const int m = arc.parallel_to(e, pts);
-      for (int t = 0; t < m; ++t) consider(pts[t]);
-    }
+    worst = max_of(worst, stretch_to_edge(arc, from, to, p0, p1));
     from = to;
   }
   return worst;

@@ -46,32 +46,6 @@ ArcProbe<S> probe_of(const ArcPart<S>& arc, bool& straight, S& sagitta) {
   return ArcProbe<S>(arc.a, arc.b, d, orient);
 }
 
-// The largest distance from the stretch [from, to] of `arc` (sigma lo..hi)
-// to the segment p0 p1.
-template <class S>
-S stretch_to_edge(const ArcProbe<S>& arc, Vec2<S> from, Vec2<S> to, Vec2<S> p0, Vec2<S> p1) {
-  const S lo = arc.sigma(from);
-  const S hi = arc.sigma(to);
-  S worst = max_of(distance_to_line_segment(p0, p1, from), distance_to_line_segment(p0, p1, to));
-  if (arc.line()) return worst;  // a line's distance to a segment is convex
-  auto consider = [&](Vec2<S> x) {
-    const S s = arc.sigma(x);
-    if (!(s < lo) && !(s > hi)) worst = max_of(worst, distance_to_line_segment(p0, p1, x));
-  };
-  const Vec2<S> e = (p1 - p0) * (S(1) / (p1 - p0).norm());
-  Vec2<S> pts[2];
-  const Vec2<S> ends[2] = {p0, p1};
-  for (const Vec2<S>& base : ends) {
-    const int m = arc.meet_line(base, e.perp(), pts);
-    for (int t = 0; t < m; ++t) consider(pts[t]);
-    Vec2<S> far{};
-    if (arc.farthest_from(base, far)) consider(far);
-  }
-  const int m = arc.parallel_to(e, pts);
-  for (int t = 0; t < m; ++t) consider(pts[t]);
-  return worst;
-}
-
 // One arc of the biarc; gate_a is the gate at its start (-1 when the start
 // is the joint), gate_b the gate at its end (likewise).
 template <class S>
