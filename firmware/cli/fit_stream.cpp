@@ -48,7 +48,12 @@ bool parse_window(const std::string& text, std::uint32_t& out, std::string& erro
 }
 
 std::string point_text(Vec2<double> p) {
-  return "(" + io::format_number(p.x) + "," + io::format_number(p.y) + ")";
+  std::string s = "(";  // built by += (armhf GCC 12 warns falsely on "literal" + string&&)
+  s += io::format_number(p.x);
+  s += ',';
+  s += io::format_number(p.y);
+  s += ')';
+  return s;
 }
 
 // Writes one piece in the esgi format's line form, and flushes it.
