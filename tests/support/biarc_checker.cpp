@@ -94,10 +94,15 @@ BandReport check_biarc(const std::vector<VPoint>& pts, const std::vector<VPoint>
     const double r2 = dist({pc->ex, pc->ey}, {pc->cx, pc->cy});
     if (std::abs(r1 - r2) > 1e-9 * std::max(r1, scale)) return fail("unequal radii");
   }
-  const VPoint t0 = piece_tangent(b.a1, false);
-  const VPoint tj1 = piece_tangent(b.a1, true);
-  const VPoint tj2 = piece_tangent(b.a2, false);
-  const VPoint t1 = piece_tangent(b.a2, true);
+  // A joint on p_i or p_j (the single-circle case) leaves one part a point:
+  // it has no tangent, and the other part must meet both t_i and t_j.
+  auto is_point = [&](const VPiece& pc) { return !pc.arc && dist({pc.sx, pc.sy}, {pc.ex, pc.ey}) <= eps; };
+  const bool p1 = is_point(b.a1), p2 = is_point(b.a2);
+  if (p1 && p2) return fail("both parts are points");
+  const VPoint t0 = p1 ? piece_tangent(b.a2, false) : piece_tangent(b.a1, false);
+  const VPoint t1 = p2 ? piece_tangent(b.a1, true) : piece_tangent(b.a2, true);
+  const VPoint tj1 = p1 ? t0 : piece_tangent(b.a1, true);
+  const VPoint tj2 = p2 ? t1 : piece_tangent(b.a2, false);
   if (angle_between(t0, tangents[i]) > max_turn) return fail("start tangent is not t_i");
   if (angle_between(t1, tangents[j]) > max_turn) return fail("end tangent is not t_j");
   if (angle_between(tj1, tj2) > max_turn) return fail("corner at the joint");
