@@ -170,37 +170,14 @@ std::string format_fit_svg(const FitPlot& plot) {
   deviation_panel(body, plot, dev_top);
   const double height = dev_top + kDevHeight + kBottomMargin;
 
-  std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-  out += "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"";
-  num(out, kWidth);
-  out += "\" height=\"";
-  num(out, height);
-  out += "\" viewBox=\"0 0 ";
-  num(out, kWidth);
-  out += ' ';
-  num(out, height);
-  out += "\" font-family=\"sans-serif\">\n";
-  out += "<style>"
-         ".frame{fill:none;stroke:#444;stroke-width:1}"
-         ".grid{stroke:#e4e4e4;stroke-width:1}"
-         ".tick{font-size:11px;fill:#333}"
-         ".axis{font-size:13px;fill:#111}"
-         ".title{font-size:16px;font-weight:bold;fill:#111}"
-         ".pt{fill:#333}"
-         ".piece{fill:none;stroke-width:2}"
-         ".band,.bandkey{fill:none;stroke:#f2d98c;stroke-opacity:0.6;stroke-linecap:round;"
-         "stroke-linejoin:round}"
-         ".dev{fill:none;stroke:#1f5fb4;stroke-width:1}"
-         ".limit{stroke:#d00;stroke-width:1;stroke-dasharray:5 4}"
-         "</style>\n";
-  out += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-  out += "<text class=\"title\" x=\"";
-  num(out, kLeft);
-  out += "\" y=\"";
-  num(out, kTitleY);
-  out += "\">";
-  escaped(out, plot.title);
-  out += "</text>\n";
+  std::string out;
+  open_document(out, kWidth, height,
+                ".pt{fill:#333}"
+                ".band,.bandkey{fill:none;stroke:#f2d98c;stroke-opacity:0.6;stroke-linecap:round;"
+                "stroke-linejoin:round}"
+                ".dev{fill:none;stroke:#1f5fb4;stroke-width:1}"
+                ".limit{stroke:#d00;stroke-width:1;stroke-dasharray:5 4}",
+                plot.title, kLeft, kTitleY);
   legend(out, plot, band);
   out += body;
   out += "</svg>\n";

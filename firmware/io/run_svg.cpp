@@ -264,39 +264,16 @@ std::string format_run_svg(const RunPlot& plot) {
   speed_panel(body, plot.trace, runs, speed_top);
   const double height = speed_top + kSpeedHeight + kBottomMargin;
 
-  std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-  out += "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"";
-  num(out, kWidth);
-  out += "\" height=\"";
-  num(out, height);
-  out += "\" viewBox=\"0 0 ";
-  num(out, kWidth);
-  out += ' ';
-  num(out, height);
-  out += "\" font-family=\"sans-serif\">\n";
-  out += "<style>"
-         ".frame{fill:none;stroke:#444;stroke-width:1}"
-         ".grid{stroke:#e4e4e4;stroke-width:1}"
-         ".tick{font-size:11px;fill:#333}"
-         ".axis{font-size:13px;fill:#111}"
-         ".title{font-size:16px;font-weight:bold;fill:#111}"
-         ".pt{fill:#555}"
-         ".piece{fill:none;stroke-width:2}"
-         ".band,.band path{fill:none;stroke:#f2d98c;stroke-opacity:0.6;stroke-linecap:round}"
-         ".cut{fill:none;stroke:#222;stroke-width:0.75}"
-         ".rapid{fill:none;stroke:#999;stroke-width:1;stroke-dasharray:5 4}"
-         ".pierce{fill:none;stroke:#d00;stroke-width:1.5}"
-         ".on{fill:#ffe0b0;stroke:none}"
-         ".speed{fill:none;stroke:#1f5fb4;stroke-width:1}"
-         "</style>\n";
-  out += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-  out += "<text class=\"title\" x=\"";
-  num(out, kLeft);
-  out += "\" y=\"";
-  num(out, kTitleY);
-  out += "\">";
-  escaped(out, plot.title);
-  out += "</text>\n";
+  std::string out;
+  open_document(out, kWidth, height,
+                ".pt{fill:#555}"
+                ".band,.band path{fill:none;stroke:#f2d98c;stroke-opacity:0.6;stroke-linecap:round}"
+                ".cut{fill:none;stroke:#222;stroke-width:0.75}"
+                ".rapid{fill:none;stroke:#999;stroke-width:1;stroke-dasharray:5 4}"
+                ".pierce{fill:none;stroke:#d00;stroke-width:1.5}"
+                ".on{fill:#ffe0b0;stroke:none}"
+                ".speed{fill:none;stroke:#1f5fb4;stroke-width:1}",
+                plot.title, kLeft, kTitleY);
   legend(out, plot);
   out += body;
   out += "</svg>\n";

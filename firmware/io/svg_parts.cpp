@@ -191,4 +191,35 @@ XyPanel xy_panel_frame(std::string& out, Box box, double min_pad, double left, d
   return p;
 }
 
+void open_document(std::string& out, double width, double height, const char* extra_style,
+                   const std::string& title, double x, double y) {
+  out += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  out += "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"";
+  num(out, width);
+  out += "\" height=\"";
+  num(out, height);
+  out += "\" viewBox=\"0 0 ";
+  num(out, width);
+  out += ' ';
+  num(out, height);
+  out += "\" font-family=\"sans-serif\">\n";
+  out += "<style>"
+         ".frame{fill:none;stroke:#444;stroke-width:1}"
+         ".grid{stroke:#e4e4e4;stroke-width:1}"
+         ".tick{font-size:11px;fill:#333}"
+         ".axis{font-size:13px;fill:#111}"
+         ".title{font-size:16px;font-weight:bold;fill:#111}"
+         ".piece{fill:none;stroke-width:2}";
+  out += extra_style;
+  out += "</style>\n";
+  out += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  out += "<text class=\"title\" x=\"";
+  num(out, x);
+  out += "\" y=\"";
+  num(out, y);
+  out += "\">";
+  escaped(out, title);
+  out += "</text>\n";
+}
+
 }  // namespace kerf::io::svg

@@ -98,6 +98,11 @@ void axis(std::string& out, bool horizontal, double lo, double hi, ToPx to_px, d
   }
 }
 
+// The document's opening: the XML and <svg> header, the style rules both
+// plots share plus `extra_style`, a white background and the title at
+// (x, y). The caller appends the panels and "</svg>".
+void open_document(std::string& out, double width, double height, const char* extra_style,
+                   const std::string& title, double x, double y);
 void frame(std::string& out, double x, double y, double w, double h);
 // The XY panel's opening: `<g id="xy">`, its frame, axes and labels, for
 // `box` padded by 3% of its size or `min_pad`, whichever is more, scaled to
