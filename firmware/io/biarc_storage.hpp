@@ -10,21 +10,26 @@
 
 namespace kerf::io {
 
-class BiarcStorage {
+template <class S>
+class BasicBiarcStorage {
  public:
-  explicit BiarcStorage(std::size_t n)
-      : words_(fit::biarc_workspace_words(n)), vertices_(n), pieces_(n > 1 ? n - 1 : 1) {}
+  explicit BasicBiarcStorage(std::size_t n)
+      : words_(fit::biarc_workspace_words(n)), vertices_(n), points_(n), pieces_(n > 1 ? n - 1 : 1) {}
 
-  fit::BiarcWorkspace<double> workspace() {
-    return {{words_.data(), words_.size()}, {vertices_.data(), vertices_.size()}};
+  fit::BiarcWorkspace<S> workspace() {
+    return {{words_.data(), words_.size()},
+            {vertices_.data(), vertices_.size()},
+            {points_.data(), points_.size()}};
   }
-  Span<fit::BiarcPiece<double>> pieces() { return {pieces_.data(), pieces_.size()}; }
+  Span<fit::BiarcPiece<S>> pieces() { return {pieces_.data(), pieces_.size()}; }
 
  private:
   std::vector<std::uint32_t> words_;
-  std::vector<fit::BandVertex<double>> vertices_;
-  std::vector<fit::BiarcPiece<double>> pieces_;
+  std::vector<fit::BandVertex<S>> vertices_;
+  std::vector<Vec2<S>> points_;
+  std::vector<fit::BiarcPiece<S>> pieces_;
 };
+using BiarcStorage = BasicBiarcStorage<double>;
 
 // The estimated unit tangents of pts (fit/tangent.hpp).
 inline std::vector<Vec2<double>> estimated_tangents(const std::vector<Vec2<double>>& pts) {

@@ -27,6 +27,7 @@
 // has both tangents, that circle is J and every joint splits the same arc.
 #pragma once
 
+#include "kerf/fit/biarc_numeric.hpp"
 #include "kerf/fit/tangent.hpp"
 #include "kerf/geom/segment.hpp"
 
@@ -40,8 +41,7 @@ struct ArcPart {
 
   S curvature() const {
     const Vec2<S> c = b - a;
-    const S l2 = c.norm2();
-    return l2 > S(0) ? S(2) * t.cross(c) / l2 : S(0);
+    return c.x == S(0) && c.y == S(0) ? S(0) : biarc_detail::pencil_kappa(t, c);
   }
   Vec2<S> end_tangent() const { return reflect_in_chord(t, a, b); }
   bool empty() const { return a == b; }
@@ -50,7 +50,9 @@ struct ArcPart {
   // comparable only with other points of the same circle. A pseudo-angle of
   // half the turn for an arc, the distance along t for a line.
   S position(Vec2<S> x) const {
-    const Vec2<S> v = x - a;
+    // Scaled (exactly, by a power of two; fixed point only): the result is
+    // a ratio, and short offsets would keep few bits.
+    const Vec2<S> v = (x - a) * unit_scale(x - a, x - a);
     const S k = curvature();
     const S px = v.dot(t);
     if (k == S(0)) return px;
@@ -62,20 +64,34 @@ struct ArcPart {
   // The point a fraction u in [0, 1] of the way (not by length: the chord's
   // direction from a turns evenly in u between t and the chord).
   Vec2<S> at(S u) const {
-    const Vec2<S> c = b - a;
+    // Homogeneous in the chord: computed on it scaled to about 1 (fixed
+    // point; the factor is 1 in floating point), then scaled back.
+    const S f = unit_scale(b - a, b - a);
+    const Vec2<S> c = (b - a) * f;
     const S tc = t.cross(c);
-    if (tc == S(0)) return a + c * u;
+    if (tc == S(0)) return a + (b - a) * u;
     const Vec2<S> v = t * ((S(1) - u) * c.norm()) + c * u;
     // chord length 2 sin(alpha) / |kappa| along v, with kappa = 2 tc / |c|^2
-    return a + v * (t.cross(v) * c.norm2() / (tc * v.norm2()));
+    return a + v * (t.cross(v) * c.norm2() / (tc * v.norm2()) / f);
   }
 
   // The arc as a path segment: a line when the sagitta would be below
   // 1e-12 of the chord.
-  Segment<S> segment() const {
+  // In fixed point a line also when the arc turns by less than 2^-24 rad
+  // (it leaves its chord by less than 2^-26 of the chord, a few steps of
+  // the scaled problem) or its radius reaches max_radius (its centre would
+  // not be representable where the caller takes it).
+  Segment<S> segment(S max_radius = Scalar<S>::infinity()) const {
     const Vec2<S> c = b - a;
     const S k = curvature();
-    if (Scalar<S>::abs(k) * c.norm() < S(1e-12)) return Segment<S>::line(a, b);
+    if constexpr (biarc_detail::kFloating<S>) {
+      (void)max_radius;
+      if (Scalar<S>::abs(k) * c.norm() < S(1e-12)) return Segment<S>::line(a, b);
+    } else {
+      const S ak = Scalar<S>::abs(k);
+      if (ak * band_detail::length(c) < S(1.0 / 16777216.0) || !(ak * max_radius > S(1)))
+        return Segment<S>::line(a, b);
+    }
     return Segment<S>::arc(a, b, a + t.perp() * (S(1) / k), k > S(0) ? 1 : -1);
   }
 };
@@ -121,14 +137,17 @@ class JointCircle {
   bool biarc(S s, Biarc<S>& out) const {
     const Vec2<S> m = point(s);
     out.s = s;
-    const S scale = (p2_ - p1_).norm();
-    if (!(Scalar<S>::abs(m.x) + Scalar<S>::abs(m.y) < S(1e300))) return false;
-    const bool at_p1 = (m - p1_).norm() <= scale * S(1e-12);
-    const bool at_p2 = (m - p2_).norm() <= scale * S(1e-12);
+    const S scale = band_detail::length(p2_ - p1_);
+    if (!Scalar<S>::is_finite(m.x) || !Scalar<S>::is_finite(m.y) ||
+        !(Scalar<S>::abs(m.x) + Scalar<S>::abs(m.y) < biarc_detail::far_joint<S>()))
+      return false;
+    const S at_end = biarc_detail::relative_reach(scale, S(1e-12), 4);
+    const bool at_p1 = biarc_detail::near(m, p1_, at_end);
+    const bool at_p2 = biarc_detail::near(m, p2_, at_end);
     if (at_p1 || at_p2) {
       // One arc from p1 to p2; it must match both tangents.
       const ArcPart<S> whole{p1_, p2_, t1_};
-      if ((whole.end_tangent() - t2_).norm() > S(1e-9)) return false;
+      if (band_detail::length(whole.end_tangent() - t2_) > biarc_detail::unit_slack<S>(S(1e-9))) return false;
       out.first = at_p1 ? ArcPart<S>{p1_, p1_, t1_} : whole;
       out.second = at_p1 ? whole : ArcPart<S>{p2_, p2_, t2_};
       return true;
@@ -137,7 +156,7 @@ class JointCircle {
     out.second = {m, p2_, out.first.end_tangent()};
     // m is on J only up to rounding, which a joint very near an end point
     // magnifies: refuse a biarc whose end tangent strays from t2.
-    return (out.second.end_tangent() - t2_).norm() <= S(1e-10);
+    return band_detail::length(out.second.end_tangent() - t2_) <= biarc_detail::unit_slack<S>(S(1e-10));
   }
 
  private:

@@ -35,13 +35,13 @@ namespace biarc_detail {
 template <class S>
 ArcProbe<S> probe_of(const ArcPart<S>& arc, bool& straight, S& sagitta) {
   const Vec2<S> c = arc.b - arc.a;
-  const Vec2<S> u = c * (S(1) / c.norm());
+  const Vec2<S> u = c * (S(1) / band_detail::length(c));
   const int orient = arc.t.cross(c) >= S(0) ? 1 : -1;
   const Vec2<S> n = u.perp() * S(orient);
   Vec2<S> d{arc.t.dot(u), max_of(S(0), -arc.t.dot(n))};  // (cos psi, sin psi)
   straight = d.y <= S(1e-7);
   // h tan(psi / 2), h half the chord
-  sagitta = straight ? c.norm() / S(2) * d.y / (S(1) + d.x) : S(0);
+  sagitta = straight ? band_detail::length(c) / S(2) * d.y / (S(1) + d.x) : S(0);
   if (straight) d = Vec2<S>{S(1), S(0)};
   return ArcProbe<S>(arc.a, arc.b, d, orient);
 }
@@ -50,7 +50,8 @@ ArcProbe<S> probe_of(const ArcPart<S>& arc, bool& straight, S& sagitta) {
 // is the joint), gate_b the gate at its end (likewise).
 template <class S>
 S arc_deviation(const BandRegion<S>& r, std::uint32_t i, std::uint32_t j, const ArcPart<S>& part,
-                int gate_a, int gate_b) {
+                int gate_a, int gate_b, const PairFrame<S>& f) {
+  auto point = [&](std::uint32_t k) { return f.map(r.point(k)); };
   if (part.empty()) return S(0);
   bool straight = false;
   S sagitta{};
@@ -72,7 +73,7 @@ S arc_deviation(const BandRegion<S>& r, std::uint32_t i, std::uint32_t j, const 
     int to_gate = gate_b;
     for (std::uint32_t k = i; k <= j; ++k) {
       Vec2<S> x[2];
-      const int m = arc.meet_line(r.point(k), r.vertex(k).b, x);
+      const int m = arc.meet_line(point(k), r.vertex(k).b, x);
       for (int t = 0; t < m; ++t) {
         const S s = position(x[t]);
         if (s > at && s < best) {
@@ -90,13 +91,13 @@ S arc_deviation(const BandRegion<S>& r, std::uint32_t i, std::uint32_t j, const 
       for (int e = g - 1; e <= g; ++e) {
         if (e < static_cast<int>(i) || e >= static_cast<int>(j)) continue;
         const auto ue = static_cast<std::uint32_t>(e);
-        const S d = stretch_to_edge(arc, from, to, r.point(ue), r.point(ue + 1));
+        const S d = stretch_to_edge(arc, from, to, point(ue), point(ue + 1));
         bound = bound < S(0) ? d : min_of(bound, d);
       }
     }
     if (bound < S(0)) {  // no gate at either end: every edge
       for (std::uint32_t e = i; e < j; ++e) {
-        const S d = stretch_to_edge(arc, from, to, r.point(e), r.point(e + 1));
+        const S d = stretch_to_edge(arc, from, to, point(e), point(e + 1));
         bound = bound < S(0) ? d : min_of(bound, d);
       }
     }
@@ -111,15 +112,18 @@ S arc_deviation(const BandRegion<S>& r, std::uint32_t i, std::uint32_t j, const 
 
 }  // namespace biarc_detail
 
-// The certified deviation of biarc b from p_i to p_j in region r.
+// The certified deviation of biarc b from p_i to p_j in region r, with b
+// in the pair's frame f (fit/biarc_numeric.hpp; the identity in floating
+// point). The result is in r's units.
 template <class S>
 S biarc_certified_deviation(const BandRegion<S>& r, std::uint32_t i, std::uint32_t j,
-                            const Biarc<S>& b) {
-  const S first =
-      biarc_detail::arc_deviation(r, i, j, b.first, static_cast<int>(i), b.second.empty() ? static_cast<int>(j) : -1);
-  const S second =
-      biarc_detail::arc_deviation(r, i, j, b.second, b.first.empty() ? static_cast<int>(i) : -1, static_cast<int>(j));
-  return max_of(first, second);
+                            const Biarc<S>& b,
+                            const biarc_detail::PairFrame<S>& f = biarc_detail::PairFrame<S>{}) {
+  const S first = biarc_detail::arc_deviation(r, i, j, b.first, static_cast<int>(i),
+                                              b.second.empty() ? static_cast<int>(j) : -1, f);
+  const S second = biarc_detail::arc_deviation(r, i, j, b.second,
+                                               b.first.empty() ? static_cast<int>(i) : -1, static_cast<int>(j), f);
+  return f.unlength(max_of(first, second));
 }
 
 }  // namespace kerf::fit

@@ -44,7 +44,8 @@ inline constexpr std::uint32_t kBiarcMaxSamples = 64;
 // (fit/biarc_joints.hpp), or the paper's construction through the
 // visibility regions W_i, W~_j and the (In)/(Out) search
 // (fit/biarc_visibility.hpp). Both give the same sets (the tests
-// cross-check them); the paper's is the slower here.
+// cross-check them); the paper's is the slower here. The paper's runs in
+// floating point only: kerf::Fixed refuses it (Status::invalid_argument).
 enum class BiarcMethod : std::uint8_t { exact_sets, paper };
 
 struct BiarcOptions {
@@ -61,12 +62,19 @@ template <class S>
 struct BiarcWorkspace {
   Span<std::uint32_t> words;        // >= biarc_workspace_words(n)
   Span<BandVertex<S>> vertices;     // >= n: the region
+  Span<Vec2<S>> points;             // >= n: the points as the fitter scales them
 };
 
 // Fewest biarcs inside the region R of `widths` (one per point, both sides
 // > 0; fit/band_region.hpp), with unit tangents (one per point). Needs
 // out.size() >= the count (n - 1 suffices). fit.max_error is the largest
 // BiarcPiece::error, fit.tol the largest width.
+//
+// In kerf::Fixed the points are scaled by a power of two into [-1, 1) and
+// each pair is tested in its own frame (fit/biarc_numeric.hpp), like the
+// band fitter; the pieces come back in the input's units. A fixed-point
+// arc that turns by less than 2^-24 rad, or whose centre would leave the
+// range, is output as its chord (ArcPart::segment).
 template <class S>
 Result<Fit<S>> fit_biarc_min_count(Span<const Vec2<S>> pts, Span<const Vec2<S>> tangents,
                                    Span<const BandWidth<S>> widths,

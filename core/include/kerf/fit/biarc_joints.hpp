@@ -129,9 +129,9 @@ template <class S, int Cap = 128>
 class BiarcJoints {
  public:
   BiarcJoints(const BandRegion<S>& r, std::uint32_t i, std::uint32_t j, Vec2<S> ti, Vec2<S> tj)
-      : r_(r), i_(i), j_(j), check_(r, i, j), jc_(r.point(i), ti, r.point(j), tj) {
-    p1_ = r.point(i);
-    p2_ = r.point(j);
+      : r_(r), i_(i), j_(j), check_(r, i, j), jc_(check_.point(i), ti, check_.point(j), tj) {
+    p1_ = check_.point(i);
+    p2_ = check_.point(j);
     t1_ = ti;
     t2_ = tj;
     d_ = p2_ - p1_;
@@ -162,6 +162,8 @@ class BiarcJoints {
     }
   }
 
+  // The check, and the frame (fit/biarc_numeric.hpp) of the joint circle,
+  // the biarcs and the sets.
   const BiarcCheck<S>& check() const { return check_; }
   // How many windows the last compute() needed beyond the whole of J.
   int windows() const { return split_; }
@@ -301,9 +303,11 @@ class BiarcJoints {
   // lambda^2 (n.d - g) + lambda (n.(d k) - 2 g Re k) - g = 0, g = n.(q - p_i).
   int joint_on_line(Vec2<S> q, Vec2<S> n, S out[2]) const {
     const S g = n.dot(q - p1_);
-    const S qa = n.dot(d_) - g;
-    const S qb = n.dot(mul(d_, k_)) - S(2) * g * k_.x;
-    const S qc = -g;
+    S q3[3] = {n.dot(d_) - g, n.dot(mul(d_, k_)) - S(2) * g * k_.x, -g};
+    band_detail::balance(q3, 3);  // fixed point: the discriminant keeps its bits
+    const S qa = q3[0];
+    const S qb = q3[1];
+    const S qc = q3[2];
     if (qa == S(0)) {
       if (qb == S(0)) return 0;
       out[0] = -qc / qb;
@@ -326,8 +330,8 @@ class BiarcJoints {
   bool window(S lo, S hi, JointSet<S, Cap>& out) const {
     out.reset_to(lo, hi);
     out.remove(S(1), S(1));  // p_j itself (see JointCircle::biarc)
-    cut(r_.gate_end(i_, -1), r_.gate_end(i_, 1), out);
-    if (!out.empty()) cut(r_.gate_end(j_, -1), r_.gate_end(j_, 1), out);
+    cut(check_.gate_end(i_, -1), check_.gate_end(i_, 1), out);
+    if (!out.empty()) cut(check_.gate_end(j_, -1), check_.gate_end(j_, 1), out);
     // The cells middle first (bit-reversed order): a biarc that strays
     // usually meets the boundary there, and the set empties early.
     const std::uint32_t len = j_ - i_;
@@ -339,7 +343,7 @@ class BiarcJoints {
       for (std::uint32_t q = 0; q < bits; ++q) rev |= ((t >> q) & 1u) << (bits - 1 - q);
       if (rev >= len) continue;
       for (int side = -1; side <= 1 && !out.empty(); side += 2) {
-        r_.chain(i_ + rev, side, c);
+        check_.chain(i_ + rev, side, c);
         for (int e = 0; e + 1 < c.size && !out.empty(); ++e) cut(c.pt[e], c.pt[e + 1], out);
       }
     }
@@ -378,7 +382,7 @@ class BiarcJoints {
       if (lambda_arc2_through(q, lambda)) add(lambda);
     }
     const Vec2<S> e = q2 - q1;
-    const S len = e.norm();
+    const S len = band_detail::length(e);
     if (len > S(0)) {
       const Vec2<S> u = e * (S(1) / len);
       S kap[2];

@@ -24,6 +24,7 @@
 #include <cstdint>
 
 #include "kerf/fit/band_region.hpp"
+#include "kerf/fit/biarc_numeric.hpp"
 
 namespace kerf::fit {
 
@@ -41,14 +42,13 @@ template <class S>
 KappaRange<S> pencil_range(Vec2<S> p, Vec2<S> t, Vec2<S> q1, Vec2<S> q2) {
   KappaRange<S> r;
   const Vec2<S> e = q2 - q1;
-  const S len = e.norm();
-  auto kappa = [&](Vec2<S> x) {
-    const Vec2<S> v = x - p;
-    return S(2) * t.cross(v) / v.norm2();
-  };
+  const S len = band_detail::length(e);
+  auto kappa = [&](Vec2<S> x) { return biarc_detail::pencil_kappa(t, x - p); };
   const Vec2<S> v1 = q1 - p;
   const Vec2<S> v2 = q2 - p;
-  const S scale = max_of(v1.norm(), v2.norm());
+  const S len1 = band_detail::length(v1);
+  const S len2 = band_detail::length(v2);
+  const S scale = max_of(len1, len2);
   if (!(scale > S(0))) {
     r.all = true;
     return r;
@@ -59,12 +59,12 @@ KappaRange<S> pencil_range(Vec2<S> p, Vec2<S> t, Vec2<S> q1, Vec2<S> q2) {
     const S a = n.dot(p - q1);
     const S along = u.dot(p - q1);
     // The segment passes through (or within rounding of) p: kappa unbounded.
-    if (Scalar<S>::abs(a) <= scale * S(1e-9) && along >= -scale * S(1e-9) &&
-        along <= len + scale * S(1e-9)) {
+    const S near = biarc_detail::relative_reach(scale, S(1e-9), 4);
+    if (Scalar<S>::abs(a) <= near && along >= -near && along <= len + near) {
       r.all = true;
       return r;
     }
-  } else if (v1.norm() <= scale * S(1e-9)) {
+  } else if (len1 <= biarc_detail::relative_reach(scale, S(1e-9), 4)) {
     r.all = true;
     return r;
   }
@@ -93,7 +93,17 @@ KappaRange<S> pencil_range(Vec2<S> p, Vec2<S> t, Vec2<S> q1, Vec2<S> q2) {
   }
   // Rounding: widen by a little of the range and of the curvature scale
   // 1 / scale (both relative, no absolute tolerance).
-  const S pad = (r.hi - r.lo) * S(1e-6) + S(1e-9) * (max_of(Scalar<S>::abs(r.lo), Scalar<S>::abs(r.hi)) + S(1) / scale);
+  // Fixed point: 2^-20 instead of 1e-9, and of 1 / the nearer end too (a
+  // curvature through a point at distance l carries ~2^-31 / l).
+  const S big = max_of(Scalar<S>::abs(r.lo), Scalar<S>::abs(r.hi));
+  S pad;
+  if constexpr (biarc_detail::kFloating<S>) {
+    pad = (r.hi - r.lo) * S(1e-6) + S(1e-9) * (big + S(1) / scale);
+  } else {
+    const S nearer = min_of(len1, len2);
+    const S inv = nearer > S(0) ? S(1) / nearer : S(1) / scale;
+    pad = (r.hi - r.lo) * S(1e-6) + (big + inv) / S(1048576);
+  }
   r.lo = r.lo - pad;
   r.hi = r.hi + pad;
   return r;

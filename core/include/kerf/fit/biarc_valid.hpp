@@ -15,6 +15,9 @@
 // which loses only boundary cases of measure zero. Cells are visited middle
 // first (bit-reversed order), so a biarc that strays fails after a few.
 //
+// Fixed point: the test runs in the pair's frame (fit/biarc_numeric.hpp),
+// and so do the biarcs it is given: see frame().
+//
 // The region must have a positive width on both sides of p_i and p_j (the
 // CLI's biarc criterion takes a symmetric --tol), so that the boundary
 // passes nowhere near the ends except through the gates.
@@ -24,17 +27,30 @@
 
 #include "kerf/fit/band_region.hpp"
 #include "kerf/fit/biarc.hpp"
+#include "kerf/fit/biarc_numeric.hpp"
 
 namespace kerf::fit {
 
 template <class S>
 class BiarcCheck {
  public:
-  BiarcCheck(const BandRegion<S>& r, std::uint32_t i, std::uint32_t j) : r_(r), i_(i), j_(j) {
-    scale_ = (r.point(j) - r.point(i)).norm();
+  BiarcCheck(const BandRegion<S>& r, std::uint32_t i, std::uint32_t j)
+      : r_(r), i_(i), j_(j), f_(biarc_detail::PairFrame<S>::of(r, i, j)) {
+    scale_ = band_detail::length(point(j) - point(i));
     const BandVertex<S>& vi = r.vertex(i);
     const BandVertex<S>& vj = r.vertex(j);
-    scale_ = max_of(scale_, max_of(max_of(vi.gate_left, vi.gate_right), max_of(vj.gate_left, vj.gate_right)));
+    scale_ = max_of(scale_, f_.length(max_of(max_of(vi.gate_left, vi.gate_right), max_of(vj.gate_left, vj.gate_right))));
+  }
+
+  // The pair's frame: the biarcs tested and the points below are in it.
+  const biarc_detail::PairFrame<S>& frame() const { return f_; }
+  Vec2<S> point(std::uint32_t k) const { return f_.map(r_.point(k)); }
+  Vec2<S> gate_end(std::uint32_t k, int side) const { return f_.map(r_.gate_end(k, side)); }
+  // The boundary chain of cell k on `side`, in the frame.
+  void chain(std::uint32_t k, int side, BandChain<S>& c) const {
+    r_.chain(k, side, c);
+    if constexpr (!biarc_detail::kFloating<S>)
+      for (int e = 0; e < c.size; ++e) c.pt[e] = f_.map(c.pt[e]);
   }
 
   // The tangents cross their gates forwards and no barrier lies between.
@@ -67,7 +83,7 @@ class BiarcCheck {
       for (std::uint32_t q = 0; q < bits; ++q) rev |= ((t >> q) & 1u) << (bits - 1 - q);
       if (rev >= len) continue;
       for (int side = -1; side <= 1 && left > 0; side += 2) {
-        r_.chain(i_ + rev, side, c);
+        chain(i_ + rev, side, c);
         for (std::uint32_t q = 0; q < m; ++q) {
           if (!alive[q]) continue;
           for (int e = 0; e + 1 < c.size; ++e) {
@@ -87,12 +103,12 @@ class BiarcCheck {
   // first arc, p_j for the second)? The one-segment test that
   // fit/biarc_joints.hpp evaluates between critical joints.
   bool meets(const Biarc<S>& b, Vec2<S> q1, Vec2<S> q2) const {
-    return hits(b.first, r_.point(i_), q1, q2) || hits(b.second, r_.point(j_), q1, q2);
+    return hits(b.first, point(i_), q1, q2) || hits(b.second, point(j_), q1, q2);
   }
 
  private:
   bool crosses_gate(const Biarc<S>& b, std::uint32_t k) const {
-    return meets(b, r_.gate_end(k, -1), r_.gate_end(k, 1));
+    return meets(b, gate_end(k, -1), gate_end(k, 1));
   }
 
   // Does arc meet the segment q1 q2 anywhere but at `skip`?
@@ -102,9 +118,11 @@ class BiarcCheck {
     const Vec2<S> d = q2 - q1;
     const Vec2<S> e = q1 - arc.a;
     // kappa |e + s d|^2 - 2 t x (e + s d) = qa s^2 + qb s + qc
-    const S qa = k * d.norm2();
-    const S qb = S(2) * (k * e.dot(d) - arc.t.cross(d));
-    const S qc = k * e.norm2() - S(2) * arc.t.cross(e);
+    S q3[3] = {k * d.norm2(), S(2) * (k * e.dot(d) - arc.t.cross(d)), k * e.norm2() - S(2) * arc.t.cross(e)};
+    band_detail::balance(q3, 3);  // fixed point: the discriminant keeps its bits
+    const S qa = q3[0];
+    const S qb = q3[1];
+    const S qc = q3[2];
     S roots[2];
     int m = 0;
     if (qa == S(0)) {
@@ -122,12 +140,13 @@ class BiarcCheck {
         roots[m++] = qc / q;
       }
     }
-    const S slack = S(1e-12);
+    const S slack = biarc_detail::relative_reach(S(1), S(1e-12), 4);
+    const S skip_reach = biarc_detail::relative_reach(scale_, S(1e-9), 4096);
     const S end = arc.position(arc.b);
     for (int t = 0; t < m; ++t) {
       if (!(roots[t] >= -slack && roots[t] <= S(1) + slack)) continue;
       const Vec2<S> x = q1 + d * roots[t];
-      if ((x - skip).norm() <= scale_ * S(1e-9)) continue;
+      if (biarc_detail::near(x, skip, skip_reach)) continue;
       const S pos = arc.position(x);
       if (pos >= S(0) - slack && pos <= end + slack * (S(1) + Scalar<S>::abs(end))) return true;
     }
@@ -137,6 +156,7 @@ class BiarcCheck {
   const BandRegion<S>& r_;
   std::uint32_t i_;
   std::uint32_t j_;
+  biarc_detail::PairFrame<S> f_;
   S scale_{};
 };
 

@@ -15,13 +15,34 @@
 // tangent at p_1 reflected in the chord p_0 p_1. Two points: the chord.
 #pragma once
 
+#include <type_traits>  // freestanding
+
 #include "kerf/core/span.hpp"
 #include "kerf/geom/vec2.hpp"
 
 namespace kerf::fit {
 
+// The power of two that brings the largest coordinate of u and v into
+// [0.5, 1) in fixed point (its squares of short vectors would keep only a
+// few bits; the factor is exact), 1 in floating point.
+template <class S>
+S unit_scale(Vec2<S> u, Vec2<S> v) {
+  if constexpr (std::is_floating_point_v<S>) {
+    (void)u;
+    (void)v;
+    return S(1);
+  } else {
+    const S m = max_of(max_of(Scalar<S>::abs(u.x), Scalar<S>::abs(u.y)),
+                       max_of(Scalar<S>::abs(v.x), Scalar<S>::abs(v.y)));
+    if (!(m > S(0)) || !Scalar<S>::is_finite(m)) return S(1);
+    const S f = Scalar<S>::normaliser(m);
+    return Scalar<S>::is_finite(f) ? f : S(1);
+  }
+}
+
 template <class S>
 Vec2<S> unit_of(Vec2<S> v) {
+  v = v * unit_scale(v, v);
   const S len = v.norm();
   return len > S(0) ? v * (S(1) / len) : Vec2<S>{};
 }
@@ -38,8 +59,9 @@ Vec2<S> reflect_in_chord(Vec2<S> t, Vec2<S> a, Vec2<S> b) {
 // collinear points).
 template <class S>
 Vec2<S> three_point_tangent(Vec2<S> a, Vec2<S> b, Vec2<S> c) {
-  const Vec2<S> u = b - a;
-  const Vec2<S> v = c - b;
+  const S f = unit_scale(b - a, c - b);
+  const Vec2<S> u = (b - a) * f;
+  const Vec2<S> v = (c - b) * f;
   return unit_of(u * v.norm2() + v * u.norm2());
 }
 
