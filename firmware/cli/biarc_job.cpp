@@ -2,7 +2,9 @@
 
 #include <cmath>
 
+#include "cli/fit_fixed.hpp"
 #include "io/biarc_storage.hpp"
+#include "kerf/core/fixed_convert.hpp"
 
 namespace kerf::cli {
 
@@ -19,20 +21,67 @@ double turn(Vec2<double> a, Vec2<double> b) { return std::atan2(std::fabs(a.cros
 
 double distance_to(const Segment<double>& s, Vec2<double> p) { return distance_to_segment(s, p); }
 
+// The fit in kerf::Fixed; tangents (given, or empty to estimate them in
+// Fixed) come back as the ones used, the pieces in double.
+Result<fit::Fit<double>> fit_biarc_fixed(const std::vector<Vec2<double>>& pts,
+                                         std::vector<Vec2<double>>& tangents, double tol,
+                                         io::BiarcStorage& storage) {
+  const std::size_t n = pts.size();
+  std::vector<Vec2<Fixed>> p(n), t(n);
+  for (std::size_t k = 0; k < n; ++k) p[k] = {fixed_from_double(pts[k].x), fixed_from_double(pts[k].y)};
+  if (tangents.empty()) {
+    fit::estimate_tangents<Fixed>({p.data(), n}, {t.data(), n});
+  } else {
+    for (std::size_t k = 0; k < n; ++k)
+      t[k] = fit::unit_of(Vec2<Fixed>{fixed_from_double(tangents[k].x), fixed_from_double(tangents[k].y)});
+  }
+  const Fixed w = fixed_from_double(tol);
+  const std::vector<fit::BandWidth<Fixed>> widths(n, {w, w});
+  io::BasicBiarcStorage<Fixed> fs(n);
+  const Result<fit::Fit<Fixed>> r = fit::fit_biarc_min_count<Fixed>(
+      {p.data(), n}, {t.data(), n}, {widths.data(), n}, {}, fs.workspace(), fs.pieces());
+  tangents.resize(n);
+  for (std::size_t k = 0; k < n; ++k) tangents[k] = {to_double(t[k].x), to_double(t[k].y)};
+  if (!r.ok()) return r.status();
+  auto back = [](Vec2<Fixed> v) { return Vec2<double>{to_double(v.x), to_double(v.y)}; };
+  auto segment = [&](const Segment<Fixed>& s, Vec2<double> a, Vec2<double> b) {
+    return Segment<double>{s.kind, a, b, back(s.centre), s.dir};
+  };
+  for (std::uint32_t k = 0; k < r.value().pieces; ++k) {
+    const fit::BiarcPiece<Fixed>& f = fs.pieces()[k];
+    fit::BiarcPiece<double>& d = storage.pieces()[k];
+    d.first = f.first;
+    d.last = f.last;
+    d.joint = back(f.joint);
+    // The ends are the input points themselves, as in double.
+    d.arc[0] = segment(f.arc[0], pts[f.first], d.joint);
+    d.arc[1] = segment(f.arc[1], d.joint, pts[f.last]);
+    for (int q = 0; q < 3; ++q) d.tangent[q] = back(f.tangent[q]);
+    d.error = to_double(f.error);
+  }
+  return fit::Fit<double>{r.value().pieces, to_double(r.value().max_error), tol};
+}
+
 }  // namespace
 
 bool fit_biarc_path(const std::vector<Vec2<double>>& pts, const std::vector<Vec2<double>>& given,
                     double tol, std::vector<fit::BiarcPiece<double>>& out, fit::Fit<double>& fit,
-                    std::string& error, Status& status, fit::BiarcMethod method) {
+                    std::string& error, Status& status, fit::BiarcMethod method, bool fixed) {
   const std::size_t n = pts.size();
-  const std::vector<Vec2<double>> tangents = given.empty() ? io::estimated_tangents(pts) : given;
+  if (fixed && method == fit::BiarcMethod::paper) {
+    status = Status::invalid_argument;
+    error = "--biarc-method paper runs in double only (--numeric fixed fits with the exact sets)";
+    return false;
+  }
+  std::vector<Vec2<double>> tangents = given.empty() && !fixed ? io::estimated_tangents(pts) : given;
   std::vector<fit::BandWidth<double>> widths(n, {tol, tol});
   io::BiarcStorage storage(n);
   fit::BiarcOptions opts;
   opts.method = method;
-  const Result<fit::Fit<double>> r = fit::fit_biarc_min_count<double>(
-      {pts.data(), n}, {tangents.data(), n}, {widths.data(), n}, opts,
-      storage.workspace(), storage.pieces());
+  const Result<fit::Fit<double>> r =
+      fixed ? fit_biarc_fixed(pts, tangents, tol, storage)
+            : fit::fit_biarc_min_count<double>({pts.data(), n}, {tangents.data(), n}, {widths.data(), n},
+                                               opts, storage.workspace(), storage.pieces());
   if (!r.ok()) {
     status = r.status();
     error = r.status() == Status::infeasible
@@ -43,7 +92,8 @@ bool fit_biarc_path(const std::vector<Vec2<double>>& pts, const std::vector<Vec2
   }
   out.assign(storage.pieces().begin(), storage.pieces().begin() + r.value().pieces);
   fit = r.value();
-  if (const std::string bad = check_biarcs(pts, tangents, tol, out); !bad.empty()) {
+  const double slack = fixed ? fixed_fit_slack({pts.data(), n}) : 0.0;
+  if (const std::string bad = check_biarcs(pts, tangents, tol, out, slack); !bad.empty()) {
     status = Status::infeasible;
     error = "internal error: the fit fails its own check (" + bad + ")";
     return false;
@@ -54,11 +104,16 @@ bool fit_biarc_path(const std::vector<Vec2<double>>& pts, const std::vector<Vec2
 
 std::string check_biarcs(const std::vector<Vec2<double>>& pts,
                          const std::vector<Vec2<double>>& tangents, double tol,
-                         const std::vector<fit::BiarcPiece<double>>& pieces) {
+                         const std::vector<fit::BiarcPiece<double>>& pieces, double slack) {
   std::size_t at = 0;
   double scale = 0;
   for (const Vec2<double>& p : pts) scale = std::fmax(scale, std::fmax(std::fabs(p.x), std::fabs(p.y)));
-  const double eps = 1e-9 * (scale + 1);
+  const double eps = 1e-9 * (scale + 1) + slack;
+  // The angle allowed at an arc's end: 1e-9 rad, plus 2 slack over its chord.
+  auto turn_max = [&](const Segment<double>& s) {
+    const double c = (s.end - s.start).norm();
+    return 1e-9 + (slack > 0 && c > 0 ? 2 * slack / c : 0.0);
+  };
   for (std::size_t k = 0; k < pieces.size(); ++k) {
     const fit::BiarcPiece<double>& b = pieces[k];
     const std::string name = "biarc " + std::to_string(k + 1);
@@ -68,9 +123,10 @@ std::string check_biarcs(const std::vector<Vec2<double>>& pts,
     if ((a1.start - pts[b.first]).norm() > eps || (a2.end - pts[b.last]).norm() > eps ||
         (a1.end - a2.start).norm() > eps)
       return name + ": ends do not meet";
-    if (turn(tangent_of(a1, false), tangents[b.first]) > 1e-9) return name + ": start tangent";
-    if (turn(tangent_of(a1, true), tangent_of(a2, false)) > 1e-9) return name + ": corner at the joint";
-    if (turn(tangent_of(a2, true), tangents[b.last]) > 1e-9) return name + ": end tangent";
+    if (turn(tangent_of(a1, false), tangents[b.first]) > turn_max(a1)) return name + ": start tangent";
+    if (turn(tangent_of(a1, true), tangent_of(a2, false)) > turn_max(a1) + turn_max(a2))
+      return name + ": corner at the joint";
+    if (turn(tangent_of(a2, true), tangents[b.last]) > turn_max(a2)) return name + ": end tangent";
     for (std::size_t q = b.first; q <= b.last; ++q)
       if (std::fmin(distance_to(a1, pts[q]), distance_to(a2, pts[q])) > tol * (1 + 1e-9) + eps)
         return name + ": point " + std::to_string(q) + " is farther than tol";

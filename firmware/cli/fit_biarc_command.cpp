@@ -27,6 +27,8 @@ int check_biarc_options(const FitOptions& opts, double& tol, bool& estimate) {
   std::string error;
   if (!opts.biarc_method.empty() && opts.biarc_method != "sets" && opts.biarc_method != "paper")
     return usage_error("--biarc-method: expected sets or paper, got " + quoted(opts.biarc_method));
+  if (opts.biarc_method == "paper" && opts.numeric == "fixed")
+    return usage_error("--biarc-method paper runs in double only (--numeric fixed fits with the exact sets)");
   if (opts.method != "optimal")
     return usage_error("--method: " + quoted(opts.method) +
                        " is a vertex-criterion rule; --criterion biarc is always optimal");
@@ -59,6 +61,8 @@ int run_fit_biarc(const FitOptions& opts) {
   if (opts.tangent_format == "angle" && in.tangents.empty())
     return usage_error("--tangent-format angle: " + in.file + " has no third column");
   const bool given = !estimate && !in.tangents.empty();
+  const bool fixed = opts.numeric == "fixed";
+  if (fixed && !fixed_fits(in, tol)) return kExitUsage;
 
   const std::size_t n = in.points.size();
   std::vector<std::size_t> begins = in.path_begin;
@@ -82,7 +86,7 @@ int run_fit_biarc(const FitOptions& opts) {
     const auto t0 = std::chrono::steady_clock::now();
     const fit::BiarcMethod how =
         opts.biarc_method == "paper" ? fit::BiarcMethod::paper : fit::BiarcMethod::exact_sets;
-    const bool ok = fit_biarc_path(pts, tangents, tol, biarcs, fit, error, status, how);
+    const bool ok = fit_biarc_path(pts, tangents, tol, biarcs, fit, error, status, how, fixed);
     ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     if (!ok) {
       const std::string where = begins.size() > 1 ? " (path " + std::to_string(p + 1) + ")" : "";

@@ -145,6 +145,8 @@ int check_options(const FitOptions& opts, bool band, fit::Method& method, std::u
   return kExitOk;
 }
 
+}  // namespace
+
 // --numeric fixed: every coordinate inside Q31.32's range (else FILE:LINE),
 // and a tol (0: none given) the grid resolves at the points' magnitude.
 bool fixed_fits(const io::PointFile& in, double tol) {
@@ -172,8 +174,6 @@ bool fixed_fits(const io::PointFile& in, double tol) {
   usage_error(std::string("--tol: ") + buf);
   return false;
 }
-
-}  // namespace
 
 int run_fit(const FitOptions& opts) {
   if (opts.stream || !opts.window.empty()) return run_fit_stream(opts);

@@ -42,10 +42,9 @@ bool read_job(const std::string& file, const std::string& criterion, io::PointFi
 }
 
 std::string numeric_problem(const std::string& numeric, const std::string& criterion) {
+  (void)criterion;  // every criterion has both types now
   if (numeric != "double" && numeric != "fixed")
     return "--numeric: unknown type \"" + numeric + "\" (expected double or fixed)";
-  if (numeric == "fixed" && criterion == "biarc")
-    return "--numeric fixed: the biarc fitter runs in double only (vertex and band have fixed point)";
   return "";
 }
 
@@ -69,7 +68,8 @@ bool fit_job(const std::vector<Vec2<double>>& pts, const std::vector<double>& to
     }
     std::vector<fit::BiarcPiece<double>> biarcs;
     fit::Fit<double> fit{};
-    if (!fit_biarc_path(pts, {}, tol, biarcs, fit, error, status)) return false;
+    if (!fit_biarc_path(pts, {}, tol, biarcs, fit, error, status, fit::BiarcMethod::exact_sets, fixed))
+      return false;
     // Each biarc runs as its two arcs; both keep the biarc's point range.
     out.clear();
     for (const fit::BiarcPiece<double>& b : biarcs)

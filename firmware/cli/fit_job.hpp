@@ -34,9 +34,15 @@ bool read_job(const std::string& file, const std::string& criterion, io::PointFi
 
 // The scalar types a fit runs in (`--numeric`, the config's fit.numeric):
 // "double", or "fixed" (kerf::Fixed, Q31.32: what a core without an FPU runs;
-// vertex and band criteria). Empty when `numeric` suits the criterion, else
-// the reason, e.g. "--numeric fixed: the biarc fitter runs in double only".
+// vertex, band and biarc criteria). Empty when `numeric` suits the
+// criterion, else the reason, e.g. "--numeric: unknown type".
 std::string numeric_problem(const std::string& numeric, const std::string& criterion);
+
+// --numeric fixed: every coordinate of `in` inside the fixed-point fit's
+// range (else FILE:LINE on stderr), and a tol (0: none given) the grid
+// resolves at the points' magnitude (else a usage error). Defined in
+// cli/fit_command.cpp.
+bool fixed_fits(const io::PointFile& in, double tol);
 
 // Fits pts (tols: one per point, or empty) at tol, in the scalar type
 // `numeric` (checked with numeric_problem first). On failure returns false

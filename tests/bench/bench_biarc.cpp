@@ -68,7 +68,7 @@ Run best_of(const std::vector<Vec2<double>>& p, double tol, bool exact, int repe
 
 std::size_t storage_bytes(std::size_t n) {
   return fit::biarc_workspace_words(n) * sizeof(std::uint32_t) + n * sizeof(fit::BandVertex<double>) +
-         (n - 1) * sizeof(fit::BiarcPiece<double>) + n * sizeof(Vec2<double>);
+         (n - 1) * sizeof(fit::BiarcPiece<double>) + 2 * n * sizeof(Vec2<double>);
 }
 
 double peak_rss_mib() {

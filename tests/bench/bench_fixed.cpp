@@ -1,4 +1,4 @@
-// kerf::Fixed against double: the vertex and band fits of the sine curve and
+// kerf::Fixed against double: the vertex, band and biarc fits of the sine curve and
 // the interpolator's step, each timed in both scalar types (best of a few
 // runs), and the fixed/double ratio printed.
 #include <algorithm>
@@ -9,6 +9,8 @@
 #include "bench_util.hpp"
 #include "kerf/core/fixed_convert.hpp"
 #include "kerf/fit/band_fit.hpp"
+#include "kerf/fit/biarc_fit.hpp"
+#include "kerf/fit/tangent.hpp"
 #include "kerf/fit/fit.hpp"
 #include "kerf/motion/interpolator.hpp"
 
@@ -77,6 +79,33 @@ Fitted<S> time_band(const std::vector<kerf::Vec2<double>>& pd, double tol, int r
   return out;
 }
 
+// The biarc fit (fewest biarcs, exact joint sets) at tol on both sides, on
+// tangents estimated in the type (counted in the time).
+template <class S>
+Fitted<S> time_biarc(const std::vector<kerf::Vec2<double>>& pd, double tol, int runs) {
+  const std::size_t n = pd.size();
+  std::vector<kerf::Vec2<S>> p(n);
+  for (std::size_t k = 0; k < n; ++k) p[k] = {from_d<S>(pd[k].x), from_d<S>(pd[k].y)};
+  const std::vector<kerf::fit::BandWidth<S>> w(n, {from_d<S>(tol), from_d<S>(tol)});
+  std::vector<kerf::Vec2<S>> t(n);
+  std::vector<std::uint32_t> words(kerf::fit::biarc_workspace_words(n));
+  std::vector<kerf::Vec2<S>> scaled(n);
+  std::vector<kerf::fit::BandVertex<S>> vertices(n);
+  std::vector<kerf::fit::BiarcPiece<S>> pieces(n);
+  Fitted<S> out;
+  for (int r = 0; r < runs; ++r) {
+    const auto t0 = Clock::now();
+    kerf::fit::estimate_tangents<S>({p.data(), n}, {t.data(), n});
+    const auto res = kerf::fit::fit_biarc_min_count<S>(
+        {p.data(), n}, {t.data(), n}, {w.data(), n}, {},
+        {{words.data(), words.size()}, {vertices.data(), n}, {scaled.data(), n}}, {pieces.data(), n});
+    const double ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+    out.best_ms = std::min(out.best_ms, ms);
+    out.count = res.ok() ? res.value().pieces : 0;
+  }
+  return out;
+}
+
 // ns per interpolator step over the fitted path at 100 mm/s, 1 ms period.
 template <class S>
 double time_steps(const Fitted<S>& f, long& steps) {
@@ -108,6 +137,10 @@ int main() {
   const auto bf = time_band<kerf::Fixed>(pd, tol, 3);
   std::printf("band fit sine n=400 tol %.2f: double %u pieces %.3f ms, fixed %u pieces %.3f ms, ratio %.1f\n",
               tol, bd.count, bd.best_ms, bf.count, bf.best_ms, bf.best_ms / bd.best_ms);
+  const auto ad = time_biarc<double>(pd, tol, 3);
+  const auto af = time_biarc<kerf::Fixed>(pd, tol, 2);
+  std::printf("biarc fit sine n=400 tol %.2f: double %u biarcs %.3f ms, fixed %u biarcs %.3f ms, ratio %.1f\n",
+              tol, ad.count, ad.best_ms, af.count, af.best_ms, af.best_ms / ad.best_ms);
   long sd = 0, sf = 0;
   double nd = 1e300, nf = 1e300;
   for (int r = 0; r < 3; ++r) {
@@ -116,5 +149,5 @@ int main() {
   }
   std::printf("interpolate: double %ld steps %.1f ns/step, fixed %ld steps %.1f ns/step, ratio %.1f\n",
               sd, nd, sf, nf, nf / nd);
-  return fd.count == ff.count && bd.count == bf.count ? 0 : 1;
+  return fd.count == ff.count && bd.count == bf.count && ad.count == af.count && ad.count > 0 ? 0 : 1;
 }
