@@ -227,8 +227,6 @@ void read_fit(TableReader& r, Fit& fit) {
   if (r.string("numeric", numeric)) {
     if (numeric != "double" && numeric != "fixed")
       r.problem("numeric", "unknown type " + quote(numeric) + " (expected double or fixed)");
-    else if (numeric == "fixed" && fit.criterion == "biarc")
-      r.problem("numeric", "fixed: the biarc fitter runs in double only (vertex and band have fixed point)");
     else
       fit.numeric = numeric;
   }

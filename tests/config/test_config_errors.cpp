@@ -126,8 +126,6 @@ const BadCase kCases[] = {
     {"fit_tol_zero", TCP "[fit]\ntol = 0\n", "kerf.toml:4: fit.tol: must be > 0, got 0"},
     {"fit_numeric_unknown", TCP "[fit]\nnumeric = \"float\"\n",
      "kerf.toml:4: fit.numeric: unknown type \"float\" (expected double or fixed)"},
-    {"fit_numeric_fixed_biarc", TCP "[fit]\ncriterion = \"biarc\"\nnumeric = \"fixed\"\n",
-     "kerf.toml:5: fit.numeric: fixed: the biarc fitter runs in double only (vertex and band have fixed point)"},
     {"fit_tol_inf", TCP "[fit]\ntol = inf\n", "kerf.toml:4: fit.tol: must be a finite number, got inf"},
 
     // [cut]

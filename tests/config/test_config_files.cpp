@@ -129,6 +129,17 @@ TEST(ConfigFiles, FitNumericFixed) {
   EXPECT_EQ(c.fit.numeric, "fixed");
 }
 
+// Every criterion runs in fixed point, the biarc fitter too.
+TEST(ConfigFiles, FitNumericFixedBiarc) {
+  Config c;
+  std::string error;
+  ASSERT_TRUE(parse("[link]\nkind = \"modbus-tcp\"\n[fit]\ncriterion = \"biarc\"\nnumeric = \"fixed\"\n",
+                    "fixed.toml", c, error))
+      << error;
+  EXPECT_EQ(c.fit.criterion, "biarc");
+  EXPECT_EQ(c.fit.numeric, "fixed");
+}
+
 TEST(ConfigFiles, OtherLinksAndLinesByName) {
   Config c;
   std::string error;
