@@ -146,9 +146,16 @@ TYPED_TEST(TypedBiarc, CountsMatchDoubleOnTheTestCurvesAndBiarcsPassTheReferee) 
     // The certified error the fitter reports: within the band, or no more
     // than double's (whose bound is loose on the circle's 350-degree arc).
     EXPECT_LE(to_d(got.fit.value().max_error), std::max(c.tol, want.fit.value().max_error) + slack) << what;
-    std::printf("%-13s tol %.2f: %u biarcs (double %u), max error %.6g (double %.6g), turn allowed %.2g\n",
+    // The largest tangent mismatch actually seen (start, joint, end).
+    double seen = 0;
+    for (const kerf_test::VBiarc& b : got.biarcs) {
+      seen = std::max({seen, kerf_test::angle_between(kerf_test::piece_tangent(b.a1, false), got.tangents[b.a1.first]),
+                       kerf_test::angle_between(kerf_test::piece_tangent(b.a1, true), kerf_test::piece_tangent(b.a2, false)),
+                       kerf_test::angle_between(kerf_test::piece_tangent(b.a2, true), got.tangents[b.a2.last])});
+    }
+    std::printf("%-13s tol %.2f: %u biarcs (double %u), max error %.6g (double %.6g), turn %.2g (allowed %.2g)\n",
                 c.curve, c.tol, got.fit.value().pieces, want.fit.value().pieces,
-                to_d(got.fit.value().max_error), want.fit.value().max_error, turn);
+                to_d(got.fit.value().max_error), want.fit.value().max_error, seen, turn);
   }
 }
 
