@@ -1,7 +1,8 @@
 // The vertex and band fitters run in kerf::Fixed for `--numeric fixed`
 // (kerf fit, plan, sim, run): the points and widths are rounded to the
 // fixed-point grid, the fit runs there, and the pieces come back in double
-// for the usual check and output.
+// for the usual check and output. (The biarc fitter's fixed-point run is in
+// cli/biarc_job.cpp; it uses fixed_fit_slack below too.)
 #pragma once
 
 #include <cstdint>
