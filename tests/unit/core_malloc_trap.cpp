@@ -1,6 +1,6 @@
 // The core never allocates, proven at run time: this program replaces malloc,
 // calloc, realloc and operator new with a trap that aborts while armed, then
-// runs the vertex fitter, the band fitter and the interpolator in double and
+// runs the vertex, band and biarc fitters and the interpolator in double and
 // in kerf::Fixed on the report's parabola, all storage static. `--self-check` allocates while
 // armed and must die with the trap's message, which shows the trap is live.
 #include <unistd.h>
@@ -12,6 +12,8 @@
 
 #include "kerf/core/fixed_convert.hpp"
 #include "kerf/fit/band_fit.hpp"
+#include "kerf/fit/biarc_fit.hpp"
+#include "kerf/fit/tangent.hpp"
 #include "kerf/fit/fit.hpp"
 #include "kerf/fit/stream.hpp"
 #include "kerf/fit/stream_band.hpp"
@@ -89,6 +91,29 @@ struct BandStatic {
 };
 BandStatic<double> g_bd;
 BandStatic<kerf::Fixed> g_bf;
+
+template <class S>
+struct BiarcStatic {
+  std::uint32_t words[kerf::fit::biarc_workspace_words(kN)];
+  kerf::fit::BandVertex<S> vertices[kN];
+  kerf::Vec2<S> scaled[kN];
+  kerf::Vec2<S> tangents[kN];
+  kerf::fit::BandWidth<S> widths[kN];
+  kerf::fit::BiarcPiece<S> pieces[kN];
+};
+BiarcStatic<double> g_ad;
+BiarcStatic<kerf::Fixed> g_af;
+
+// The biarc fit of the parabola's points at `tol`, tangents estimated.
+template <class S>
+std::uint32_t biarc_pieces(const FitStatic<S>& pts, BiarcStatic<S>& st, S tol) {
+  for (std::size_t k = 0; k < kN; ++k) st.widths[k] = {tol, tol};
+  kerf::fit::estimate_tangents<S>({pts.points, kN}, {st.tangents, kN});
+  const kerf::fit::BiarcWorkspace<S> ws{st.words, st.vertices, st.scaled};
+  const auto r = kerf::fit::fit_biarc_min_count<S>({pts.points, kN}, {st.tangents, kN}, {st.widths, kN}, {},
+                                                   ws, st.pieces);
+  return r.ok() ? r.value().pieces : 0;
+}
 
 // The band fit of the parabola's points at `tol` on both sides.
 template <class S>
@@ -184,6 +209,8 @@ int main(int argc, char** argv) {
                                            kerf::Fixed(100));
   const std::uint32_t bd = band_pieces<double>(g_fd, g_bd, 0.0183);
   const std::uint32_t bf = band_pieces<kerf::Fixed>(g_ff, g_bf, kerf::Fixed(0.0183));
+  const std::uint32_t ad = biarc_pieces<double>(g_fd, g_ad, 0.0183);
+  const std::uint32_t af = biarc_pieces<kerf::Fixed>(g_ff, g_af, kerf::Fixed(0.0183));
   g_armed = false;
 
   int failed = 0;
@@ -197,6 +224,8 @@ int main(int argc, char** argv) {
   check(tf > 0 && (tf - td) * (tf - td) <= 4, "fixed interpolation reaches the end within 2 periods of double");
   check(bd == 5, "double band fit of the parabola at 0.0183: 5 pieces");
   check(bf == 5, "fixed band fit of the parabola at 0.0183: 5 pieces");
+  check(ad == 4, "double biarc fit of the parabola at 0.0183: 4 biarcs");
+  check(af == 4, "fixed biarc fit of the parabola at 0.0183: 4 biarcs");
   check(ns_big == 5 && forced_big == 0, "stream fit, window 256: 5 pieces, no forced commit");
   check(ns_small >= 5 && forced_small > 0, "stream fit, window 32: forced commits, >= 5 pieces");
   check(nb_big == 5, "band stream fit, window 256: 5 pieces (the whole-input count)");
