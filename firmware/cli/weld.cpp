@@ -443,7 +443,9 @@ bool weld_gcode(const io::GcodeFile& g, const WeldOptions& opts, std::string& ou
   stats = WeldStats{};
   stats.decimals = opts.decimals >= 0 ? opts.decimals : std::max<int>(3, static_cast<int>(g.decimals));
   out.clear();
-  out.reserve(g.blocks.size() * 24);
+  std::size_t bytes = 0;
+  for (const io::GBlock& b : g.blocks) bytes += b.text.size() + b.end.size();
+  out.reserve(bytes + bytes / 8);  // arcs shorten the text; a "G1 " added after one lengthens it
   Welder w{g, opts, stats, Emitter(out), {}};
   std::size_t next = 0;
   for (std::size_t p = 0; p < g.polylines.size(); ++p) {
