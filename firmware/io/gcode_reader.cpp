@@ -338,6 +338,11 @@ GcodeFile read_gcode(const std::string& path) {
     return f;
   }
   std::string text;
+  if (!use_stdin && std::fseek(in, 0, SEEK_END) == 0) {  // one allocation for the whole file
+    const long size = std::ftell(in);
+    if (size > 0) text.reserve(static_cast<std::size_t>(size));
+    std::rewind(in);
+  }
   char buf[65536];
   std::size_t n = 0;
   // Reading stops inside a line longer than kMaxLineBytes (parse_gcode then
