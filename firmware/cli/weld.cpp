@@ -117,15 +117,21 @@ Written write_piece(const Segment<double>& s, P from, const std::vector<P>& pts,
 std::string with_g1(const io::GBlock& b) {
   if (!b.words.empty() && b.words.front().letter == 'N') {
     const std::size_t at = b.words.front().pos + b.words.front().len;
-    return b.text.substr(0, at) + " G1" + b.text.substr(at);
+    std::string s(b.text.substr(0, at));
+    s += " G1";
+    s += b.text.substr(at);
+    return s;
   }
   const std::size_t at = b.text.find_first_not_of(" \t");
-  return b.text.substr(0, at) + "G1 " + b.text.substr(at);
+  std::string s(b.text.substr(0, at));
+  s += "G1 ";
+  s += b.text.substr(at);
+  return s;
 }
 
 std::string word_text(const io::GBlock& b, char letter) {
   for (const io::GWord& w : b.words)
-    if (w.letter == letter) return b.text.substr(w.pos, w.len);
+    if (w.letter == letter) return std::string(b.text.substr(w.pos, w.len));
   return {};
 }
 

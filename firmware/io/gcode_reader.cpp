@@ -46,7 +46,7 @@ double parse_number(const std::string& number) {
 // Splits the words and comments of one line; false with a reason on a form
 // kerf refuses to guess at.
 bool split_words(GBlock& b, std::string& reason) {
-  const std::string& s = b.text;
+  const std::string_view s = b.text;
   std::size_t i = 0;
   while (i < s.size() && (s[i] == ' ' || s[i] == '\t')) ++i;
   if (i < s.size() && s[i] == '/') return reason = "block delete (/) is not supported", false;
@@ -58,12 +58,12 @@ bool split_words(GBlock& b, std::string& reason) {
     if (c == ' ' || c == '\t') {
       ++i;
     } else if (c == ';') {
-      b.comments.push_back(s.substr(i));
+      b.comments.emplace_back(s.substr(i));
       break;
     } else if (c == '(') {
       const std::size_t close = s.find(')', i);
       if (close == std::string::npos) return reason = "unclosed ( comment", false;
-      b.comments.push_back(s.substr(i, close + 1 - i));
+      b.comments.emplace_back(s.substr(i, close + 1 - i));
       i = close + 1;
     } else if (c == '#') {
       return reason = "parameters (#n) are not supported", false;
@@ -100,7 +100,7 @@ bool split_words(GBlock& b, std::string& reason) {
         // Letters run together ("ATAN", "XYZ") are a name; a letter, blanks and
         // the next word ("G1 X Y1") is a word whose number is missing.
         if (i + 1 < s.size() && std::isalpha(static_cast<unsigned char>(s[i + 1])) != 0)
-          return reason = "not a word: \"" + s.substr(i, s.find_first_of(" \t;(", i) - i) +
+          return reason = "not a word: \"" + std::string(s.substr(i, s.find_first_of(" \t;(", i) - i)) +
                           "\" (macros and named functions are not supported)", false;
         return reason = "word " + word + " has no number", false;
       }
@@ -109,12 +109,12 @@ bool split_words(GBlock& b, std::string& reason) {
       GWord w;
       w.letter = letter;
       w.value = parse_number(number);
-      w.pos = i;
-      w.len = end - i;
+      w.pos = static_cast<std::uint32_t>(i);
+      w.len = static_cast<std::uint32_t>(end - i);
       if (!std::isfinite(w.value) || std::fabs(w.value) > kMaxCoordinate)
-        return reason = "number out of range: \"" + s.substr(i, end - i) + "\"", false;
+        return reason = "number out of range: \"" + std::string(s.substr(i, end - i)) + "\"", false;
       if ((letter == 'X' || letter == 'Y') && after_point > b.decimals) b.decimals = after_point;
-      if (b.words.empty()) b.words.reserve(6);  // one allocation for a usual block (N G X Y F)
+      if (b.words.empty()) b.words.reserve(4);  // one allocation for a usual block (G1 X Y, N G X Y)
       b.words.push_back(w);
       i = j;
     } else {
@@ -126,7 +126,7 @@ bool split_words(GBlock& b, std::string& reason) {
 
 int code10(double v) { return static_cast<int>(std::lround(v * 10.0)); }
 
-std::string word_text(const GBlock& b, const GWord& w) { return b.text.substr(w.pos, w.len); }
+std::string word_text(const GBlock& b, const GWord& w) { return std::string(b.text.substr(w.pos, w.len)); }
 
 // Applies one block to the modal state; false with a reason on a block kerf
 // cannot follow.
@@ -286,9 +286,13 @@ void collect_polylines(GcodeFile& f) {
 
 }  // namespace
 
-GcodeFile parse_gcode(std::string_view text, std::string display_name) {
+namespace {
+
+GcodeFile parse_source(std::shared_ptr<const std::string> source, std::string display_name) {
   GcodeFile f;
   f.file = std::move(display_name);
+  f.source = std::move(source);
+  const std::string_view text = *f.source;
   State st;
   // One block per line, reserved at once: growing a vector of 40k blocks
   // moved and faulted in megabytes (a third of the read).
@@ -307,10 +311,10 @@ GcodeFile parse_gcode(std::string_view text, std::string display_name) {
     }
     GBlock b;
     b.line = line;
-    b.text.assign(text.substr(i, j - i));
+    b.text = text.substr(i, j - i);
     if (j < text.size()) {
       const bool crlf = text[j] == '\r' && j + 1 < text.size() && text[j + 1] == '\n';
-      b.end.assign(text.substr(j, crlf ? 2 : 1));
+      b.end = crlf ? "\r\n" : text[j] == '\r' ? "\r" : "\n";
       j += crlf ? 2 : 1;
     }
     i = j;
@@ -326,6 +330,12 @@ GcodeFile parse_gcode(std::string_view text, std::string display_name) {
   collect_polylines(f);
   f.ok = true;
   return f;
+}
+
+}  // namespace
+
+GcodeFile parse_gcode(std::string_view text, std::string display_name) {
+  return parse_source(std::make_shared<const std::string>(text), std::move(display_name));
 }
 
 GcodeFile read_gcode(const std::string& path) {
@@ -366,7 +376,7 @@ GcodeFile read_gcode(const std::string& path) {
     f.reason = "read error";
     return f;
   }
-  return parse_gcode(text, f.file);
+  return parse_source(std::make_shared<const std::string>(std::move(text)), f.file);
 }
 
 std::string describe_error(const GcodeFile& f) {
