@@ -323,7 +323,9 @@ struct Welder {
                      first))
         return false;
       std::size_t first_kept = kept;
-      if (two_pass && trouble > 0) {
+      // Without trouble each piece is one move (a kept single segment with
+      // no repeated points between): no plan of the same count has fewer.
+      if (two_pass && (trouble > 0 || moves_of(first, from_index) > first.size())) {
         again.clear();
         P again_from = from;
         if (!plan_part(simple, begin, k, kept_index, pts, fit_tol, moved, tol, fine, again_from, again))
