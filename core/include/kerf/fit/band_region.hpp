@@ -113,6 +113,9 @@ class BandRegion {
   // The chain of cell k on `side` (+1 left, -1 right), from gate k's end to
   // gate k+1's end, both included.
   void chain(std::uint32_t k, int side, BandChain<S>& out) const;
+  // The same chain in the cache (built there if missing), or nullptr
+  // without one. Valid until the next chain call.
+  const BandChain<S>* cached_chain(std::uint32_t k, int side) const;
 
   // Keeps the chains built since in `slots` (a power of two of them, by
   // cell; fewer than two: no cache): the pair test asks for the same cells
