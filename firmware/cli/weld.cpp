@@ -117,15 +117,21 @@ Written write_piece(const Segment<double>& s, P from, const std::vector<P>& pts,
 std::string with_g1(const io::GBlock& b) {
   if (!b.words.empty() && b.words.front().letter == 'N') {
     const std::size_t at = b.words.front().pos + b.words.front().len;
-    return b.text.substr(0, at) + " G1" + b.text.substr(at);
+    std::string s(b.text.substr(0, at));
+    s += " G1";
+    s += b.text.substr(at);
+    return s;
   }
   const std::size_t at = b.text.find_first_not_of(" \t");
-  return b.text.substr(0, at) + "G1 " + b.text.substr(at);
+  std::string s(b.text.substr(0, at));
+  s += "G1 ";
+  s += b.text.substr(at);
+  return s;
 }
 
 std::string word_text(const io::GBlock& b, char letter) {
   for (const io::GWord& w : b.words)
-    if (w.letter == letter) return b.text.substr(w.pos, w.len);
+    if (w.letter == letter) return std::string(b.text.substr(w.pos, w.len));
   return {};
 }
 
@@ -203,32 +209,11 @@ struct Welder {
     if (!b.unknown.empty()) offset = {};  // homing, offsets: the input's own coordinates again
   }
 
-  double tie_break(const std::string& criterion) const {
-    return opts.tie_break < 0 ? tie_break_for(criterion) : opts.tie_break;
-  }
-
-  // Fits pts and returns the pieces over pts' indices; splits at sharp turns.
-  bool fit(const std::vector<P>& pts, double tol, std::vector<fit::Piece<double>>& pieces) {
-    std::size_t begin = 0;
-    for (std::size_t k = 1; k <= pts.size() - 1; ++k) {
-      const bool last = k == pts.size() - 1;
-      const bool turn = !last && opts.split_turns && (pts[k] - pts[k - 1]).dot(pts[k + 1] - pts[k]) < 0;
-      if (!last && !turn) continue;
-      const std::vector<P> part(pts.begin() + static_cast<std::ptrdiff_t>(begin),
-                                pts.begin() + static_cast<std::ptrdiff_t>(k) + 1);
-      std::vector<fit::Piece<double>> got;
-      Status status = Status::ok;
-      if (!fit_job(part, {}, tol, opts.criterion, got, error, status, "double", tie_break(opts.criterion))) return false;
-      for (fit::Piece<double> p : got) {
-        p.first += static_cast<std::uint32_t>(begin);
-        p.last += static_cast<std::uint32_t>(begin);
-        pieces.push_back(p);
-      }
-      begin = k;
-      if (opts.progress) opts.progress(current->point_block[k], g.blocks.size());
-    }
-    return true;
-  }
+  // The trouble resolve met in the run being planned: pieces refitted or
+  // kept as their input lines.
+  std::size_t trouble = 0;
+  std::size_t kept = 0;
+  bool closed_part = false;  // the part being planned ends where it starts
 
   bool weld(const io::GPolyline& pl) {
     current = &pl;
@@ -256,16 +241,10 @@ struct Welder {
     std::vector<std::size_t> kept_index;
     double moved = 0;
     const std::vector<P> simple = without_jitter(pts, tol * opts.jitter, kept_index, moved);
-    std::vector<fit::Piece<double>> pieces;
-    if (!fit(simple, fit_tol - moved, pieces)) return false;
-    for (fit::Piece<double>& pc : pieces) {
-      pc.first = static_cast<std::uint32_t>(kept_index[pc.first]);
-      pc.last = static_cast<std::uint32_t>(kept_index[pc.last]);
-    }
-    ++stats.polylines;
     std::vector<Planned> plan;
     P from = pts.front() + offset;
-    if (!resolve(pts, pieces, fit_tol, tol, 0, from, plan)) return false;
+    if (!plan_parts(simple, kept_index, pts, from_index, fit_tol, moved, tol, from, plan)) return false;
+    ++stats.polylines;
     offset = from - pts.back();
     std::size_t next_block = pl.first_block;
     for (std::size_t k = 0; k < plan.size(); ++k) {
@@ -316,6 +295,84 @@ struct Welder {
     Written written;
   };
 
+  // Plans the jitter-free run `simple` part by part: it is fitted
+  // separately at turns sharper than 90 degrees. With the band criterion each
+  // part is fitted first without the fitters' tie-break (each of its steps is
+  // a whole search): the count is the same, only the pieces' place in the
+  // band differs. When a piece then fails the rounding check (refitted or
+  // kept, or a loop closed by a single segment), the part is planned
+  // again with weld's tie-break, whose pieces hug the input, and that plan is
+  // kept unless it has more moves: never more moves than the tie-break alone.
+  bool plan_parts(const std::vector<P>& simple, const std::vector<std::size_t>& kept_index,
+                  const std::vector<P>& pts, const std::vector<std::size_t>& from_index, double fit_tol,
+                  double moved, double tol, P& from, std::vector<Planned>& plan) {
+    const double fine = opts.tie_break < 0 ? tie_break_for(opts.criterion) : opts.tie_break;
+    // The vertex criterion's fast pieces leave the band often (refits): it
+    // would plan most parts twice.
+    const bool two_pass = opts.tie_break < 0 && fine < 1 && opts.criterion == "band";
+    std::vector<Planned> first, again;
+    std::size_t begin = 0;
+    for (std::size_t k = 1; k <= simple.size() - 1; ++k) {
+      const bool last = k == simple.size() - 1;
+      const bool turn =
+          !last && opts.split_turns && (simple[k] - simple[k - 1]).dot(simple[k + 1] - simple[k]) < 0;
+      if (!last && !turn) continue;
+      first.clear();
+      P first_from = from;
+      if (!plan_part(simple, begin, k, kept_index, pts, fit_tol, moved, tol, two_pass ? 1.0 : fine, first_from,
+                     first))
+        return false;
+      std::size_t first_kept = kept;
+      // Without trouble each piece is one move (a kept single segment with
+      // no repeated points between): no plan of the same count has fewer.
+      if (two_pass && (trouble > 0 || moves_of(first, from_index) > first.size())) {
+        again.clear();
+        P again_from = from;
+        if (!plan_part(simple, begin, k, kept_index, pts, fit_tol, moved, tol, fine, again_from, again))
+          return false;
+        if (moves_of(again, from_index) <= moves_of(first, from_index)) {
+          first.swap(again);
+          first_from = again_from;
+          first_kept = kept;
+        }
+      }
+      plan.insert(plan.end(), first.begin(), first.end());
+      from = first_from;
+      stats.kept_pieces += first_kept;
+      begin = k;
+      if (opts.progress) opts.progress(current->point_block[from_index[kept_index[k]]], g.blocks.size());
+    }
+    return true;
+  }
+
+  // Fits simple[begin..end] with `tie_break` and plans its pieces over pts
+  // (resolve); counts the trouble met.
+  bool plan_part(const std::vector<P>& simple, std::size_t begin, std::size_t end,
+                 const std::vector<std::size_t>& kept_index, const std::vector<P>& pts, double fit_tol,
+                 double moved, double tol, double tie_break, P& from, std::vector<Planned>& plan) {
+    const std::vector<P> part(simple.begin() + static_cast<std::ptrdiff_t>(begin),
+                              simple.begin() + static_cast<std::ptrdiff_t>(end) + 1);
+    std::vector<fit::Piece<double>> pieces;
+    Status status = Status::ok;
+    if (!fit_job(part, {}, fit_tol - moved, opts.criterion, pieces, error, status, "double", tie_break))
+      return false;
+    for (fit::Piece<double>& pc : pieces) {
+      pc.first = static_cast<std::uint32_t>(kept_index[pc.first + begin]);
+      pc.last = static_cast<std::uint32_t>(kept_index[pc.last + begin]);
+    }
+    trouble = 0;
+    kept = 0;
+    closed_part = simple[begin] == simple[end];
+    return resolve(pts, pieces, fit_tol, tol, 0, from, plan);
+  }
+
+  // The moves a plan writes for the run (input blocks from_index apart).
+  static std::size_t moves_of(const std::vector<Planned>& plan, const std::vector<std::size_t>& from_index) {
+    std::size_t moves = 0;
+    for (const Planned& p : plan) moves += p.keep ? from_index[p.piece.last] - from_index[p.piece.first] : 1;
+    return moves;
+  }
+
   // Writes each piece from the rounded end of the one before, with more
   // decimals when rounding costs too much; a piece still over tol (or whose
   // drawn arc leaves the band, which the vertex criterion allows) is fitted
@@ -326,6 +383,9 @@ struct Welder {
     for (const fit::Piece<double>& pc : pieces) {
       Planned pl{pc, false, {}};
       if (pc.last - pc.first < 2) {  // a single segment: its input line is already the best
+        // Closing a loop beside other pieces: an unbalanced split (a full
+        // circle drawn as one arc and a line); the tie-break's is tried too.
+        if (closed_part && pieces.size() > 1) ++trouble;
         pl.keep = true;
         plan.push_back(pl);
         from = pts[pc.last];
@@ -354,6 +414,7 @@ struct Welder {
         from = pl.written.end;
         continue;
       }
+      ++trouble;
       if (depth == 0) {
         const std::vector<P> part(pts.begin() + pc.first, pts.begin() + pc.last + 1);
         std::vector<fit::Piece<double>> again;
@@ -367,7 +428,7 @@ struct Welder {
         if (!resolve(pts, again, fit_tol / 2, tol, 1, from, plan)) return false;
         continue;
       }
-      ++stats.kept_pieces;
+      ++kept;
       pl.keep = true;
       plan.push_back(pl);
       from = pts[pc.last];
@@ -390,7 +451,9 @@ bool weld_gcode(const io::GcodeFile& g, const WeldOptions& opts, std::string& ou
   stats = WeldStats{};
   stats.decimals = opts.decimals >= 0 ? opts.decimals : std::max<int>(3, static_cast<int>(g.decimals));
   out.clear();
-  out.reserve(g.blocks.size() * 24);
+  std::size_t bytes = 0;
+  for (const io::GBlock& b : g.blocks) bytes += b.text.size() + b.end.size();
+  out.reserve(bytes + bytes / 8);  // arcs shorten the text; a "G1 " added after one lengthens it
   Welder w{g, opts, stats, Emitter(out), {}};
   std::size_t next = 0;
   for (std::size_t p = 0; p < g.polylines.size(); ++p) {

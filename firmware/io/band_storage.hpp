@@ -12,12 +12,17 @@ namespace kerf::io {
 class BandStorage {
  public:
   explicit BandStorage(std::size_t n)
-      : words_(fit::band_workspace_words(n)), points_(n), vertices_(n), pieces_(n > 1 ? n - 1 : 1) {}
+      : words_(fit::band_workspace_words(n)),
+        points_(n),
+        vertices_(n),
+        chains_(fit::band_chain_slots(n)),
+        pieces_(n > 1 ? n - 1 : 1) {}
 
   fit::BandWorkspace<double> workspace() {
     return {{words_.data(), words_.size()},
             {points_.data(), points_.size()},
-            {vertices_.data(), vertices_.size()}};
+            {vertices_.data(), vertices_.size()},
+            {chains_.data(), chains_.size()}};
   }
   Span<fit::Piece<double>> pieces() { return {pieces_.data(), pieces_.size()}; }
 
@@ -25,6 +30,7 @@ class BandStorage {
   std::vector<std::uint32_t> words_;
   std::vector<Vec2<double>> points_;
   std::vector<fit::BandVertex<double>> vertices_;
+  std::vector<fit::BandChainSlot<double>> chains_;
   std::vector<fit::Piece<double>> pieces_;
 };
 

@@ -16,6 +16,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -30,13 +31,13 @@ enum class Motion : std::uint8_t { none, rapid, linear, cw, ccw };
 struct GWord {
   char letter = 0;      // upper case
   double value = 0.0;
-  std::size_t pos = 0;  // where the word starts in GBlock::text
-  std::size_t len = 0;  // its length as written (blanks inside included)
+  std::uint32_t pos = 0;  // where the word starts in GBlock::text (lines are at most 64 KiB)
+  std::uint32_t len = 0;  // its length as written (blanks inside included)
 };
 
 struct GBlock {
   std::size_t line = 0;        // 1-based source line
-  std::string text;            // the line as read, without its line end
+  std::string_view text;       // the line as read, without its line end (in GcodeFile::source)
   std::string end;             // its line end as read: "\n", "\r\n", "\r" or "" (last line)
   std::vector<GWord> words;
   std::vector<std::string> comments;  // each comment as written, delimiters included
@@ -75,6 +76,9 @@ struct GPolyline {
 struct GcodeFile {
   bool ok = false;
   std::string file;
+  // The file's text, which the blocks' text views point into: one buffer
+  // instead of an allocation per line (shared, so that copies stay valid).
+  std::shared_ptr<const std::string> source;
   std::size_t line = 0;  // of the error
   std::string reason;
   std::vector<GBlock> blocks;

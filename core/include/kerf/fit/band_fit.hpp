@@ -24,7 +24,16 @@ struct BandWorkspace {
   Span<std::uint32_t> words;      // >= band_workspace_words(n)
   Span<Vec2<S>> points;           // >= n: the points scaled by a power of two
   Span<BandVertex<S>> vertices;   // >= n: the region
+  Span<BandChainSlot<S>> chains{};  // optional: a cache of the region's chains (BandRegion::cache_chains)
 };
+
+// A chain cache for n points: the cells a search's layer spans, both sides;
+// more is rarely used.
+constexpr std::size_t band_chain_slots(std::size_t n) {
+  std::size_t size = 2;
+  while (size < 2 * n && size < 512) size *= 2;
+  return size;
+}
 
 // Fewest pieces inside the band of `widths` (one per point, each side >= 0,
 // some side > 0). Among all solutions with that count it returns one whose

@@ -89,6 +89,7 @@ BandRegion<S> build_region(const Problem<S>& pb, S scale) {
   const auto n = static_cast<std::uint32_t>(pb.pts.size());
   BandRegion<S> region(pb.pts.data(), n, pb.ws.vertices.data());
   region.build(pb.widths, scale * pb.factor);
+  region.cache_chains(pb.ws.chains);
   return region;
 }
 

@@ -83,26 +83,15 @@ class BandPair {
       range.lo = S(2);
       return false;
     }
-    BandChain<S> c;
-    r_.chain(k, -orient_, c);
-    // A width below the coordinates' resolution puts the chain's first or
-    // last point a rounding step beside a or b instead of on it. The
-    // segment test then finds its binding point within a step of the end
-    // (t rounds to 0 or 1 and is dropped) and skips the end's limit: arcs
-    // far outside the band passed (tests/fuzz/corpus/fit_band/
-    // sharp_turn_arc_out_of_band, one_sided_sub_ulp_width). Such a point is
-    // the end itself.
-    for (int t = 0; t < c.size; ++t) c.pt[t] = snapped(c.pt[t]);
-    // Every point, the one shared with the previous cell too: cells are not
-    // visited in order, and the segment test below needs both ends applied.
-    for (int t = 0; t < c.size; ++t) outside(range, c.pt[t]);
-    if (range.empty()) return false;
-    // Clear at both ends of the range means clear inside it (a segment's
-    // valid set is an interval); the ends are taken once, before the
-    // segments narrow the range, which only makes that test stricter.
-    const Vec2<S> lo = direction_of(range.lo);
-    const Vec2<S> hi = direction_of(range.hi);
-    for (int t = 0; t + 1 < c.size && !range.empty(); ++t) segment(range, lo, hi, c.pt[t], c.pt[t + 1]);
+    // The cached chain is read in place (a BandChain is 40 points, zeroed
+    // on construction: a copy per cell test cost more than the test).
+    if (const BandChain<S>* cached = r_.cached_chain(k, -orient_)) {
+      if (!chain_conditions(*cached, range)) return false;
+    } else {
+      BandChain<S> c;
+      r_.chain(k, -orient_, c);
+      if (!chain_conditions(c, range)) return false;
+    }
     if (k + 1 < j_) {
       // The arc lies on its bulge side of the chord (offset <= 0), so a gate
       // wholly beyond the chord cannot be cut. The chains imply this where
@@ -155,6 +144,30 @@ class BandPair {
 
  private:
   static S pseudo(Vec2<S> d) { return S(1) - d.x / (Scalar<S>::abs(d.x) + d.y); }
+
+  // Cell conditions of the bulge-side chain c: false when they empty the
+  // range.
+  bool chain_conditions(const BandChain<S>& c, PsiRange<S>& range) const {
+    // A width below the coordinates' resolution puts the chain's first or
+    // last point a rounding step beside a or b instead of on it. The
+    // segment test then finds its binding point within a step of the end
+    // (t rounds to 0 or 1 and is dropped) and skips the end's limit: arcs
+    // far outside the band passed (tests/fuzz/corpus/fit_band/
+    // sharp_turn_arc_out_of_band, one_sided_sub_ulp_width). Such a point is
+    // the end itself: every point is taken snapped.
+    // Every point, the one shared with the previous cell too: cells are not
+    // visited in order, and the segment test below needs both ends applied.
+    for (int t = 0; t < c.size; ++t) outside(range, snapped(c.pt[t]));
+    if (range.empty()) return false;
+    // Clear at both ends of the range means clear inside it (a segment's
+    // valid set is an interval); the ends are taken once, before the
+    // segments narrow the range, which only makes that test stricter.
+    const Vec2<S> lo = direction_of(range.lo);
+    const Vec2<S> hi = direction_of(range.hi);
+    for (int t = 0; t + 1 < c.size && !range.empty(); ++t)
+      segment(range, lo, hi, snapped(c.pt[t]), snapped(c.pt[t + 1]));
+    return true;
+  }
 
   // Intersects the range with the half-plane d.w >= 0.
   static void cut(PsiRange<S>& r, Vec2<S> w) {

@@ -78,6 +78,13 @@ struct BandChain {
   int size = 0;
 };
 
+// One entry of BandRegion's optional chain cache.
+template <class S>
+struct BandChainSlot {
+  std::size_t key = 0;  // 2 k + (side > 0) + 1 for cell k; 0: empty
+  BandChain<S> chain{};
+};
+
 template <class S>
 class BandRegion {
  public:
@@ -106,6 +113,22 @@ class BandRegion {
   // The chain of cell k on `side` (+1 left, -1 right), from gate k's end to
   // gate k+1's end, both included.
   void chain(std::uint32_t k, int side, BandChain<S>& out) const;
+  // The same chain in the cache (built there if missing), or nullptr
+  // without one. Valid until the next chain call.
+  const BandChain<S>* cached_chain(std::uint32_t k, int side) const;
+
+  // Keeps the chains built since in `slots` (a power of two of them, by
+  // cell; fewer than two: no cache): the pair test asks for the same cells
+  // again and again, and a chain costs a corner's chords each time. Call it
+  // after build (which narrows the widths, changing the chains); it clears
+  // the slots. A cached chain is the one chain() builds, bit for bit.
+  void cache_chains(Span<BandChainSlot<S>> slots) {
+    cache_ = slots.size() >= 2 ? slots.data() : nullptr;
+    std::size_t size = 1;
+    while (size * 2 <= slots.size()) size *= 2;
+    cache_mask_ = size - 1;
+    for (std::size_t k = 0; cache_ != nullptr && k < size; ++k) cache_[k].key = 0;
+  }
 
   // Builds R for widths * scale; widths has one entry per vertex.
   // Returns Status::ok; the cells are then convex.
@@ -117,10 +140,13 @@ class BandRegion {
               BandChain<S>& out) const;
   static std::uint8_t split_depth(Vec2<S> e1, Vec2<S> e2, S w, S width);
   bool cell_convex(std::uint32_t k, int& bad_side) const;
+  void build_chain(std::uint32_t k, int side, BandChain<S>& out) const;
 
   const Vec2<S>* p_ = nullptr;
   std::uint32_t n_ = 0;
   BandVertex<S>* v_ = nullptr;
+  BandChainSlot<S>* cache_ = nullptr;  // written through by the const chain()
+  std::size_t cache_mask_ = 0;
 };
 
 }  // namespace kerf::fit

@@ -133,7 +133,30 @@ void BandRegion<S>::corner(std::uint32_t k, std::uint32_t edge, Vec2<S> from, Ve
 }
 
 template <class S>
+const BandChain<S>* BandRegion<S>::cached_chain(std::uint32_t k, int side) const {
+  if (cache_ == nullptr) return nullptr;
+  const std::size_t key = 2 * static_cast<std::size_t>(k) + (side > 0 ? 2 : 1);
+  BandChainSlot<S>& slot = cache_[key & cache_mask_];
+  if (slot.key != key) {
+    build_chain(k, side, slot.chain);
+    slot.key = key;
+  }
+  return &slot.chain;
+}
+
+template <class S>
 void BandRegion<S>::chain(std::uint32_t k, int side, BandChain<S>& out) const {
+  const BandChain<S>* cached = cached_chain(k, side);
+  if (cached == nullptr) {
+    build_chain(k, side, out);
+    return;
+  }
+  out.size = cached->size;
+  for (int t = 0; t < out.size; ++t) out.pt[t] = cached->pt[t];
+}
+
+template <class S>
+void BandRegion<S>::build_chain(std::uint32_t k, int side, BandChain<S>& out) const {
   out.size = 0;
   const BandVertex<S>& a = v_[k];
   const BandVertex<S>& b = v_[k + 1];
