@@ -430,5 +430,26 @@ TEST(BiarcCertifiedError, StraightPartsAreCertifiedToo) {
   EXPECT_LE(g.value().max_error, 0.02 * (1 + 1e-9));
 }
 
+TEST(BiarcCertifiedError, ArcPastAHalfTurnIsBoundedByItsOwnCells) {
+  // 100 points on 350 degrees of a circle of radius 100 at tol 0.05: one
+  // biarc whose first arc turns about 349 degrees. Each gate's line (a
+  // radius) meets that arc a second time across the circle; taking that
+  // crossing as a cell boundary bounded a stretch by a far edge and reported
+  // the diameter (199.9). The true deviation is the chords' sagitta, 0.0466.
+  std::vector<VPoint> p;
+  for (int k = 0; k < 100; ++k) {
+    const double a = k * (350.0 / 99.0) * kPi / 180.0;
+    p.push_back({100 * std::cos(a), 100 * std::sin(a)});
+  }
+  CoreBiarcFitter core(p, {}, 0.05);
+  const auto f = core.fit();
+  ASSERT_TRUE(f.ok());
+  ASSERT_EQ(f.value().pieces, 1u);
+  const double sampled = sampled_deviation(p, core.piece(0));
+  EXPECT_GE(core.piece(0).error, sampled * (1 - 1e-12));
+  EXPECT_LE(core.piece(0).error, sampled + 0.02 * 0.05);
+  EXPECT_LE(f.value().max_error, 0.05);
+}
+
 }  // namespace
 
