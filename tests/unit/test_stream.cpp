@@ -313,14 +313,14 @@ TEST(StreamBand, SmallWindowsStayInTheBandAndWithinTheBound) {
     std::uint32_t l = 0;
     for (std::uint32_t k = 0; k < whole.value().pieces; ++k)
       l = std::max(l, st.pieces()[k].last - st.pieces()[k].first);
-    for (std::uint32_t window : {6u, 9u, 16u, 40u}) {
+    for (std::uint32_t window : {10u, 13u, 16u, 40u}) {
       SCOPED_TRACE(c.name + " tol " + std::to_string(c.tol) + " window " + std::to_string(window));
       const Streamed s = stream_band(c.pts, c.tol, window);
       expect_in_band(c.pts, s.pieces, c.tol);
       EXPECT_LE(s.stats.peak, window);
       EXPECT_GE(s.pieces.size(), whole.value().pieces);
       EXPECT_LE(s.pieces.size(), whole.value().pieces + s.stats.forced * (l - 1));
-      EXPECT_LE(s.stats.forced, (n - 1) / ((window - 1) / 2));
+      EXPECT_LE(s.stats.forced, (n - 1) / ((window - 1 - BandWin::kMargin) / 2));
       lost += s.pieces.size() > whole.value().pieces ? 1 : 0;
     }
   }
@@ -354,7 +354,7 @@ TEST(StreamBand, EqualsWholeInputWhenTheWindowExceedsTheLongestSpan) {
 TEST(StreamBand, CollinearPointsReachOptPlusForced) {
   std::vector<V> pts;
   for (int i = 0; i < 600; ++i) pts.push_back({0.5 * i, 0.25 * i});
-  for (std::uint32_t window : {6u, 10u, 64u}) {
+  for (std::uint32_t window : {10u, 16u, 64u}) {
     SCOPED_TRACE("window " + std::to_string(window));
     const Streamed s = stream_band(pts, 0.01, window);
     EXPECT_GT(s.stats.forced, 0u);
@@ -365,7 +365,8 @@ TEST(StreamBand, CollinearPointsReachOptPlusForced) {
 
 TEST(StreamBand, RefusesBadWidthsAndWindows) {
   auto w = std::make_unique<BandWin>();
-  EXPECT_EQ(w->start(0.1, 0.1, 5), Status::invalid_argument);
+  EXPECT_EQ(w->start(0.1, 0.1, BandWin::kMinWindow - 1), Status::invalid_argument);
+  EXPECT_EQ(w->start(0.1, 0.1, BandWin::kMinWindow), Status::ok);
   EXPECT_EQ(w->start(0.0, 0.0, 64), Status::invalid_argument);
   EXPECT_EQ(w->start(-0.1, 0.2, 64), Status::invalid_argument);
   EXPECT_EQ(w->start(0.0, 0.2, 64), Status::ok);

@@ -95,7 +95,10 @@ class StreamEngine {
 
  public:
   static constexpr std::uint32_t kCapacity = static_cast<std::uint32_t>(N);
-  static constexpr std::uint32_t kMinWindow = 4 + Criterion::kLag + Criterion::kContext;
+  // Points of the window that hold no start of the decision: the context
+  // before the root and the newest points, not labelled yet.
+  static constexpr std::uint32_t kMargin = Criterion::kLag + Criterion::kContext;
+  static constexpr std::uint32_t kMinWindow = 4 + kMargin;
 
   StreamEngine() = default;
   // The criterion may point into its own storage.
@@ -111,7 +114,7 @@ class StreamEngine {
     if (!Scalar<S>::is_finite(p.x) || !Scalar<S>::is_finite(p.y)) return Status::invalid_argument;
     if (size_ > 0 && pts_[size_ - 1] == p) return Status::degenerate;
     if (base_ + size_ >= 0xFFFFFFFFu) return Status::capacity_exceeded;
-    if (size_ == window_) force(sink);
+    if (size_ >= window_) force(sink);
     const std::uint32_t m = size_++;
     pts_[m] = p;
     ++stats_.points;
@@ -146,6 +149,8 @@ class StreamEngine {
 
   const StreamStats& stats() const { return stats_; }
   std::uint32_t window() const { return window_; }
+  // H of the bound: a forced commit moves the root on by at least this.
+  std::uint32_t forced_step() const { return (window_ - 1 - kMargin) / 2; }
 
  protected:
   Status begin(std::uint32_t window) {
@@ -229,9 +234,13 @@ class StreamEngine {
 
   template <class Sink>
   void force(Sink& sink) {
-    const std::uint32_t half = (window_ - 1) / 2;
+    // The cut lies H past the root, and past the context too, so that the
+    // commit frees a point (near the stream's start the root is below it).
+    const std::uint32_t from = root_ + forced_step() > Criterion::kContext + 1
+                                   ? root_ + forced_step()
+                                   : Criterion::kContext + 1;
     std::uint32_t best = labeled_ - 1;  // the newest labelled point is always on the frontier
-    for (std::uint32_t v = labeled_ - 1; v-- > root_ + half;)
+    for (std::uint32_t v = labeled_ - 1; v-- > from;)
       if (live_[v] != 0 && dist_[v] < dist_[best]) best = v;
     ++stats_.forced;
     commit(best, true, sink);

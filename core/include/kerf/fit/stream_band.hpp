@@ -27,8 +27,8 @@ namespace detail {
 
 template <class S, std::size_t N>
 struct BandCriterion {
-  static constexpr std::uint32_t kLag = 1;
-  static constexpr std::uint32_t kContext = 1;
+  static constexpr std::uint32_t kLag = 3;
+  static constexpr std::uint32_t kContext = 3;
 
   BandWidth<S> width{};
   Slots<BandWidth<S>, N> widths;

@@ -1,0 +1,177 @@
+// The streaming fitters (fit/stream.hpp, fit/stream_band.hpp) give exactly
+// the whole-input fitters' pieces at tol itself (no tie-break: tie_break 1)
+// when no commit is forced: the same breakpoints, the same arcs, bit for bit.
+// On the test curves, the G-code corpus's polylines and random curves, with a
+// window holding the whole path and with a window just longer than the
+// longest piece any start can reach (fit/stream.hpp, the reach span).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "io/band_storage.hpp"
+#include "io/fit_storage.hpp"
+#include "io/gcode_reader.hpp"
+#include "kerf/fit/band_fit.hpp"
+#include "kerf/fit/fit.hpp"
+#include "kerf/fit/stream.hpp"
+#include "kerf/fit/stream_band.hpp"
+
+namespace {
+
+using kerf::Status;
+using kerf::fit::Method;
+using kerf::fit::Piece;
+using V = kerf::Vec2<double>;
+
+constexpr std::uint32_t kCap = 1u << 13;
+
+std::vector<V> load(const std::string& name) {
+  std::ifstream in(std::string(KERF_TEST_DATA_DIR) + "/curves/" + name);
+  std::vector<V> p;
+  double x, y;
+  while (in >> x >> y) p.push_back({x, y});
+  return p;
+}
+
+std::vector<V> random_curve(unsigned seed, std::size_t n) {
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> turn(0.0, 0.08);
+  std::uniform_real_distribution<double> noise(-0.002, 0.002);
+  std::vector<V> p;
+  double x = 0, y = 0, h = 0, k = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    p.push_back({x + noise(rng), y + noise(rng)});
+    k = 0.9 * k + turn(rng);
+    h += k * 0.1;
+    x += std::cos(h);
+    y += std::sin(h);
+  }
+  return p;
+}
+
+struct Path {
+  std::string name;
+  std::vector<V> pts;
+  double tol;
+};
+
+std::vector<Path> paths() {
+  std::vector<Path> c;
+  for (const char* f : {"parabola.txt", "circle.txt", "ellipse.txt", "sine.txt", "spiral.txt"})
+    for (double tol : {0.0183, 0.1, 1.0}) c.push_back({f, load(f), tol});
+  for (unsigned seed = 1; seed <= 4; ++seed)
+    c.push_back({"random " + std::to_string(seed), random_curve(seed, 600), 0.05});
+  for (const char* f : {"cncjs_Circle_Diamond_Square_Calibration.gcode", "cncjs_jsdc-laser.gcode",
+                        "cncjs_tball-engrave.gcode"}) {
+    const kerf::io::GcodeFile g = kerf::io::read_gcode(std::string(KERF_TEST_DATA_DIR) + "/gcode/" + f);
+    EXPECT_TRUE(g.ok) << f;
+    for (std::size_t p = 0; p < g.polylines.size(); ++p) {
+      std::vector<V> pd;
+      for (const V& v : g.polylines[p].points)
+        if (pd.empty() || !(pd.back() == v)) pd.push_back(v);
+      if (pd.size() < 3 || pd.size() > kCap) continue;
+      c.push_back({std::string(f) + " polyline " + std::to_string(p + 1), pd, 0.025});
+    }
+  }
+  return c;
+}
+
+struct Streamed {
+  std::vector<Piece<double>> pieces;
+  kerf::fit::StreamStats stats;
+};
+
+template <class W, class Start>
+Streamed stream(W& w, const std::vector<V>& pts, Start start) {
+  Streamed out;
+  auto sink = [&out](const Piece<double>& p, bool) { out.pieces.push_back(p); };
+  EXPECT_EQ(start(w), Status::ok);
+  for (const V& p : pts) EXPECT_EQ(w.push(p, sink), Status::ok);
+  EXPECT_EQ(w.finish(sink), Status::ok);
+  out.stats = w.stats();
+  return out;
+}
+
+std::vector<Piece<double>> whole_vertex(const std::vector<V>& pts, double tol) {
+  kerf::io::FitStorage st(pts.size());
+  const auto r = kerf::fit::fit_min_count<double>({pts.data(), pts.size()}, tol, Method::optimal,
+                                                  st.workspace(), st.pieces(), 1.0);
+  EXPECT_TRUE(r.ok());
+  std::vector<Piece<double>> out;
+  for (std::uint32_t k = 0; r.ok() && k < r.value().pieces; ++k) out.push_back(st.piece(k));
+  return out;
+}
+
+std::vector<Piece<double>> whole_band(const std::vector<V>& pts, double tol) {
+  kerf::io::BandStorage st(pts.size());
+  std::vector<kerf::fit::BandWidth<double>> w(pts.size(), {tol, tol});
+  const auto r = kerf::fit::fit_band_min_count<double>({pts.data(), pts.size()}, {w.data(), w.size()},
+                                                       st.workspace(), st.pieces(), 1.0);
+  EXPECT_TRUE(r.ok());
+  std::vector<Piece<double>> out;
+  for (std::uint32_t k = 0; r.ok() && k < r.value().pieces; ++k) out.push_back(st.pieces()[k]);
+  return out;
+}
+
+// Bit for bit: breakpoints, kind, ends, centre, direction, error.
+int differences(const std::vector<Piece<double>>& a, const std::vector<Piece<double>>& b,
+                const std::string& what) {
+  if (a.size() != b.size()) {
+    ADD_FAILURE() << what << ": " << a.size() << " pieces streamed, " << b.size() << " whole";
+    return 1;
+  }
+  int bad = 0;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    const auto& p = a[k];
+    const auto& q = b[k];
+    const bool same = p.first == q.first && p.last == q.last && p.segment.kind == q.segment.kind &&
+                      p.segment.start == q.segment.start && p.segment.end == q.segment.end &&
+                      p.segment.dir == q.segment.dir &&
+                      (!p.segment.is_arc() || p.segment.centre == q.segment.centre);
+    if (!same && bad++ < 3)
+      ADD_FAILURE() << what << ": piece " << k << " streamed " << p.first << ".." << p.last
+                    << " centre (" << p.segment.centre.x << "," << p.segment.centre.y << "), whole "
+                    << q.first << ".." << q.last << " centre (" << q.segment.centre.x << ","
+                    << q.segment.centre.y << ")";
+  }
+  return bad;
+}
+
+TEST(StreamExact, VertexEqualsWholeInputPieceForPiece) {
+  std::uint32_t forced = 0, compared = 0;
+  for (const Path& c : paths()) {
+    auto w = std::make_unique<kerf::fit::PointWindow<double, kCap>>();
+    const std::uint32_t window = static_cast<std::uint32_t>(std::min<std::size_t>(kCap, c.pts.size() + 1));
+    const Streamed s = stream(*w, c.pts, [&](auto& win) { return win.start(c.tol, Method::optimal, std::max(window, 16u)); });
+    forced += s.stats.forced;
+    if (s.stats.forced > 0) continue;
+    ++compared;
+    differences(s.pieces, whole_vertex(c.pts, c.tol), c.name + " tol " + std::to_string(c.tol));
+  }
+  std::printf("vertex: %u paths compared, %u forced commits\n", compared, forced);
+  EXPECT_EQ(forced, 0u);
+}
+
+TEST(StreamExact, BandEqualsWholeInputPieceForPiece) {
+  std::uint32_t forced = 0, compared = 0;
+  for (const Path& c : paths()) {
+    auto w = std::make_unique<kerf::fit::BandWindow<double, kCap>>();
+    const std::uint32_t window = static_cast<std::uint32_t>(std::min<std::size_t>(kCap, c.pts.size() + 1));
+    const Streamed s = stream(*w, c.pts, [&](auto& win) { return win.start(c.tol, c.tol, std::max(window, 16u)); });
+    forced += s.stats.forced;
+    if (s.stats.forced > 0) continue;
+    ++compared;
+    differences(s.pieces, whole_band(c.pts, c.tol), c.name + " band tol " + std::to_string(c.tol));
+  }
+  std::printf("band: %u paths compared, %u forced commits\n", compared, forced);
+  EXPECT_EQ(forced, 0u);
+}
+
+}  // namespace
