@@ -47,25 +47,22 @@ bool parse_window(const std::string& text, std::uint32_t& out, std::string& erro
   return true;
 }
 
-std::string point_text(Vec2<double> p) {
-  std::string s = "(";  // built by += (armhf GCC 12 warns falsely on "literal" + string&&)
-  s += io::format_number(p.x);
-  s += ',';
-  s += io::format_number(p.y);
-  s += ')';
-  return s;
-}
-
-// Writes one piece in the esgi format's line form, and flushes it.
+// Writes one piece as `kerf fit` writes it in the esgi format, and flushes
+// it. The number format is the whole-input writer's (io/fit_output.hpp),
+// with what it takes from the whole input taken from the input so far: the
+// resolution from the largest coordinate read, the digits the largest over
+// the pieces written. Where the rest of the input changes neither (always,
+// for coordinates below 1e6 mm and tol >= 1e-3 mm), the lines are the same.
 struct PieceWriter {
   double max_error = 0.0;
+  double tol = 0.0;      // the widest width asked for
+  double biggest = 0.0;  // the largest |coordinate| read so far
+  int digits = io::kDigits;
   bool failed = false;
+  void saw(Vec2<double> p) { biggest = std::fmax(biggest, std::fmax(std::fabs(p.x), std::fabs(p.y))); }
   void operator()(const fit::Piece<double>& piece, bool) {
-    const Segment<double>& s = piece.segment;
-    std::string line = s.is_arc() ? "A " : "L ";
-    line += point_text(s.start) + ' ' + point_text(s.end);
-    if (s.is_arc()) line += ' ' + point_text(s.centre) + (s.dir > 0 ? " 1" : " -1");
-    line += '\n';
+    digits = std::max(digits, io::coordinate_digits(Span<const fit::Piece<double>>(&piece, 1), tol));
+    const std::string line = io::esgi_piece_line(piece.segment, biggest * 1e-12, digits);
     if (std::fputs(line.c_str(), stdout) < 0 || std::fflush(stdout) != 0) failed = true;
     if (piece.error > max_error) max_error = piece.error;
   }
@@ -107,6 +104,10 @@ int check_stream_options(const FitOptions& opts, StreamSetup& st) {
   if (!opts.pieces.empty())
     return usage_error("--stream: needs --tol; a piece budget (--pieces) needs the whole input");
   if (opts.numeric != "double") return usage_error("--stream: runs in double only");
+  if (opts.tie_break == "smallest")
+    return usage_error("--tie-break smallest: needs the whole input (--stream writes --tie-break none)");
+  if (!opts.tie_break.empty() && opts.tie_break != "none")
+    return usage_error("--tie-break: expected smallest or none, got " + quoted(opts.tie_break));
   if (opts.format != "esgi") return usage_error("--stream: writes the esgi format only");
   if (opts.output != "-")
     return usage_error("--stream: writes to stdout as it goes (an -o file could not be written atomically)");
@@ -133,14 +134,16 @@ int check_stream_options(const FitOptions& opts, StreamSetup& st) {
 // Feeds the points to w (started) and writes the pieces; the exit code.
 template <class W>
 int run_window(W& w, PointStream& in, const char* criterion, const std::string& method,
-               std::uint32_t window, const std::string& tol_text) {
+               std::uint32_t window, double tol, const std::string& tol_text) {
   std::printf("# kerf fit: criterion %s, method %s, stream, window %u\n# tol %s\n", criterion,
               method.c_str(), window, tol_text.c_str());
   PieceWriter out;
+  out.tol = tol;
   Vec2<double> p;
   for (;;) {
     const PointStream::Next got = in.next(p);
     if (got == PointStream::Next::end) break;
+    if (got == PointStream::Next::point) out.saw(p);
     const Status s = got == PointStream::Next::error ? Status::invalid_argument : w.push(p, out);
     if (got == PointStream::Next::error || s != Status::ok) {
       const std::string why = got == PointStream::Next::error ? in.reason() : to_string(s);
@@ -195,14 +198,15 @@ int run_fit_stream(const FitOptions& opts) {
   if (st.band) {
     const std::unique_ptr<BandWindow> w(new BandWindow);
     if (w->start(st.left, st.right, st.window) != Status::ok)
-      return usage_error("--window: the band criterion needs at least 6");
-    const std::string tol = io::format_number(std::max(st.left, st.right));
-    return run_window(*w, in, "band", opts.method, st.window, tol);
+      return usage_error("--window: the band criterion needs at least " +
+                         std::to_string(BandWindow::kMinWindow));
+    const double widest = std::max(st.left, st.right);
+    return run_window(*w, in, "band", opts.method, st.window, widest, io::format_number(widest));
   }
   const std::unique_ptr<Window> w(new Window);
   if (w->start(st.tol, st.method, st.window) != Status::ok)
     return usage_error("--window: the vertex criterion needs at least 4");
-  return run_window(*w, in, "vertex", opts.method, st.window, io::format_number(st.tol));
+  return run_window(*w, in, "vertex", opts.method, st.window, st.tol, io::format_number(st.tol));
 }
 
 }  // namespace kerf::cli
