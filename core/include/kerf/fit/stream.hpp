@@ -62,6 +62,7 @@ struct StreamStats {
   std::uint64_t pieces = 0;  // emitted so far
   std::uint32_t forced = 0;  // forced commits
   std::uint32_t peak = 0;    // the most points the window held at once
+  std::uint32_t reach = 0;   // the longest span (index steps) a start stayed alive
 };
 
 namespace detail {
@@ -109,14 +110,18 @@ class StreamEngine {
   // each piece decided, forced_end marking the last piece of a forced
   // commit (its end is a cut r_k). degenerate: p equals the previous point;
   // invalid_argument: p not finite; capacity_exceeded: 2^32 points.
+  // invalid_argument also for |x| or |y| above the extent (scale_for).
   template <class Sink>
   Status push(Vec2<S> p, Sink& sink) {
     if (!Scalar<S>::is_finite(p.x) || !Scalar<S>::is_finite(p.y)) return Status::invalid_argument;
-    if (size_ > 0 && pts_[size_ - 1] == p) return Status::degenerate;
+    if (extent_ > S(0) && (extent_ < Scalar<S>::abs(p.x) || extent_ < Scalar<S>::abs(p.y)))
+      return Status::invalid_argument;
+    if (size_ > 0 && orig_[size_ - 1] == p) return Status::degenerate;
     if (base_ + size_ >= 0xFFFFFFFFu) return Status::capacity_exceeded;
     if (size_ >= window_) force(sink);
     const std::uint32_t m = size_++;
-    pts_[m] = p;
+    orig_[m] = p;
+    pts_[m] = p * scale_;
     ++stats_.points;
     if (size_ > stats_.peak) stats_.peak = size_;
     if (m == 0) {
@@ -152,10 +157,31 @@ class StreamEngine {
   // H of the bound: a forced commit moves the root on by at least this.
   std::uint32_t forced_step() const { return (window_ - 1 - kMargin) / 2; }
 
+  // Fits in the whole-input fitters' frame: the points scaled by the power
+  // of two (Scalar<S>::normaliser) that brings `extent`, the largest |x| or
+  // |y| the stream will hold, into [0.5, 1). Those fitters take it from the
+  // largest coordinate of their input; given an extent in the same octave,
+  // the stream computes what they compute (the same operations on the same
+  // scaled numbers), which matters in kerf::Fixed. Points beyond the extent
+  // are refused. Call after start(), before the first point; in double the
+  // scale changes nothing but the refusal (powers of two are exact).
+  Status scale_for(S extent) {
+    if (!Scalar<S>::is_finite(extent) || !(extent > S(0)) || stats_.points > 0)
+      return Status::invalid_argument;
+    extent_ = extent;
+    scale_ = Scalar<S>::normaliser(extent);
+    unscale_ = S(1) / scale_;
+    crit_.rescale(scale_);
+    return Status::ok;
+  }
+
  protected:
   Status begin(std::uint32_t window) {
     if (window < kMinWindow || window > kCapacity) return Status::invalid_argument;
     window_ = window;
+    extent_ = S(0);
+    scale_ = S(1);
+    unscale_ = S(1);
     size_ = 0;
     root_ = 0;
     labeled_ = 0;
@@ -189,6 +215,11 @@ class StreamEngine {
     pred_[v] = best_i;
     live_[v] = 1;
     hint_[v] = 0;
+    for (std::uint32_t i = root_; i < v; ++i) {  // the oldest live start
+      if (live_[i] == 0) continue;
+      if (v - i > stats_.reach) stats_.reach = v - i;
+      break;
+    }
   }
 
   // Labels every node again from the root, after a forced commit.
@@ -256,6 +287,10 @@ class StreamEngine {
     while (k-- > 0) {
       const std::uint32_t j = path_[k];
       Piece<S> piece = crit_.piece(pts_, i, j);
+      piece.segment.start = orig_[i];  // as the whole-input fitters write them
+      piece.segment.end = orig_[j];
+      piece.segment.centre = piece.segment.centre * unscale_;
+      piece.error = piece.error * unscale_;
       piece.first = static_cast<std::uint32_t>(base_ + i);
       piece.last = static_cast<std::uint32_t>(base_ + j);
       sink(piece, forced && k == 0);
@@ -271,6 +306,7 @@ class StreamEngine {
     for (std::uint32_t v = from; v < size_; ++v) {
       const std::uint32_t w = v - from;
       pts_[w] = pts_[v];
+      orig_[w] = orig_[v];
       dist_[w] = dist_[v];
       pred_[w] = pred_[v] >= from ? pred_[v] - from : 0;  // below: a dead non-descendant
       live_[w] = v < r ? 0 : live_[v];  // the context is no start
@@ -290,7 +326,11 @@ class StreamEngine {
   std::uint32_t labeled_ = 0;  // nodes [0, labeled_) have labels
   std::uint64_t base_ = 0;     // stream index of local 0
   StreamStats stats_{};
-  Slots<Vec2<S>, N> pts_;
+  S extent_{};  // 0: none
+  S scale_ = S(1);
+  S unscale_ = S(1);
+  Slots<Vec2<S>, N> pts_;   // scaled
+  Slots<Vec2<S>, N> orig_;  // as pushed
   Slots<std::uint32_t, N> dist_;
   Slots<std::uint32_t, N> pred_;
   Slots<std::uint32_t, N> hint_;
@@ -307,7 +347,8 @@ struct VertexCriterion {
   static constexpr std::uint32_t kContext = 0;
   static constexpr std::size_t kSetHalf = 3 * N + 8;  // fit.hpp's workspace_intervals / 2
 
-  S eps{};
+  S tol{};
+  S eps{};  // tol in the scaled frame
   Method method = Method::optimal;
   Slots<Interval<S>, 2 * kSetHalf> sets;
 
@@ -315,6 +356,7 @@ struct VertexCriterion {
     return AngleSet<S>(Span<Interval<S>>(sets.item, kSetHalf),
                        Span<Interval<S>>(sets.item + kSetHalf, kSetHalf));
   }
+  void rescale(S factor) { eps = tol * factor; }
   void prepare(const Vec2<S>*, std::uint32_t) {}
   bool feasible(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, std::uint32_t& hint) {
     AngleSet<S> s = set();
@@ -342,6 +384,7 @@ class PointWindow : public detail::StreamEngine<S, N, detail::VertexCriterion<S,
   // window outside [4, N].
   Status start(S tol, Method method, std::uint32_t window = static_cast<std::uint32_t>(N)) {
     if (!detail::tol_ok(tol)) return Status::invalid_argument;
+    this->crit_.tol = tol;
     this->crit_.eps = tol;
     this->crit_.method = method;
     return this->begin(window);

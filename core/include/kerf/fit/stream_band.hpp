@@ -31,6 +31,7 @@ struct BandCriterion {
   static constexpr std::uint32_t kContext = 3;
 
   BandWidth<S> width{};
+  S factor = S(1);  // the widths' scale: the points' (StreamEngine::scale_for)
   Slots<BandWidth<S>, N> widths;
   Slots<BandVertex<S>, N> vertices;
   Slots<std::uint32_t, N> next_barrier;  // the first barrier after each vertex
@@ -38,10 +39,11 @@ struct BandCriterion {
   BandRegion<S> region;
   S guard_eps{};                         // the longest half gate
 
+  void rescale(S f) { factor = f; }
   void prepare(const Vec2<S>* pts, std::uint32_t n) {
     for (; filled < n; ++filled) widths[filled] = width;
     region = BandRegion<S>(pts, n, vertices.item);
-    (void)region.build(widths.item, S(1));  // always ok: it narrows until convex
+    (void)region.build(widths.item, S(1) * factor);  // always ok: it narrows until convex
     S longest = S(0);
     next_barrier[n - 1] = n;
     for (std::uint32_t k = n; k-- > 0;) {
@@ -86,6 +88,7 @@ class BandWindow : public detail::StreamEngine<S, N, detail::BandCriterion<S, N>
         !(left + right > S(0)))
       return Status::invalid_argument;
     this->crit_.width = BandWidth<S>{left, right};
+    this->crit_.factor = S(1);
     this->crit_.filled = 0;
     return this->begin(window);
   }
