@@ -108,6 +108,11 @@ CLI::App* add_fit_command(CLI::App& app, FitOptions& opts) {
                 "memory fixed by --window (vertex or band criterion, one path)");
   fit->add_option("--window", opts.window, "--stream: the most points held at once (4..65536)")
       ->type_name("N");
+  fit->add_option("--extent", opts.extent,
+                  "--stream: the largest |x| or |y| of the input, mm (points beyond are refused); "
+                  "required with --numeric fixed, which then computes what the whole-input fit does "
+                  "for inputs whose largest coordinate lies in the same power-of-two octave")
+      ->type_name("E");
   fit->add_option("file", opts.file, "Point file, one \"x y\" per line; - for stdin")
       ->type_name("FILE|-")
       ->required();
@@ -185,6 +190,7 @@ bool fixed_fits(const io::PointFile& in, double tol) {
 
 int run_fit(const FitOptions& opts) {
   if (opts.stream || !opts.window.empty()) return run_fit_stream(opts);
+  if (!opts.extent.empty()) return usage_error("--extent needs --stream");
   if (opts.criterion == "biarc") {
     if (const std::string bad = numeric_problem(opts.numeric, opts.criterion); !bad.empty())
       return usage_error(bad);

@@ -35,6 +35,7 @@ struct FitOptions {
   std::string tie_break;  // smallest (whole-input default) | none (--stream's only)
   bool stream = false;   // --stream: read and write piece by piece (cli/fit_stream.cpp)
   std::string window;    // --stream: the points held at most
+  std::string extent;    // --stream: the largest |x| or |y| (mm); needed for --numeric fixed
   std::string file;
 };
 

@@ -95,6 +95,7 @@ class StreamEngine {
   static_assert(N >= 8 && N < 0x40000000u, "a window holds 8 .. 2^30 points");
 
  public:
+  using Value = S;  // the scalar type
   static constexpr std::uint32_t kCapacity = static_cast<std::uint32_t>(N);
   // Points of the window that hold no start of the decision: the context
   // before the root and the newest points, not labelled yet.
