@@ -221,7 +221,7 @@ int run_window(W& w, PointStream& in, const char* criterion, const std::string& 
                         std::to_string(st.pieces) + (st.pieces == 1 ? " piece" : " pieces") +
                         ", max error " + io::format_number(out.max_error) + ", window " +
                         std::to_string(window) + " (most held " + std::to_string(st.peak) + "), " +
-                        std::to_string(st.forced) + " forced commits";
+                        std::to_string(st.forced) + " forced commits, reach " + std::to_string(st.reach);
   if (in.duplicates() > 0)
     summary += ", dropped " + std::to_string(in.duplicates()) + " duplicate points";
   std::fprintf(stderr, "%s\n", summary.c_str());

@@ -45,8 +45,8 @@ def piece_lines(out):
 
 
 def forced_commits(summary):
-    # "... window N (most held M), F forced commits"
-    return int(summary.rsplit(",", 1)[1].split()[0])
+    # "... window N (most held M), F forced commits, reach R"
+    return int(summary.rsplit(",", 2)[1].split()[0])
 
 
 def same_as_whole(name, text, tol, criterion, window, extent=None):
