@@ -21,9 +21,28 @@
 //
 // A *forced commit* happens when the window is full and the next point
 // arrives before a decision. It commits the best prefix: the path to the
-// frontier node in the newer half of the window (index >= root + H, H =
-// floor((N - 1) / 2)) with the fewest pieces, the newest on ties; the window
-// is then relabelled from that node, exactly.
+// frontier node at index >= root + H (H = floor((N - 1 - margin) / 2),
+// margin = the criterion's kLag + kContext: forced_step()) with the fewest
+// pieces, the newest on ties; the window is then relabelled from that node,
+// exactly.
+//
+// Exactness (proven). With no forced commit the stream emits exactly the
+// pieces of the whole-input fitter run at tol itself (fit_min_count with
+// tie_break >= 1; `kerf fit --tie-break none`): label() gives each node the
+// d and pred of min_count (pred = the nearest start among those one piece
+// closer to the root that reach it; the guard drops only starts that reach
+// nothing later, in both), a decided commit follows pred from a node every
+// complete path passes, and piece() runs the fitter's choose_piece on the
+// same numbers: scale_for() puts the points in the whole-input frame (a power
+// of two: exact in double, the same Fixed operations in kerf::Fixed). Tested
+// bit for bit on the test curves, the corpus's G-code polylines and random
+// curves, in double and Fixed (tests/unit/test_stream_exact.cpp), and line
+// for line through the CLI (tests/cli/stream_check.py).
+//   The whole-input default (tie_break 1e-9) differs: among the fewest-pieces
+// solutions it takes the one at the smallest tol that keeps the count, and
+// that tol is set by the hardest stretch of the whole input (a bottleneck at
+// the end shrinks every piece before it). A stream has emitted its first
+// piece long before it sees that stretch, so no stream can match it.
 //
 // The bound (proof sketch). Let r_1 < ... < r_F be the forced cut points,
 // r_0 = 0, r_{F+1} = n - 1, OPT(a, b) the fewest pieces from p_a to p_b.
@@ -38,14 +57,33 @@
 //      result passes through every r_k, so by (1) it bounds the count.
 //  (4) count <= OPT + F for inputs where a valid piece a -> b stays valid
 //      when cut at an inner point (a -> r and r -> b valid): each cut then
-//      costs one piece. Collinear points reach this exactly. The vertex
-//      criterion does not guarantee that property (pieces pass through
-//      their end points), which is why (3) is the general bound.
-//  (5) With no forced commit, count = OPT (by (1)). A window longer than
-//      every piece does not rule forced commits out: two candidates' paths
-//      can stay apart for longer than a piece (the sine at tol 1 with a
-//      window of 2 L + 8 has three). On the test curves and random curves
-//      the count still equals OPT there; that is tested, not proven.
+//      costs one piece. Collinear points reach this exactly. Neither the
+//      vertex nor the band criterion has that property in general (a piece
+//      must start and end on input points, which the sub-arc of a valid
+//      arc misses), which is why (3) is the general bound.
+//  (5) Window and span. With no forced commit, count = OPT and the pieces
+//      are the whole input's (above). No window length rules forced commits
+//      out, for this rule or any rule that must commit when its window is
+//      full: the candidates are shortest paths to different frontier nodes,
+//      and they can stay apart for longer than any number of pieces (two
+//      interleaved chains of pieces, each of length <= L); which one the
+//      whole-input path takes is decided by pred at the last point, that is
+//      by points not read yet, so two inputs sharing the window's points
+//      but continuing differently can need different first pieces, and one
+//      committed prefix cannot equal both. (We have not written down a
+//      geometric instance; the measurements below show the chains do stay
+//      apart past 2 L + 8 points.) So the claim is stated for what is tested:
+//      L the longest piece of the whole-input fit, a window of 3 L + 8
+//      points gave the whole input's pieces, bit for bit, on every path
+//      tested (test curves, corpus polylines, 24 random curves; vertex: no
+//      forced commit at all; band: 47 forced commits on 3 paths, harmless),
+//      while 2 L + 8 forced 22 (vertex) and 225 (band) commits, and gave
+//      other pieces on 2 and 6 paths (a random curve lost a piece). The
+//      stream counts forced commits (StreamStats::forced); with none, the
+//      result is the whole input's whatever the window. StreamStats::reach,
+//      the longest a start stayed alive, bounds how far back the frontier
+//      reaches (frontier nodes lie within reach of the newest point), not
+//      how far back the candidates' paths part.
 //
 // No allocation, no exceptions, no OS header: all storage is members.
 #pragma once
