@@ -138,8 +138,11 @@ int check_options(const FitOptions& opts, bool band, fit::Method& method, std::u
     return usage_error("--tol-left and --tol-right need --criterion band");
   if (const std::string bad = numeric_problem(opts.numeric, opts.criterion); !bad.empty())
     return usage_error(bad);
-  if (!opts.tie_break.empty() && opts.tie_break != "smallest" && opts.tie_break != "none")
-    return usage_error("--tie-break: expected smallest or none, got " + quoted(opts.tie_break));
+  if (!opts.tie_break.empty() && opts.tie_break != "smallest" && opts.tie_break != "none") {
+    std::string msg = "--tie-break: expected smallest or none, got ";  // += (armhf -Wrestrict)
+    msg += quoted(opts.tie_break);
+    return usage_error(msg);
+  }
   if (opts.tie_break == "none" && !opts.pieces.empty())
     return usage_error("--tie-break none: needs --tol (--pieces finds the smallest tol)");
   if (!opts.pieces.empty()) {

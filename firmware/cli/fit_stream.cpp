@@ -35,6 +35,13 @@ using BandWindow = fit::BandWindow<double, kMaxWindow>;
 using FixedWindow = fit::PointWindow<Fixed, kMaxWindow>;
 using FixedBandWindow = fit::BandWindow<Fixed, kMaxWindow>;
 
+// a + b, built by += (armhf GCC 12 warns falsely on "literal" + string&&).
+std::string join(const char* a, const std::string& b) {
+  std::string s = a;
+  s += b;
+  return s;
+}
+
 bool parse_window(const std::string& text, std::uint32_t& out, std::string& error) {
   const std::string range = "a whole number from 4 to " + std::to_string(kMaxWindow);
   if (text.empty()) {
@@ -128,7 +135,8 @@ int check_stream_options(const FitOptions& opts, StreamSetup& st) {
   if (!opts.pieces.empty())
     return usage_error("--stream: needs --tol; a piece budget (--pieces) needs the whole input");
   if (opts.numeric != "double" && opts.numeric != "fixed")
-    return usage_error("--numeric: unknown type " + quoted(opts.numeric) + " (expected double or fixed)");
+    return usage_error(join("--numeric: unknown type ", quoted(opts.numeric)) +
+                       " (expected double or fixed)");
   st.fixed = opts.numeric == "fixed";
   if (!opts.extent.empty() && !parse_length("--extent", opts.extent, false, st.extent, error))
     return usage_error(error);
@@ -139,7 +147,7 @@ int check_stream_options(const FitOptions& opts, StreamSetup& st) {
   if (opts.tie_break == "smallest")
     return usage_error("--tie-break smallest: needs the whole input (--stream writes --tie-break none)");
   if (!opts.tie_break.empty() && opts.tie_break != "none")
-    return usage_error("--tie-break: expected smallest or none, got " + quoted(opts.tie_break));
+    return usage_error(join("--tie-break: expected smallest or none, got ", quoted(opts.tie_break)));
   if (opts.format != "esgi") return usage_error("--stream: writes the esgi format only");
   if (opts.output != "-")
     return usage_error("--stream: writes to stdout as it goes (an -o file could not be written atomically)");
@@ -190,7 +198,7 @@ int run_window(W& w, PointStream& in, const char* criterion, const std::string& 
     }
     if (got == PointStream::Next::error || s != Status::ok) {
       const std::string why = got == PointStream::Next::error ? in.reason()
-                              : beyond ? "a coordinate beyond --extent " + io::format_number(extent)
+                              : beyond ? join("a coordinate beyond --extent ", io::format_number(extent))
                                        : std::string(to_string(s));
       const unsigned long long done = w.stats().pieces;
       std::fprintf(stderr, "%s:%zu: %s (%llu %s before it already written)\n", in.file().c_str(),
@@ -248,7 +256,7 @@ int run_band(const FitOptions& opts, const StreamSetup& st, PointStream& in) {
   using S = typename W::Value;
   const std::unique_ptr<W> w(new W);  // before any point: the only heap the fit uses
   if (w->start(scalar<S>(st.left), scalar<S>(st.right), st.window) != Status::ok)
-    return usage_error("--window: the band criterion needs at least " + std::to_string(W::kMinWindow));
+    return usage_error(join("--window: the band criterion needs at least ", std::to_string(W::kMinWindow)));
   if (!scale(*w, st)) return usage_error("--extent: expected a length > 0");
   const double widest = std::max(st.left, st.right);
   return run_window(*w, in, "band", opts.method, st.window, widest, io::format_number(widest), st.extent);
@@ -259,7 +267,7 @@ int run_vertex(const FitOptions& opts, const StreamSetup& st, PointStream& in) {
   using S = typename W::Value;
   const std::unique_ptr<W> w(new W);
   if (w->start(scalar<S>(st.tol), st.method, st.window) != Status::ok)
-    return usage_error("--window: the vertex criterion needs at least " + std::to_string(W::kMinWindow));
+    return usage_error(join("--window: the vertex criterion needs at least ", std::to_string(W::kMinWindow)));
   if (!scale(*w, st)) return usage_error("--extent: expected a length > 0");
   return run_window(*w, in, "vertex", opts.method, st.window, st.tol, io::format_number(st.tol), st.extent);
 }
