@@ -14,6 +14,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "cli/check_fit.hpp"
 #include "cli/fit_command.hpp"
 #include "cli/fit_fixed.hpp"
 #include "cli/options.hpp"
@@ -68,19 +69,40 @@ bool parse_window(const std::string& text, std::uint32_t& out, std::string& erro
 // for coordinates below 1e6 mm and tol >= 1e-3 mm), the lines are the same.
 // A kerf::Fixed piece is written as `kerf fit --numeric fixed` writes it:
 // its ends are the input's points (as read, in double: the last `recent` of
-// them are kept), its centre converted.
+// them are kept), its centre converted. Each piece first passes the check
+// `kerf fit` runs before it writes (cli/check_fit.hpp) on its own points;
+// a piece that fails it is not written and stops the stream.
 struct PieceWriter {
   double max_error = 0.0;
-  double tol = 0.0;      // the widest width asked for
-  double biggest = 0.0;  // the largest |coordinate| read so far
+  double tol = 0.0;        // the widest width asked for
+  double allowance = 0.0;  // fixed point: the documented quantization
+  double biggest = 0.0;    // the largest |coordinate| read so far
   int digits = io::kDigits;
   bool failed = false;
-  std::vector<Vec2<double>> recent;  // fixed point: input point k at k % size
+  std::string bad;  // why a piece failed its check
+  std::vector<Vec2<double>> recent;  // input point k at k % size (the window and more)
+  std::vector<Vec2<double>> span;    // one piece's points (capacity reserved up front)
   std::uint64_t seen = 0;
+  void reserve(std::uint32_t window) {
+    recent.resize(std::size_t{window} + 8);
+    span.reserve(recent.size());
+  }
   void saw(Vec2<double> p) {
     biggest = std::fmax(biggest, std::fmax(std::fabs(p.x), std::fabs(p.y)));
-    if (!recent.empty()) recent[seen % recent.size()] = p;
+    recent[seen % recent.size()] = p;
     ++seen;
+  }
+  bool checked(const fit::Piece<double>& piece) {
+    span.clear();
+    for (std::uint64_t k = piece.first; k <= piece.last; ++k) span.push_back(recent[k % recent.size()]);
+    fit::Piece<double> local = piece;
+    local.first = 0;
+    local.last = piece.last - piece.first;
+    const std::string why = check_fit(Span<const Vec2<double>>(span.data(), span.size()),
+                                      Span<const fit::Piece<double>>(&local, 1), tol + allowance);
+    if (why.empty()) return true;
+    bad = "piece " + std::to_string(piece.first) + ".." + std::to_string(piece.last) + ": " + why;
+    return false;
   }
   void operator()(const fit::Piece<Fixed>& f, bool forced_end) {
     auto back = [](Vec2<Fixed> v) { return Vec2<double>{to_double(v.x), to_double(v.y)}; };
@@ -90,6 +112,11 @@ struct PieceWriter {
     (*this)(fit::Piece<double>{f.first, f.last, s, to_double(f.error)}, forced_end);
   }
   void operator()(const fit::Piece<double>& piece, bool) {
+    if (failed) return;
+    if (!checked(piece)) {
+      failed = true;
+      return;
+    }
     digits = std::max(digits, io::coordinate_digits(Span<const fit::Piece<double>>(&piece, 1), tol));
     const std::string line = io::esgi_piece_line(piece.segment, biggest * 1e-12, digits);
     if (std::fputs(line.c_str(), stdout) < 0 || std::fflush(stdout) != 0) failed = true;
@@ -179,9 +206,13 @@ int run_window(W& w, PointStream& in, const char* criterion, const std::string& 
   std::printf("# kerf fit: criterion %s, method %s%s, stream, window %u\n# tol %s\n", criterion,
               method.c_str(), std::is_same_v<S, Fixed> ? ", numeric fixed" : "", window,
               tol_text.c_str());
-  PieceWriter out;
+  PieceWriter out;  // its buffers allocated before any point
   out.tol = tol;
-  if (std::is_same_v<S, Fixed>) out.recent.resize(std::size_t{window} + 8);
+  out.reserve(window);
+  if (std::is_same_v<S, Fixed>) {
+    const Vec2<double> corner{extent, extent};
+    out.allowance = fixed_fit_slack(Span<const Vec2<double>>(&corner, 1));
+  }
   Vec2<double> p;
   for (;;) {
     const PointStream::Next got = in.next(p);
@@ -211,6 +242,14 @@ int run_window(W& w, PointStream& in, const char* criterion, const std::string& 
     std::fprintf(stderr, "%s: fewer than two distinct points (got %llu)\n", in.file().c_str(),
                  static_cast<unsigned long long>(w.stats().points));
     return kExitUsage;
+  }
+  if (!out.bad.empty()) {  // a fitter bug or numeric breakdown: as kerf fit, never written
+    std::fflush(stdout);
+    std::fprintf(stderr,
+                 "kerf: %s: internal error: a streamed fit fails its own check (%s); the pieces "
+                 "before it are written\n",
+                 in.file().c_str(), out.bad.c_str());
+    return kExitFailure;
   }
   const fit::StreamStats& st = w.stats();
   std::printf("# max error %s\n# Number of arcs is Narc = %llu\n",
