@@ -8,6 +8,9 @@ template class BandRegion<Fixed>;
 template Result<Fit<Fixed>> fit_band_min_count(Span<const Vec2<Fixed>>,
                                                 Span<const BandWidth<Fixed>>,
                                                 BandWorkspace<Fixed>, Span<Piece<Fixed>>);
+template Result<Fit<Fixed>> fit_band_min_count(Span<const Vec2<Fixed>>,
+                                                Span<const BandWidth<Fixed>>,
+                                                BandWorkspace<Fixed>, Span<Piece<Fixed>>, Fixed);
 template Result<Fit<Fixed>> fit_band_min_error(Span<const Vec2<Fixed>>,
                                                 Span<const BandWidth<Fixed>>, std::uint32_t,
                                                 BandWorkspace<Fixed>, Span<Piece<Fixed>>);

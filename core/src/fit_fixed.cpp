@@ -6,6 +6,8 @@ namespace kerf::fit {
 
 template Result<Fit<Fixed>> fit_min_count(Span<const Vec2<Fixed>>, Fixed, Method,
                                            Workspace<Fixed>, Span<Piece<Fixed>>);
+template Result<Fit<Fixed>> fit_min_count(Span<const Vec2<Fixed>>, Fixed, Method,
+                                           Workspace<Fixed>, Span<Piece<Fixed>>, Fixed);
 template Result<Fit<Fixed>> fit_min_error(Span<const Vec2<Fixed>>, std::uint32_t, Method,
                                            Workspace<Fixed>, Span<Piece<Fixed>>);
 template Result<std::uint32_t> count_min(Span<const Vec2<Fixed>>, Fixed, Method,

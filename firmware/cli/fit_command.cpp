@@ -99,11 +99,20 @@ CLI::App* add_fit_command(CLI::App& app, FitOptions& opts) {
                   "runs; vertex and band criteria)")
       ->type_name("TYPE")
       ->capture_default_str();
+  fit->add_option("--tie-break", opts.tie_break,
+                  "vertex, band: among the fewest-pieces fits, smallest (default: the one at the "
+                  "smallest tol) or none (the fit at --tol itself, what --stream writes)")
+      ->type_name("smallest|none");
   fit->add_flag("--stream", opts.stream,
                 "Read the points line by line and write each piece once it is decided, in "
                 "memory fixed by --window (vertex or band criterion, one path)");
   fit->add_option("--window", opts.window, "--stream: the most points held at once (4..65536)")
       ->type_name("N");
+  fit->add_option("--extent", opts.extent,
+                  "--stream: the largest |x| or |y| of the input, mm (points beyond are refused); "
+                  "required with --numeric fixed, which then computes what the whole-input fit does "
+                  "for inputs whose largest coordinate lies in the same power-of-two octave")
+      ->type_name("E");
   fit->add_option("file", opts.file, "Point file, one \"x y\" per line; - for stdin")
       ->type_name("FILE|-")
       ->required();
@@ -129,6 +138,13 @@ int check_options(const FitOptions& opts, bool band, fit::Method& method, std::u
     return usage_error("--tol-left and --tol-right need --criterion band");
   if (const std::string bad = numeric_problem(opts.numeric, opts.criterion); !bad.empty())
     return usage_error(bad);
+  if (!opts.tie_break.empty() && opts.tie_break != "smallest" && opts.tie_break != "none") {
+    std::string msg = "--tie-break: expected smallest or none, got ";  // += (armhf -Wrestrict)
+    msg += quoted(opts.tie_break);
+    return usage_error(msg);
+  }
+  if (opts.tie_break == "none" && !opts.pieces.empty())
+    return usage_error("--tie-break none: needs --tol (--pieces finds the smallest tol)");
   if (!opts.pieces.empty()) {
     if (!opts.tol.empty()) return usage_error("--tol and --pieces cannot be used together");
     if (!parse_pieces(opts.pieces, pieces, error)) return usage_error(error);
@@ -177,9 +193,11 @@ bool fixed_fits(const io::PointFile& in, double tol) {
 
 int run_fit(const FitOptions& opts) {
   if (opts.stream || !opts.window.empty()) return run_fit_stream(opts);
+  if (!opts.extent.empty()) return usage_error("--extent needs --stream");
   if (opts.criterion == "biarc") {
     if (const std::string bad = numeric_problem(opts.numeric, opts.criterion); !bad.empty())
       return usage_error(bad);
+    if (!opts.tie_break.empty()) return usage_error("--tie-break: for the vertex and band criteria");
     return run_fit_biarc(opts);
   }
   if (!opts.tangents.empty() || opts.tangent_format != "vector")
@@ -187,6 +205,7 @@ int run_fit(const FitOptions& opts) {
   if (!opts.biarc_method.empty()) return usage_error("--biarc-method needs --criterion biarc");
   const bool band = opts.criterion == "band";
   const bool by_pieces = !opts.pieces.empty();
+  const bool tie_break = opts.tie_break != "none";
   fit::Method method{};
   std::uint32_t pieces = 0;
   double tol = 0.0;
@@ -228,16 +247,21 @@ int run_fit(const FitOptions& opts) {
       io::BandStorage storage(m);
       const Span<const fit::BandWidth<double>> ws_widths(widths.data() + b, m);
       if (opts.numeric == "fixed")
-        r = fit_band_fixed(path, ws_widths, by_pieces ? pieces : 0, dst);
+        r = fit_band_fixed(path, ws_widths, by_pieces ? pieces : 0, dst, tie_break);
+      else if (by_pieces)
+        r = fit::fit_band_min_error(path, ws_widths, pieces, storage.workspace(), dst);
       else
-        r = by_pieces ? fit::fit_band_min_error(path, ws_widths, pieces, storage.workspace(), dst)
-                      : fit::fit_band_min_count(path, ws_widths, storage.workspace(), dst);
+        r = tie_break ? fit::fit_band_min_count(path, ws_widths, storage.workspace(), dst)
+                      : fit::fit_band_min_count(path, ws_widths, storage.workspace(), dst, 1.0);
     } else if (opts.numeric == "fixed") {
-      r = fit_vertex_fixed(path, tol, by_pieces ? pieces : 0, method, dst);
+      r = fit_vertex_fixed(path, tol, by_pieces ? pieces : 0, method, dst, tie_break);
     } else {
       io::FitStorage storage(m);
-      r = by_pieces ? fit::fit_min_error(path, pieces, method, storage.workspace(), dst)
-                    : fit::fit_min_count(path, tol, method, storage.workspace(), dst);
+      if (by_pieces)
+        r = fit::fit_min_error(path, pieces, method, storage.workspace(), dst);
+      else
+        r = tie_break ? fit::fit_min_count(path, tol, method, storage.workspace(), dst)
+                      : fit::fit_min_count(path, tol, method, storage.workspace(), dst, 1.0);
     }
     ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     const std::string where = begins.size() > 1 ? " (path " + std::to_string(p + 1) + ")" : "";

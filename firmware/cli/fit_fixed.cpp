@@ -19,7 +19,7 @@ double fixed_min_tol(Span<const Vec2<double>> pts) { return 16.0 * fixed_fit_sla
 
 Result<fit::Fit<double>> fit_vertex_fixed(Span<const Vec2<double>> pts, double tol,
                                           std::uint32_t pieces, fit::Method method,
-                                          Span<fit::Piece<double>> out) {
+                                          Span<fit::Piece<double>> out, bool tie_break) {
   const std::size_t n = pts.size();
   std::vector<Vec2<Fixed>> p(n);
   for (std::size_t k = 0; k < n; ++k) p[k] = {fixed_from_double(pts[k].x), fixed_from_double(pts[k].y)};
@@ -34,7 +34,8 @@ Result<fit::Fit<double>> fit_vertex_fixed(Span<const Vec2<double>> pts, double t
   const Span<fit::Piece<Fixed>> dst(fixed_out.data(), fixed_out.size());
   const Result<fit::Fit<Fixed>> r =
       pieces > 0 ? fit::fit_min_error(in, pieces, method, ws, dst)
-                 : fit::fit_min_count(in, fixed_from_double(tol), method, ws, dst);
+      : tie_break ? fit::fit_min_count(in, fixed_from_double(tol), method, ws, dst)
+                  : fit::fit_min_count(in, fixed_from_double(tol), method, ws, dst, Fixed(1));
   if (!r.ok()) return r.status();
   auto back = [](Vec2<Fixed> v) { return Vec2<double>{to_double(v.x), to_double(v.y)}; };
   for (std::uint32_t k = 0; k < r.value().pieces; ++k) {
@@ -49,7 +50,8 @@ Result<fit::Fit<double>> fit_vertex_fixed(Span<const Vec2<double>> pts, double t
 
 Result<fit::Fit<double>> fit_band_fixed(Span<const Vec2<double>> pts,
                                         Span<const fit::BandWidth<double>> widths,
-                                        std::uint32_t pieces, Span<fit::Piece<double>> out) {
+                                        std::uint32_t pieces, Span<fit::Piece<double>> out,
+                                        bool tie_break) {
   const std::size_t n = pts.size();
   std::vector<Vec2<Fixed>> p(n);
   std::vector<fit::BandWidth<Fixed>> w(n);
@@ -68,7 +70,8 @@ Result<fit::Fit<double>> fit_band_fixed(Span<const Vec2<double>> pts,
   const Span<const fit::BandWidth<Fixed>> win(w.data(), n);
   const Span<fit::Piece<Fixed>> dst(fixed_out.data(), fixed_out.size());
   const Result<fit::Fit<Fixed>> r = pieces > 0 ? fit::fit_band_min_error(in, win, pieces, ws, dst)
-                                               : fit::fit_band_min_count(in, win, ws, dst);
+                                     : tie_break ? fit::fit_band_min_count(in, win, ws, dst)
+                                                 : fit::fit_band_min_count(in, win, ws, dst, Fixed(1));
   if (!r.ok()) return r.status();
   auto back = [](Vec2<Fixed> v) { return Vec2<double>{to_double(v.x), to_double(v.y)}; };
   for (std::uint32_t k = 0; k < r.value().pieces; ++k) {

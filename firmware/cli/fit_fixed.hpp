@@ -32,12 +32,13 @@ double fixed_min_tol(Span<const Vec2<double>> pts);
 // holds the pieces in double.
 Result<fit::Fit<double>> fit_vertex_fixed(Span<const Vec2<double>> pts, double tol,
                                           std::uint32_t pieces, fit::Method method,
-                                          Span<fit::Piece<double>> out);
+                                          Span<fit::Piece<double>> out, bool tie_break = true);
 
 // fit_band_min_count (pieces == 0) or fit_band_min_error (pieces > 0) in
 // Fixed; out holds the pieces in double. The widths are per point.
 Result<fit::Fit<double>> fit_band_fixed(Span<const Vec2<double>> pts,
                                         Span<const fit::BandWidth<double>> widths,
-                                        std::uint32_t pieces, Span<fit::Piece<double>> out);
+                                        std::uint32_t pieces, Span<fit::Piece<double>> out,
+                                        bool tie_break = true);
 
 }  // namespace kerf::cli

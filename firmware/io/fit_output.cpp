@@ -113,17 +113,22 @@ std::string format_esgi(const FitReport& r) {
       out += std::to_string(r.pieces[k].last);
       out += '\n';
     }
-    out += s.is_arc() ? "A " : "L ";
-    add_point(out, s.start, z, r.digits);
-    out += ' ';
-    add_point(out, s.end, z, r.digits);
-    if (s.is_arc()) {
-      out += ' ';
-      add_point(out, s.centre, z, r.digits);
-      out += s.dir > 0 ? " 1" : " -1";
-    }
-    out += '\n';
+    out += esgi_piece_line(s, z, r.digits);
   }
+  return out;
+}
+
+std::string esgi_piece_line(const Segment<double>& s, double z, int digits) {
+  std::string out = s.is_arc() ? "A " : "L ";
+  add_point(out, s.start, z, digits);
+  out += ' ';
+  add_point(out, s.end, z, digits);
+  if (s.is_arc()) {
+    out += ' ';
+    add_point(out, s.centre, z, digits);
+    out += s.dir > 0 ? " 1" : " -1";
+  }
+  out += '\n';
   return out;
 }
 

@@ -47,6 +47,10 @@ int coordinate_digits(Span<const fit::Piece<double>> pieces, double tol);
 // biarc's two lines (the first ends where the second starts: the joint).
 std::string format_esgi(const FitReport& r);
 
+// One piece's esgi line, newline included (format_esgi's, and what
+// `kerf fit --stream` writes as each piece is decided).
+std::string esgi_piece_line(const Segment<double>& s, double zero_below, int digits);
+
 // {"criterion", "method", "tol", "max_error", "pieces": [{"type", "first",
 // "last", "start", "end", "centre" and "dir" (arcs only), "error"}]}; with
 // biarcs also "biarcs": K and per piece "biarc": k (0-based) and "part": 1|2.

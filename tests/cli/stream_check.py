@@ -1,14 +1,18 @@
 #!/usr/bin/env python3
 """kerf fit --stream against kerf fit, end to end, for the vertex and band criteria.
 
-usage: stream_check.py KERF CURVES_DIR [EMULATOR...]
+usage: stream_check.py KERF CURVES_DIR GCODE_DIR [EMULATOR...]
 
 For each test curve and some random curves:
   - with a window longer than the input, --stream gives the same number of
     pieces as the whole-input fit, with the same end points (the input's);
   - every streamed piece chains on from the last and passes within tol of
     its inner points (checked here from the printed centre and radius);
-  - a small window never gives fewer pieces than the whole-input optimum.
+  - a small window never gives fewer pieces than the whole-input optimum;
+  - with no forced commit (the summary says so), the piece lines are the
+    same, byte for byte, as `kerf fit --tie-break none` writes (the fit at
+    tol itself; the default tie-break needs the whole input). Also on the
+    G1 runs of G-code corpus files (tests/data/gcode), each as a point file.
 And pieces come out while the input is still arriving: half the points are
 written to kerf's stdin, and a piece must be read back before the rest go in.
 """
@@ -21,14 +25,78 @@ import sys
 
 KERF = sys.argv[1]
 CURVES = sys.argv[2]
-EMU = sys.argv[3:]
+GCODE = sys.argv[3]
+EMU = sys.argv[4:]
 
 
-def run(args, text):
+def run(args, text, stderr=None, may_fail_check=False):
     p = subprocess.run(EMU + [KERF] + args, input=text, capture_output=True, text=True)
+    if may_fail_check and p.returncode == 1 and "fails its own check" in p.stderr:
+        return None
     if p.returncode != 0:
         sys.exit(f"kerf {' '.join(args)} failed ({p.returncode}): {p.stderr}")
+    if stderr is not None:
+        stderr.append(p.stderr)
     return p.stdout
+
+
+def piece_lines(out):
+    return [line for line in out.splitlines() if line.startswith(("A ", "L "))]
+
+
+def forced_commits(summary):
+    # "... window N (most held M), F forced commits, reach R"
+    return int(summary.rsplit(",", 2)[1].split()[0])
+
+
+def same_as_whole(name, text, tol, criterion, window, extent=None):
+    """Streamed == whole-input (--tie-break none), piece line for piece line,
+    when no commit was forced; returns the forced commits. With an extent,
+    both run in fixed point (--numeric fixed)."""
+    args = ["--criterion", criterion, "--tol", str(tol), "-"]
+    fixed = ["--numeric", "fixed"] if extent is not None else []
+    # At tol itself (no tie-break) a fixed-point piece can exceed tol by more
+    # than the documented quantization; kerf fit then refuses to write it.
+    whole = run(["fit", "--tie-break", "none"] + fixed + args, text, may_fail_check=bool(fixed))
+    if whole is None:
+        return None
+    err = []
+    streamed = run(["fit", "--stream", "--window", str(window)] + fixed +
+                   (["--extent", repr(extent)] if extent is not None else []) + args, text, err)
+    forced = forced_commits(err[0])
+    if forced == 0 and piece_lines(streamed) != piece_lines(whole):
+        a, b = piece_lines(streamed), piece_lines(whole)
+        k = next((i for i in range(min(len(a), len(b))) if a[i] != b[i]), min(len(a), len(b)))
+        sys.exit(f"{name} {criterion}{' fixed' if fixed else ''}: streamed piece {k} differs from the whole-input fit:\n"
+                 f"  {a[k] if k < len(a) else '(none)'}\n  {b[k] if k < len(b) else '(none)'}")
+    return forced
+
+
+def gcode_runs(path, limit):
+    """The runs of consecutive G1 moves with X or Y (a point file each, as
+    x y lines); at most `limit` runs of 3 or more distinct points."""
+    runs, cur, x, y = [], [], 0.0, 0.0
+    with open(path) as f:
+        for line in f:
+            code = line.split(";")[0].split("(")[0].strip().upper()
+            if not code:
+                continue
+            words = code.split()
+            if words[0] in ("G1", "G01") and any(w[0] in "XY" for w in words[1:]):
+                for w in words[1:]:
+                    if w[0] == "X":
+                        x = float(w[1:])
+                    elif w[0] == "Y":
+                        y = float(w[1:])
+                if not cur or cur[-1] != (x, y):
+                    cur.append((x, y))
+                continue
+            if len(cur) >= 3:
+                runs.append(cur)
+            cur = [(x, y)] if words[0] in ("G1", "G01") else []
+    if len(cur) >= 3:
+        runs.append(cur)
+    return runs[:limit]
 
 
 def narc(out):
@@ -128,6 +196,31 @@ for name, pts, tol in cases:
     check_pieces(name + " band", pts, pieces(big), tol)
     check_pieces(name + " band window 12", pts, pieces(small), tol)
     print(f"ok: {name} band: {narc(whole)} pieces whole and streamed; window 12: {narc(small)}")
+
+# Byte for byte against `kerf fit --tie-break none`: the test curves, random
+# curves and the corpus's G1 runs, with the window holding the whole path.
+# In fixed point too, with --extent the largest coordinate.
+compared = refused = 0
+paths = [(name, pts, tol) for name, pts, tol in cases]
+for gname in ["cncjs_jsdc-laser.gcode", "cncjs_tball-engrave.gcode"]:
+    paths += [(f"{gname} run {k + 1}", pts, 0.025)
+              for k, pts in enumerate(gcode_runs(f"{GCODE}/{gname}", 25))]
+for name, pts, tol in paths:
+    extent = max(abs(c) for p in pts for c in p)
+    for criterion in ["vertex", "band"]:
+        for ext in [None, extent]:
+            forced = same_as_whole(name, curve_text(pts), tol, criterion, max(len(pts) + 16, 16), ext)
+            if forced is None:
+                print(f"note: {name} {criterion} fixed: kerf fit --tie-break none refuses its own fit")
+                refused += 1
+                continue
+            if forced != 0:
+                sys.exit(f"{name} {criterion}: a commit was forced with the window holding the path")
+            compared += 1
+if refused > compared // 10:
+    sys.exit(f"{refused} whole-input fixed fits refused, {compared} compared: too few compared")
+print(f"ok: {compared} streamed fits (double and fixed) equal the whole-input fit "
+      f"(--tie-break none) line for line ({refused} fixed whole-input fits refused their own check)")
 
 # Pieces before the end of the input.
 pts = random_curve(9, 2000)

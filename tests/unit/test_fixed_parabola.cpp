@@ -11,7 +11,7 @@ namespace {
 
 TEST(FixedParabola, HostPrintsTheTextTheMcuMustMatch) {
   static kerf::mcu::FixedParabola st;
-  char text[1024];
+  char text[2048];
   kerf::mcu::fit_fixed_parabola(st, text, sizeof text);
   std::ifstream in(KERF_MCU_EXPECTED);
   std::stringstream want;
@@ -19,6 +19,7 @@ TEST(FixedParabola, HostPrintsTheTextTheMcuMustMatch) {
   ASSERT_FALSE(want.str().empty()) << KERF_MCU_EXPECTED;
   EXPECT_EQ(std::string(text), want.str());
   EXPECT_EQ(std::string(text).rfind("fixed pieces 5 ", 0), 0u);
+  EXPECT_NE(std::string(text).find("\nfixed band pieces 5 "), std::string::npos);
 }
 
 }  // namespace

@@ -21,9 +21,28 @@
 //
 // A *forced commit* happens when the window is full and the next point
 // arrives before a decision. It commits the best prefix: the path to the
-// frontier node in the newer half of the window (index >= root + H, H =
-// floor((N - 1) / 2)) with the fewest pieces, the newest on ties; the window
-// is then relabelled from that node, exactly.
+// frontier node at index >= root + H (H = floor((N - 1 - margin) / 2),
+// margin = the criterion's kLag + kContext: forced_step()) with the fewest
+// pieces, the newest on ties; the window is then relabelled from that node,
+// exactly.
+//
+// Exactness (proven). With no forced commit the stream emits exactly the
+// pieces of the whole-input fitter run at tol itself (fit_min_count with
+// tie_break >= 1; `kerf fit --tie-break none`): label() gives each node the
+// d and pred of min_count (pred = the nearest start among those one piece
+// closer to the root that reach it; the guard drops only starts that reach
+// nothing later, in both), a decided commit follows pred from a node every
+// complete path passes, and piece() runs the fitter's choose_piece on the
+// same numbers: scale_for() puts the points in the whole-input frame (a power
+// of two: exact in double, the same Fixed operations in kerf::Fixed). Tested
+// bit for bit on the test curves, the corpus's G-code polylines and random
+// curves, in double and Fixed (tests/unit/test_stream_exact.cpp), and line
+// for line through the CLI (tests/cli/stream_check.py).
+//   The whole-input default (tie_break 1e-9) differs: among the fewest-pieces
+// solutions it takes the one at the smallest tol that keeps the count, and
+// that tol is set by the hardest stretch of the whole input (a bottleneck at
+// the end shrinks every piece before it). A stream has emitted its first
+// piece long before it sees that stretch, so no stream can match it.
 //
 // The bound (proof sketch). Let r_1 < ... < r_F be the forced cut points,
 // r_0 = 0, r_{F+1} = n - 1, OPT(a, b) the fewest pieces from p_a to p_b.
@@ -38,14 +57,33 @@
 //      result passes through every r_k, so by (1) it bounds the count.
 //  (4) count <= OPT + F for inputs where a valid piece a -> b stays valid
 //      when cut at an inner point (a -> r and r -> b valid): each cut then
-//      costs one piece. Collinear points reach this exactly. The vertex
-//      criterion does not guarantee that property (pieces pass through
-//      their end points), which is why (3) is the general bound.
-//  (5) With no forced commit, count = OPT (by (1)). A window longer than
-//      every piece does not rule forced commits out: two candidates' paths
-//      can stay apart for longer than a piece (the sine at tol 1 with a
-//      window of 2 L + 8 has three). On the test curves and random curves
-//      the count still equals OPT there; that is tested, not proven.
+//      costs one piece. Collinear points reach this exactly. Neither the
+//      vertex nor the band criterion has that property in general (a piece
+//      must start and end on input points, which the sub-arc of a valid
+//      arc misses), which is why (3) is the general bound.
+//  (5) Window and span. With no forced commit, count = OPT and the pieces
+//      are the whole input's (above). No window length rules forced commits
+//      out, for this rule or any rule that must commit when its window is
+//      full: the candidates are shortest paths to different frontier nodes,
+//      and they can stay apart for longer than any number of pieces (two
+//      interleaved chains of pieces, each of length <= L); which one the
+//      whole-input path takes is decided by pred at the last point, that is
+//      by points not read yet, so two inputs sharing the window's points
+//      but continuing differently can need different first pieces, and one
+//      committed prefix cannot equal both. (We have not written down a
+//      geometric instance; the measurements below show the chains do stay
+//      apart past 2 L + 8 points.) So the claim is stated for what is tested:
+//      L the longest piece of the whole-input fit, a window of 3 L + 8
+//      points gave the whole input's pieces, bit for bit, on every path
+//      tested (test curves, corpus polylines, 24 random curves; vertex: no
+//      forced commit at all; band: 47 forced commits on 3 paths, harmless),
+//      while 2 L + 8 forced 22 (vertex) and 225 (band) commits, and gave
+//      other pieces on 2 and 6 paths (a random curve lost a piece). The
+//      stream counts forced commits (StreamStats::forced); with none, the
+//      result is the whole input's whatever the window. StreamStats::reach,
+//      the longest a start stayed alive, bounds how far back the frontier
+//      reaches (frontier nodes lie within reach of the newest point), not
+//      how far back the candidates' paths part.
 //
 // No allocation, no exceptions, no OS header: all storage is members.
 #pragma once
@@ -62,6 +100,7 @@ struct StreamStats {
   std::uint64_t pieces = 0;  // emitted so far
   std::uint32_t forced = 0;  // forced commits
   std::uint32_t peak = 0;    // the most points the window held at once
+  std::uint32_t reach = 0;   // the longest span (index steps) a start stayed alive
 };
 
 namespace detail {
@@ -94,8 +133,12 @@ class StreamEngine {
   static_assert(N >= 8 && N < 0x40000000u, "a window holds 8 .. 2^30 points");
 
  public:
+  using Value = S;  // the scalar type
   static constexpr std::uint32_t kCapacity = static_cast<std::uint32_t>(N);
-  static constexpr std::uint32_t kMinWindow = 4 + Criterion::kLag + Criterion::kContext;
+  // Points of the window that hold no start of the decision: the context
+  // before the root and the newest points, not labelled yet.
+  static constexpr std::uint32_t kMargin = Criterion::kLag + Criterion::kContext;
+  static constexpr std::uint32_t kMinWindow = 4 + kMargin;
 
   StreamEngine() = default;
   // The criterion may point into its own storage.
@@ -106,14 +149,18 @@ class StreamEngine {
   // each piece decided, forced_end marking the last piece of a forced
   // commit (its end is a cut r_k). degenerate: p equals the previous point;
   // invalid_argument: p not finite; capacity_exceeded: 2^32 points.
+  // invalid_argument also for |x| or |y| above the extent (scale_for).
   template <class Sink>
   Status push(Vec2<S> p, Sink& sink) {
     if (!Scalar<S>::is_finite(p.x) || !Scalar<S>::is_finite(p.y)) return Status::invalid_argument;
-    if (size_ > 0 && pts_[size_ - 1] == p) return Status::degenerate;
+    if (extent_ > S(0) && (extent_ < Scalar<S>::abs(p.x) || extent_ < Scalar<S>::abs(p.y)))
+      return Status::invalid_argument;
+    if (size_ > 0 && orig_[size_ - 1] == p) return Status::degenerate;
     if (base_ + size_ >= 0xFFFFFFFFu) return Status::capacity_exceeded;
-    if (size_ == window_) force(sink);
+    if (size_ >= window_) force(sink);
     const std::uint32_t m = size_++;
-    pts_[m] = p;
+    orig_[m] = p;
+    pts_[m] = p * scale_;
     ++stats_.points;
     if (size_ > stats_.peak) stats_.peak = size_;
     if (m == 0) {
@@ -146,11 +193,34 @@ class StreamEngine {
 
   const StreamStats& stats() const { return stats_; }
   std::uint32_t window() const { return window_; }
+  // H of the bound: a forced commit moves the root on by at least this.
+  std::uint32_t forced_step() const { return (window_ - 1 - kMargin) / 2; }
+
+  // Fits in the whole-input fitters' frame: the points scaled by the power
+  // of two (Scalar<S>::normaliser) that brings `extent`, the largest |x| or
+  // |y| the stream will hold, into [0.5, 1). Those fitters take it from the
+  // largest coordinate of their input; given an extent in the same octave,
+  // the stream computes what they compute (the same operations on the same
+  // scaled numbers), which matters in kerf::Fixed. Points beyond the extent
+  // are refused. Call after start(), before the first point; in double the
+  // scale changes nothing but the refusal (powers of two are exact).
+  Status scale_for(S extent) {
+    if (!Scalar<S>::is_finite(extent) || !(extent > S(0)) || stats_.points > 0)
+      return Status::invalid_argument;
+    extent_ = extent;
+    scale_ = Scalar<S>::normaliser(extent);
+    unscale_ = S(1) / scale_;
+    crit_.rescale(scale_);
+    return Status::ok;
+  }
 
  protected:
   Status begin(std::uint32_t window) {
     if (window < kMinWindow || window > kCapacity) return Status::invalid_argument;
     window_ = window;
+    extent_ = S(0);
+    scale_ = S(1);
+    unscale_ = S(1);
     size_ = 0;
     root_ = 0;
     labeled_ = 0;
@@ -184,6 +254,11 @@ class StreamEngine {
     pred_[v] = best_i;
     live_[v] = 1;
     hint_[v] = 0;
+    for (std::uint32_t i = root_; i < v; ++i) {  // the oldest live start
+      if (live_[i] == 0) continue;
+      if (v - i > stats_.reach) stats_.reach = v - i;
+      break;
+    }
   }
 
   // Labels every node again from the root, after a forced commit.
@@ -229,9 +304,13 @@ class StreamEngine {
 
   template <class Sink>
   void force(Sink& sink) {
-    const std::uint32_t half = (window_ - 1) / 2;
+    // The cut lies H past the root, and past the context too, so that the
+    // commit frees a point (near the stream's start the root is below it).
+    const std::uint32_t from = root_ + forced_step() > Criterion::kContext + 1
+                                   ? root_ + forced_step()
+                                   : Criterion::kContext + 1;
     std::uint32_t best = labeled_ - 1;  // the newest labelled point is always on the frontier
-    for (std::uint32_t v = labeled_ - 1; v-- > root_ + half;)
+    for (std::uint32_t v = labeled_ - 1; v-- > from;)
       if (live_[v] != 0 && dist_[v] < dist_[best]) best = v;
     ++stats_.forced;
     commit(best, true, sink);
@@ -247,6 +326,10 @@ class StreamEngine {
     while (k-- > 0) {
       const std::uint32_t j = path_[k];
       Piece<S> piece = crit_.piece(pts_, i, j);
+      piece.segment.start = orig_[i];  // as the whole-input fitters write them
+      piece.segment.end = orig_[j];
+      piece.segment.centre = piece.segment.centre * unscale_;
+      piece.error = piece.error * unscale_;
       piece.first = static_cast<std::uint32_t>(base_ + i);
       piece.last = static_cast<std::uint32_t>(base_ + j);
       sink(piece, forced && k == 0);
@@ -262,6 +345,7 @@ class StreamEngine {
     for (std::uint32_t v = from; v < size_; ++v) {
       const std::uint32_t w = v - from;
       pts_[w] = pts_[v];
+      orig_[w] = orig_[v];
       dist_[w] = dist_[v];
       pred_[w] = pred_[v] >= from ? pred_[v] - from : 0;  // below: a dead non-descendant
       live_[w] = v < r ? 0 : live_[v];  // the context is no start
@@ -281,7 +365,11 @@ class StreamEngine {
   std::uint32_t labeled_ = 0;  // nodes [0, labeled_) have labels
   std::uint64_t base_ = 0;     // stream index of local 0
   StreamStats stats_{};
-  Slots<Vec2<S>, N> pts_;
+  S extent_{};  // 0: none
+  S scale_ = S(1);
+  S unscale_ = S(1);
+  Slots<Vec2<S>, N> pts_;   // scaled
+  Slots<Vec2<S>, N> orig_;  // as pushed
   Slots<std::uint32_t, N> dist_;
   Slots<std::uint32_t, N> pred_;
   Slots<std::uint32_t, N> hint_;
@@ -298,7 +386,8 @@ struct VertexCriterion {
   static constexpr std::uint32_t kContext = 0;
   static constexpr std::size_t kSetHalf = 3 * N + 8;  // fit.hpp's workspace_intervals / 2
 
-  S eps{};
+  S tol{};
+  S eps{};  // tol in the scaled frame
   Method method = Method::optimal;
   Slots<Interval<S>, 2 * kSetHalf> sets;
 
@@ -306,6 +395,7 @@ struct VertexCriterion {
     return AngleSet<S>(Span<Interval<S>>(sets.item, kSetHalf),
                        Span<Interval<S>>(sets.item + kSetHalf, kSetHalf));
   }
+  void rescale(S factor) { eps = tol * factor; }
   void prepare(const Vec2<S>*, std::uint32_t) {}
   bool feasible(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, std::uint32_t& hint) {
     AngleSet<S> s = set();
@@ -333,6 +423,7 @@ class PointWindow : public detail::StreamEngine<S, N, detail::VertexCriterion<S,
   // window outside [4, N].
   Status start(S tol, Method method, std::uint32_t window = static_cast<std::uint32_t>(N)) {
     if (!detail::tol_ok(tol)) return Status::invalid_argument;
+    this->crit_.tol = tol;
     this->crit_.eps = tol;
     this->crit_.method = method;
     return this->begin(window);

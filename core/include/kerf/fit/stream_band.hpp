@@ -1,20 +1,27 @@
 // The band criterion (fit/band_fit.hpp), streamed: BandWindow<S, N> is
 // PointWindow's engine (fit/stream.hpp) with the band pair test.
 //
-// A band gate depends on the edges on both sides of its vertex, so the
-// region is rebuilt over the window each time a point arrives, labels trail
-// the newest point by one (its gate still waits for the next edge), and one
-// point is kept before the root (the root's gate needs the edge into it).
-// The pair test and the guard are the whole-input fitter's public ones. The
-// region's convexity narrowing (fit/band_region.hpp) may still reach a little
-// further than one vertex, so a window's region can differ from the whole
-// input's near its ends; every piece is valid in the region it was chosen
+// A band gate depends on the edges on both sides of its vertex, and the
+// region's convexity narrowing (fit/band_region.hpp) halves a vertex's gate
+// when a cell next to it is not convex, which can reach on to the next
+// vertex, and so on. The ends of a window's region are path ends (gates
+// square to the end edge), where the whole input has ordinary corners. So
+// the region is rebuilt over the window each time a point arrives, labels
+// trail the newest point by kLag = 3 points and kContext = 3 points are kept
+// before the root: pairs are tested and pieces chosen at least three
+// vertices away from either end of the window's region. With one point of
+// each (the first version) the narrowing at the window's last vertex reached
+// a label and changed a piece (a corpus polyline); with 2 or 3, the regions
+// agreed with the whole input's wherever the tests looked, and the streamed
+// pieces are the whole-input band fitter's at tol itself (tie_break >= 1),
+// bit for bit, in double and Fixed (tests/unit/test_stream_exact.cpp). That
+// agreement is tested, not proven: a narrowing cascade longer than three
+// vertices would break it. Every piece is valid in the region it was chosen
 // in, which lies inside the band, and piece() tests it again in the region
-// current at commit time (error = infinity if that region refuses it; the
-// CLI then fails). The bound (3) of fit/stream.hpp carries over with the
-// optima taken in the windows' regions, given that a one-step piece (an
-// edge of the polyline) is valid, which the engine assumes; (1) holds only
-// as far as those regions agree, which the tests check on the curves.
+// current at commit time (error = infinity if that region refuses it; the CLI
+// then fails). The bound (3) of fit/stream.hpp carries over with the optima
+// taken in the windows' regions, given that a one-step piece (an edge of the
+// polyline) is valid, which the engine assumes.
 #pragma once
 
 #include "kerf/fit/band_fit.hpp"
@@ -27,10 +34,11 @@ namespace detail {
 
 template <class S, std::size_t N>
 struct BandCriterion {
-  static constexpr std::uint32_t kLag = 1;
-  static constexpr std::uint32_t kContext = 1;
+  static constexpr std::uint32_t kLag = 3;
+  static constexpr std::uint32_t kContext = 3;
 
   BandWidth<S> width{};
+  S factor = S(1);  // the widths' scale: the points' (StreamEngine::scale_for)
   Slots<BandWidth<S>, N> widths;
   Slots<BandVertex<S>, N> vertices;
   Slots<std::uint32_t, N> next_barrier;  // the first barrier after each vertex
@@ -38,10 +46,11 @@ struct BandCriterion {
   BandRegion<S> region;
   S guard_eps{};                         // the longest half gate
 
+  void rescale(S f) { factor = f; }
   void prepare(const Vec2<S>* pts, std::uint32_t n) {
     for (; filled < n; ++filled) widths[filled] = width;
     region = BandRegion<S>(pts, n, vertices.item);
-    (void)region.build(widths.item, S(1));  // always ok: it narrows until convex
+    (void)region.build(widths.item, S(1) * factor);  // always ok: it narrows until convex
     S longest = S(0);
     next_barrier[n - 1] = n;
     for (std::uint32_t k = n; k-- > 0;) {
@@ -79,13 +88,14 @@ class BandWindow : public detail::StreamEngine<S, N, detail::BandCriterion<S, N>
  public:
   // Starts a new stream with the band `left` and `right` of the path (each
   // >= 0, one > 0, both finite). invalid_argument otherwise, or for a
-  // window outside [6, N].
+  // window outside [kMinWindow = 10, N].
   Status start(S left, S right, std::uint32_t window = static_cast<std::uint32_t>(N)) {
     using M = Scalar<S>;
     if (!M::is_finite(left) || !M::is_finite(right) || left < S(0) || right < S(0) ||
         !(left + right > S(0)))
       return Status::invalid_argument;
     this->crit_.width = BandWidth<S>{left, right};
+    this->crit_.factor = S(1);
     this->crit_.filled = 0;
     return this->begin(window);
   }
