@@ -12,4 +12,13 @@ set(CMAKE_C_COMPILER   ${KERF_TRIPLE}-gcc)
 set(CMAKE_CXX_COMPILER ${KERF_TRIPLE}-g++)
 include(${CMAKE_CURRENT_LIST_DIR}/cmake/CrossBinutils.cmake)
 
-set(CMAKE_CROSSCOMPILING_EMULATOR qemu-aarch64;-L;${KERF_TARGET_ROOT})
+# The target's libmodbus and libgpiod, extracted from Debian's arm64 packages
+# by toolchain/fetch_target_libs.sh (KerfDeps.cmake links them from there).
+# Under qemu-user the loader and libc stay the cross toolchain's (-L); only
+# those two libraries come from LD_LIBRARY_PATH, which holds nothing else.
+cmake_path(ABSOLUTE_PATH CMAKE_CURRENT_LIST_DIR NORMALIZE OUTPUT_VARIABLE kerf_toolchain_dir)
+set(KERF_TARGET_LIBS ${kerf_toolchain_dir}/../build/_sysroot/${KERF_TRIPLE})
+cmake_path(NORMAL_PATH KERF_TARGET_LIBS)
+
+set(CMAKE_CROSSCOMPILING_EMULATOR qemu-aarch64;-L;${KERF_TARGET_ROOT}
+    -E;LD_LIBRARY_PATH=${KERF_TARGET_LIBS}/usr/lib/${KERF_TRIPLE})

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs every Debian 12 package that kerf's build, cross builds and tests
 # need. Idempotent and non-interactive: when everything is already installed it
-# only runs dpkg-query and exits (no apt-get update).
+# only runs dpkg-query and apt-cache (no apt-get update).
 #
 # To add a package: append it to PACKAGES below (one per line, keep it sorted
 # by purpose) and say why in the comment next to it.
@@ -38,16 +38,19 @@ done
 
 if ((${#missing[@]} == 0)); then
   echo "setup.sh: all ${#PACKAGES[@]} packages installed"
-  exit 0
+else
+  echo "setup.sh: installing ${missing[*]}"
+  SUDO=()
+  if ((EUID != 0)); then
+    command -v sudo >/dev/null || { echo "setup.sh: run as root (or install sudo)" >&2; exit 1; }
+    SUDO=(sudo)
+  fi
+  export DEBIAN_FRONTEND=noninteractive
+  APT=(apt-get -y -q -o Acquire::Retries=3 -o Dpkg::Use-Pty=0)
+  "${SUDO[@]}" "${APT[@]}" update
+  "${SUDO[@]}" env DEBIAN_FRONTEND=noninteractive "${APT[@]}" install --no-install-recommends "${missing[@]}"
 fi
 
-echo "setup.sh: installing ${missing[*]}"
-SUDO=()
-if ((EUID != 0)); then
-  command -v sudo >/dev/null || { echo "setup.sh: run as root (or install sudo)" >&2; exit 1; }
-  SUDO=(sudo)
-fi
-export DEBIAN_FRONTEND=noninteractive
-APT=(apt-get -y -q -o Acquire::Retries=3 -o Dpkg::Use-Pty=0)
-"${SUDO[@]}" "${APT[@]}" update
-"${SUDO[@]}" env DEBIAN_FRONTEND=noninteractive "${APT[@]}" install --no-install-recommends "${missing[@]}"
+# The aarch64 cross build's libmodbus and libgpiod: the arm64 packages,
+# extracted into build/_sysroot (never installed: see the script).
+bash "$(dirname "$0")/fetch_target_libs.sh"

@@ -21,7 +21,8 @@
 # dependencies are the C and C++ runtimes, plus libmodbus and libgpiod where
 # the build found them (the host). dpkg-shlibdeps computes Depends for a
 # native build; it cannot read a cross build's target libraries (they are not
-# in the host's dpkg database), so a cross build states them by hand.
+# in the host's dpkg database: toolchain/fetch_target_libs.sh only extracts
+# them), so a cross build states them by hand.
 
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
@@ -106,13 +107,20 @@ set(CPACK_DEBIAN_PACKAGE_SECTION misc)
 set(CPACK_DEBIAN_PACKAGE_HOMEPAGE "https://example.invalid/kerf")
 if(CMAKE_CROSSCOMPILING)
   # Debian 12's (bookworm's) runtimes, what the cross compiler links against
-  # (pack_deb checks libc6 against the GLIBC_ versions the binary needs);
-  # this build has no libmodbus or libgpiod (KerfDeps.cmake).
+  # (pack_deb checks libc6 against the GLIBC_ versions the binary needs, and
+  # that every shared library kerf needs is named here), and libmodbus and
+  # libgpiod as their bookworm packages' shlibs files give them.
   set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS OFF)
-  set(CPACK_DEBIAN_PACKAGE_DEPENDS "libc6 (>= 2.35), libgcc-s1 (>= 3.0), libstdc++6 (>= 12)")
-  if(NOT KERF_HAVE_MODBUS)
+  set(kerf_deb_depends "libc6 (>= 2.35), libgcc-s1 (>= 3.0), libstdc++6 (>= 12)")
+  if(KERF_HAVE_MODBUS)  # the library of `kerf sim` and `kerf run` (kerf_simjob)
+    string(APPEND kerf_deb_depends ", libmodbus5 (>= 3.1.6)")
+    if(KERF_HAVE_GPIOD)
+      string(APPEND kerf_deb_depends ", libgpiod2 (>= 1.6.3)")
+    endif()
+  else()
     message(STATUS "kerf: the ${kerf_deb_arch} .deb's kerf has no `kerf run` (no libmodbus for the target)")
   endif()
+  set(CPACK_DEBIAN_PACKAGE_DEPENDS "${kerf_deb_depends}")
 else()
   set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 endif()
