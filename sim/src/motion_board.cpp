@@ -68,12 +68,14 @@ bool MotionBoard::command(std::uint16_t code) {
       break;
     case hal::Command::abort: fault_locked(hal::kFaultAbort); break;
     case hal::Command::fault_reset:
+      // Latched until the fault reaction is over, as a drive does: while the
+      // axes still brake the board stays in fault and resets once at rest
+      // (a reset taken at once would leave the brake unfinished and start
+      // the next segment from a point the axes have not reached).
       ok = state_ == BoardState::fault;
       if (ok) {
-        state_ = BoardState::idle;
-        faults_ = 0;
-        tail_end_ = pos_;  // the next segment starts where the axes stopped
-        dropped_through_ = last_accepted_;  // what the fault dropped never ran
+        reset_pending_ = true;
+        if (!exec_busy_) reset_locked();
       }
       break;
     case hal::Command::finish: finish_ = true; break;
@@ -81,6 +83,14 @@ bool MotionBoard::command(std::uint16_t code) {
   }
   changed_.notify_all();
   return ok;
+}
+
+void MotionBoard::reset_locked() {
+  state_ = BoardState::idle;
+  faults_ = 0;
+  reset_pending_ = false;
+  tail_end_ = pos_;                   // the next segment starts where the axes stopped
+  dropped_through_ = last_accepted_;  // what the fault dropped never ran
 }
 
 void MotionBoard::fault_locked(std::uint16_t bit) {
@@ -168,6 +178,7 @@ void MotionBoard::tick_locked() {
   if (e.last_completed > last_executed_) last_executed_ = e.last_completed;
   executing_ = state_ == BoardState::fault ? 0 : e.running;
   if (state_ != BoardState::fault) torch_ = e.running != 0 && torch_of_[e.running % torch_of_.size()] != 0;
+  if (state_ == BoardState::fault && reset_pending_ && e.at_rest) reset_locked();
   if (state_ == BoardState::running && finish_ && count_ == 0 && e.at_rest) {
     state_ = BoardState::done;
     torch_ = false;

@@ -114,5 +114,34 @@ TEST(BoardMotion, AbortTurnsTheTorchOffAndStopsOnThePath) {
   EXPECT_EQ(rig.board.executed(), std::vector<std::uint32_t>{5});
 }
 
+TEST(BoardMotion, FaultResetWhileBrakingTakesEffectAtRest) {
+  // A controller may reset the fault at once (kerf's does when it takes over
+  // a board). The reset is latched: the board stays in fault until the
+  // brake is over, then goes idle, and the next segment starts at rest.
+  MotionRig rig;
+  push_job(rig);
+  ASSERT_TRUE(rig.run_until([](const hal::BoardStatus& s) { return s.position.x > 5.0; }, 5000));
+  ASSERT_EQ(rig.link->command(hal::Command::abort), LinkError::none);
+  ASSERT_EQ(rig.link->command(hal::Command::fault_reset), LinkError::none);
+  rig.board.tick();
+  EXPECT_EQ(rig.board.status().state, BoardState::fault);  // still braking
+  ASSERT_TRUE(rig.run_until([](const hal::BoardStatus& s) { return s.state == BoardState::idle; }, 5000));
+  const double stopped_at = rig.board.status().position.x;
+  for (int i = 0; i < 50; ++i) rig.board.tick();
+  EXPECT_DOUBLE_EQ(rig.board.status().position.x, stopped_at);  // at rest when idle
+  EXPECT_EQ(rig.board.status().faults, 0u);
+  hal::BoardStatus st;
+  hal::SegmentCommand next;
+  next.seq = 5;
+  next.end = {50.0, 0.0};
+  next.feed = 50.0;
+  ASSERT_EQ(rig.link->push(next, st), LinkError::none) << rig.link->last_error();
+  ASSERT_EQ(rig.link->command(hal::Command::start), LinkError::none);
+  ASSERT_EQ(rig.link->command(hal::Command::finish), LinkError::none);
+  ASSERT_TRUE(rig.run_until([](const hal::BoardStatus& b) { return b.state == BoardState::done; }, 5000));
+  EXPECT_DOUBLE_EQ(rig.board.status().position.x, 50.0);
+  EXPECT_EQ(rig.board.executed(), std::vector<std::uint32_t>{5});
+}
+
 }  // namespace
 }  // namespace kerf::test

@@ -70,6 +70,7 @@ class MotionBoard {
   bool has_work_locked() const;
   void tick_locked();
   void fault_locked(std::uint16_t bit);
+  void reset_locked();  // fault -> idle, the next segment from where the axes stopped
   hal::BoardStatus status_locked() const;
   void servo_loop(double speed);
 
@@ -87,6 +88,7 @@ class MotionBoard {
   bool finish_ = false;
   bool torch_ = false;
   bool exec_busy_ = false;      // the executor is moving or has segments
+  bool reset_pending_ = false;  // fault_reset taken while braking: reset at rest
   bool exec_moving_ = false;    // it travelled in the last period
   Vec2<double> pos_{};
   Vec2<double> tail_end_{};     // where the last segment given to the executor ends
