@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cli/fit_job.hpp"
+#include "io/prefault.hpp"
 #include "kerf/geom/segment.hpp"
 
 namespace kerf::cli {
@@ -466,6 +467,7 @@ bool weld_gcode(const io::GcodeFile& g, const WeldOptions& opts, std::string& ou
   std::size_t bytes = 0;
   for (const io::GBlock& b : g.blocks) bytes += b.text.size() + b.end.size();
   out.reserve(bytes + bytes / 8);  // arcs shorten the text; a "G1 " added after one lengthens it
+  io::prefault(out.data(), bytes);
   Welder w{g, opts, stats, Emitter(out), {}};
   std::size_t next = 0;
   for (std::size_t p = 0; p < g.polylines.size(); ++p) {

@@ -1,5 +1,7 @@
 #include "io/gcode_reader.hpp"
 
+#include "io/prefault.hpp"
+
 #include <cctype>
 #include <charconv>
 #include <cerrno>
@@ -9,6 +11,8 @@
 #include <cstring>
 
 namespace kerf::io {
+
+static_assert(sizeof(GWord) <= 16, "a word is written for every letter of a file");
 
 namespace {
 
@@ -316,18 +320,18 @@ GcodeFile parse_source(std::string text_in, std::string display_name) {
   src->text = std::move(text_in);
   const std::string_view text = src->text;
   State st;
-  // One block per line, and at most a word per letter and a comment per ';'
-  // or '(', reserved at once: growing them moved and faulted in megabytes.
-  std::size_t lines = 1, letters = 0, comment_marks = 0;
+  // One block per line and at most a word per letter, reserved (and mapped)
+  // at once: growing them moved and faulted in megabytes.
+  std::size_t lines = 1, letters = 0;
   for (std::size_t k = 0; k < text.size(); ++k) {
     const char c = text[k];
     lines += c == '\n' || (c == '\r' && (k + 1 == text.size() || text[k + 1] != '\n'));
     letters += static_cast<unsigned char>((c | 0x20) - 'a') < 26;
-    comment_marks += c == ';' || c == '(';
   }
   f.blocks.reserve(lines);
+  prefault(f.blocks.data(), lines * sizeof(GBlock));
   src->words.reserve(letters);
-  src->pieces.reserve(letters + comment_marks);
+  prefault(src->words.data(), letters * sizeof(GWord));
   Scratch sc;
   std::size_t i = 0, line = 0;
   auto refuse = [&](std::string why) {
@@ -402,6 +406,8 @@ GcodeFile read_gcode(const std::string& path) {
   if (size > 0) {
     // A file of known size: read whole into its buffer (one allocation, no
     // copy); parse_source refuses a line that is too long.
+    text.reserve(static_cast<std::size_t>(size));
+    prefault(text.data(), text.capacity());
     text.resize(static_cast<std::size_t>(size));
     text.resize(std::fread(text.data(), 1, text.size(), in));
   }

@@ -29,11 +29,13 @@ namespace kerf::io {
 
 enum class Motion : std::uint8_t { none, rapid, linear, cw, ccw };
 
+// 16 bytes: a large file has hundreds of thousands of words, each written
+// to memory touched for the first time.
 struct GWord {
-  char letter = 0;      // upper case
   double value = 0.0;
-  std::uint32_t pos = 0;  // where the word starts in GBlock::text (lines are at most 64 KiB)
-  std::uint32_t len = 0;  // its length as written (blanks inside included)
+  std::uint32_t pos = 0;      // where the word starts in GBlock::text (lines are at most 64 KiB)
+  std::uint32_t len : 24 = 0;  // its length as written (blanks inside included)
+  char letter : 8 = 0;        // upper case
 };
 
 struct GBlock {
