@@ -299,6 +299,16 @@ void collect_polylines(GcodeFile& f) {
 
 namespace {
 
+// Appends v's items to `to`; when it grows, the new buffer is mapped at once.
+template <class T>
+void append(std::vector<T>& to, const std::vector<T>& v) {
+  if (to.size() + v.size() > to.capacity()) {
+    to.reserve(2 * to.capacity() + v.size());
+    prefault(to.data(), to.capacity() * sizeof(T));
+  }
+  to.insert(to.end(), v.begin(), v.end());
+}
+
 // Points each block's spans at its words and pieces in `src`, which no
 // longer grows (each span's size was set as the block was parsed).
 void bind_spans(GcodeFile& f, const GcodeFile::Source& src) {
@@ -332,6 +342,8 @@ GcodeFile parse_source(std::string text_in, std::string display_name) {
   prefault(f.blocks.data(), lines * sizeof(GBlock));
   src->words.reserve(letters);
   prefault(src->words.data(), letters * sizeof(GWord));
+  src->pieces.reserve(lines);  // a comment or an unknown word per line is common; more grows
+  prefault(src->pieces.data(), lines * sizeof(std::string_view));
   Scratch sc;
   std::size_t i = 0, line = 0;
   auto refuse = [&](std::string why) {
@@ -367,9 +379,9 @@ GcodeFile parse_source(std::string text_in, std::string display_name) {
     }
     if (b.decimals > f.decimals) f.decimals = b.decimals;
     // The spans get their place in bind_spans; their sizes are kept here.
-    src->words.insert(src->words.end(), sc.words.begin(), sc.words.end());
-    src->pieces.insert(src->pieces.end(), sc.comments.begin(), sc.comments.end());
-    src->pieces.insert(src->pieces.end(), sc.unknown.begin(), sc.unknown.end());
+    append(src->words, sc.words);
+    append(src->pieces, sc.comments);
+    append(src->pieces, sc.unknown);
     b.words = {src->words.data(), sc.words.size()};
     b.comments = {src->pieces.data(), sc.comments.size()};
     b.unknown = {src->pieces.data(), sc.unknown.size()};

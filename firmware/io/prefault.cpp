@@ -11,7 +11,7 @@ namespace kerf::io {
 void prefault(const void* p, std::size_t bytes) {
 #if defined(__linux__) && defined(MADV_POPULATE_WRITE)
   constexpr std::size_t kPage = 4096;
-  constexpr std::size_t kWorthIt = 64 * kPage;  // smaller buffers come from malloc's already mapped heap
+  constexpr std::size_t kWorthIt = 16 * kPage;
   if (p == nullptr || bytes < kWorthIt) return;
   const std::uintptr_t begin = (reinterpret_cast<std::uintptr_t>(p) + kPage - 1) / kPage * kPage;
   const std::uintptr_t end = (reinterpret_cast<std::uintptr_t>(p) + bytes) / kPage * kPage;
