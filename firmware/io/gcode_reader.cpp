@@ -2,6 +2,7 @@
 
 #include "io/prefault.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cerrno>
@@ -299,13 +300,25 @@ void collect_polylines(GcodeFile& f) {
 
 namespace {
 
-// Appends v's items to `to`; when it grows, the new buffer is mapped at once.
+// Makes room for n more items in v, whose pages up to `mapped` (items) are
+// mapped: it maps 256 KiB ahead at a time, so that filling v takes no page
+// fault per 4 KiB and touches no memory the parse does not reach (a file
+// refused at an early line).
 template <class T>
-void append(std::vector<T>& to, const std::vector<T>& v) {
-  if (to.size() + v.size() > to.capacity()) {
-    to.reserve(2 * to.capacity() + v.size());
-    prefault(to.data(), to.capacity() * sizeof(T));
+void make_room(std::vector<T>& v, std::size_t& mapped, std::size_t n) {
+  if (v.size() + n > v.capacity()) {
+    v.reserve(2 * v.capacity() + n);
+    mapped = v.size();
   }
+  if (v.size() + n > mapped) {
+    mapped = std::min(v.capacity(), v.size() + std::max<std::size_t>(n, (256u << 10) / sizeof(T)));
+    prefault(v.data() + v.size(), (mapped - v.size()) * sizeof(T));
+  }
+}
+
+template <class T>
+void append(std::vector<T>& to, std::size_t& mapped, const std::vector<T>& v) {
+  make_room(to, mapped, v.size());
   to.insert(to.end(), v.begin(), v.end());
 }
 
@@ -330,8 +343,8 @@ GcodeFile parse_source(std::string text_in, std::string display_name) {
   src->text = std::move(text_in);
   const std::string_view text = src->text;
   State st;
-  // One block per line and at most a word per letter, reserved (and mapped)
-  // at once: growing them moved and faulted in megabytes.
+  // One block per line and at most a word per letter, reserved at once:
+  // growing them moved and faulted in megabytes.
   std::size_t lines = 1, letters = 0;
   for (std::size_t k = 0; k < text.size(); ++k) {
     const char c = text[k];
@@ -339,11 +352,9 @@ GcodeFile parse_source(std::string text_in, std::string display_name) {
     letters += static_cast<unsigned char>((c | 0x20) - 'a') < 26;
   }
   f.blocks.reserve(lines);
-  prefault(f.blocks.data(), lines * sizeof(GBlock));
-  src->words.reserve(letters);
-  prefault(src->words.data(), letters * sizeof(GWord));
+  src->words.reserve(std::min(letters, 8 * lines));
   src->pieces.reserve(lines);  // a comment or an unknown word per line is common; more grows
-  prefault(src->pieces.data(), lines * sizeof(std::string_view));
+  std::size_t blocks_mapped = 0, words_mapped = 0, pieces_mapped = 0;
   Scratch sc;
   std::size_t i = 0, line = 0;
   auto refuse = [&](std::string why) {
@@ -379,12 +390,13 @@ GcodeFile parse_source(std::string text_in, std::string display_name) {
     }
     if (b.decimals > f.decimals) f.decimals = b.decimals;
     // The spans get their place in bind_spans; their sizes are kept here.
-    append(src->words, sc.words);
-    append(src->pieces, sc.comments);
-    append(src->pieces, sc.unknown);
+    append(src->words, words_mapped, sc.words);
+    append(src->pieces, pieces_mapped, sc.comments);
+    append(src->pieces, pieces_mapped, sc.unknown);
     b.words = {src->words.data(), sc.words.size()};
     b.comments = {src->pieces.data(), sc.comments.size()};
     b.unknown = {src->pieces.data(), sc.unknown.size()};
+    make_room(f.blocks, blocks_mapped, 1);
     f.blocks.push_back(b);
   }
   bind_spans(f, *src);
@@ -410,35 +422,34 @@ GcodeFile read_gcode(const std::string& path) {
     return f;
   }
   std::string text;
-  long size = -1;
-  if (!use_stdin && std::fseek(in, 0, SEEK_END) == 0) {
-    size = std::ftell(in);
+  if (!use_stdin && std::fseek(in, 0, SEEK_END) == 0) {  // one allocation for the whole file
+    const long size = std::ftell(in);
+    if (size > 0) text.reserve(static_cast<std::size_t>(size) + 1);  // + 1: the read that finds the end
     std::rewind(in);
   }
-  if (size > 0) {
-    // A file of known size: read whole into its buffer (one allocation, no
-    // copy); parse_source refuses a line that is too long.
-    text.reserve(static_cast<std::size_t>(size));
-    prefault(text.data(), text.capacity());
-    text.resize(static_cast<std::size_t>(size));
-    text.resize(std::fread(text.data(), 1, text.size(), in));
-  }
-  char buf[65536];
-  std::size_t n = 0;
+  // Read in chunks straight into the text, each chunk's pages mapped at once.
   // Reading stops inside a line longer than kMaxLineBytes (parse_gcode then
   // reports it, or an earlier error), so a runaway line is not read whole.
+  constexpr std::size_t kChunk = 1u << 20;
   std::size_t line_bytes = 0;
   bool too_long = false;
-  while (!too_long && (n = std::fread(buf, 1, sizeof buf, in)) > 0) {
-    for (std::size_t k = 0; k < n; ++k) {
-      if (buf[k] == '\n' || buf[k] == '\r') {
+  while (!too_long) {
+    const std::size_t have = text.size();
+    if (text.capacity() == have) text.reserve(2 * have + kChunk);
+    const std::size_t chunk = std::min(kChunk, text.capacity() - have);
+    prefault(text.data() + have, chunk);
+    text.resize(have + chunk);
+    const std::size_t n = std::fread(text.data() + have, 1, chunk, in);
+    text.resize(have + n);
+    for (std::size_t k = have; k < have + n; ++k) {
+      if (text[k] == '\n' || text[k] == '\r') {
         line_bytes = 0;
       } else if (++line_bytes > kMaxLineBytes) {
         too_long = true;
         break;
       }
     }
-    text.append(buf, n);
+    if (n < chunk) break;
   }
   const bool bad = std::ferror(in) != 0;
   if (!use_stdin) std::fclose(in);
