@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cli/fit_job.hpp"
+#include "io/prefault.hpp"
 #include "kerf/geom/segment.hpp"
 
 namespace kerf::cli {
@@ -129,9 +130,9 @@ std::string with_g1(const io::GBlock& b) {
   return s;
 }
 
-std::string word_text(const io::GBlock& b, char letter) {
+std::string_view word_text(const io::GBlock& b, char letter) {
   for (const io::GWord& w : b.words)
-    if (w.letter == letter) return std::string(b.text.substr(w.pos, w.len));
+    if (w.letter == letter) return b.text.substr(w.pos, w.len);
   return {};
 }
 
@@ -145,7 +146,7 @@ class Emitter {
     else out_ += b.text;
     out_ += b.end;
   }
-  void written(const std::string& text, bool arc, const std::string& end) {
+  void written(std::string_view text, bool arc, std::string_view end) {
     out_ += text;
     out_ += end;
     arc_modal_ = arc;
@@ -263,11 +264,20 @@ struct Welder {
       stats.max_deviation_mm = std::max(stats.max_deviation_mm, w.deviation * unit);
       const io::GBlock& eb = g.blocks[pl.point_block[from_index[pc.last]]];
       std::string line;
-      if (const std::string n = word_text(eb, 'N'); !n.empty()) line = n + " ";
+      if (const std::string_view n = word_text(eb, 'N'); !n.empty()) {
+        line = n;
+        line += ' ';
+      }
       line += w.text;
       if (k == 0)
-        if (const std::string f = word_text(g.blocks[pl.first_block], 'F'); !f.empty()) line += " " + f;
-      for (const std::string& c : eb.comments) line += " " + c;
+        if (const std::string_view f = word_text(g.blocks[pl.first_block], 'F'); !f.empty()) {
+          line += ' ';
+          line += f;
+        }
+      for (const std::string_view c : eb.comments) {
+        line += ' ';
+        line += c;
+      }
       const bool arc = pc.segment.is_arc();
       emit.written(line, arc, eb.end);
       ++stats.output_moves;
@@ -280,7 +290,10 @@ struct Welder {
           emit.verbatim(b);
         } else if (!b.comments.empty()) {
           std::string c;
-          for (const std::string& t : b.comments) c += (c.empty() ? "" : " ") + t;
+          for (const std::string_view t : b.comments) {
+            if (!c.empty()) c += ' ';
+            c += t;
+          }
           emit.written(c, arc, b.end);
         }
       }
@@ -454,6 +467,7 @@ bool weld_gcode(const io::GcodeFile& g, const WeldOptions& opts, std::string& ou
   std::size_t bytes = 0;
   for (const io::GBlock& b : g.blocks) bytes += b.text.size() + b.end.size();
   out.reserve(bytes + bytes / 8);  // arcs shorten the text; a "G1 " added after one lengthens it
+  io::prefault(out.data(), bytes);
   Welder w{g, opts, stats, Emitter(out), {}};
   std::size_t next = 0;
   for (std::size_t p = 0; p < g.polylines.size(); ++p) {

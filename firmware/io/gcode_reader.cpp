@@ -1,5 +1,8 @@
 #include "io/gcode_reader.hpp"
 
+#include "io/prefault.hpp"
+
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cerrno>
@@ -9,6 +12,8 @@
 #include <cstring>
 
 namespace kerf::io {
+
+static_assert(sizeof(GWord) <= 16, "a word is written for every letter of a file");
 
 namespace {
 
@@ -22,6 +27,14 @@ struct State {
   bool torch = false;
   double pos[3] = {0, 0, 0};
   bool known[3] = {false, false, false};
+};
+
+// One block's words, comments and unknown words while it is parsed; reused
+// from block to block, then appended to the file's Source.
+struct Scratch {
+  std::vector<GWord> words;
+  std::vector<std::string_view> comments;
+  std::vector<std::string_view> unknown;
 };
 
 bool fail(GcodeFile& f, std::size_t line, std::string reason) {
@@ -45,7 +58,7 @@ double parse_number(const std::string& number) {
 
 // Splits the words and comments of one line; false with a reason on a form
 // kerf refuses to guess at.
-bool split_words(GBlock& b, std::string& reason) {
+bool split_words(GBlock& b, Scratch& sc, std::string& reason) {
   const std::string_view s = b.text;
   std::size_t i = 0;
   while (i < s.size() && (s[i] == ' ' || s[i] == '\t')) ++i;
@@ -58,12 +71,12 @@ bool split_words(GBlock& b, std::string& reason) {
     if (c == ' ' || c == '\t') {
       ++i;
     } else if (c == ';') {
-      b.comments.emplace_back(s.substr(i));
+      sc.comments.push_back(s.substr(i));
       break;
     } else if (c == '(') {
       const std::size_t close = s.find(')', i);
       if (close == std::string::npos) return reason = "unclosed ( comment", false;
-      b.comments.emplace_back(s.substr(i, close + 1 - i));
+      sc.comments.push_back(s.substr(i, close + 1 - i));
       i = close + 1;
     } else if (c == '#') {
       return reason = "parameters (#n) are not supported", false;
@@ -114,8 +127,7 @@ bool split_words(GBlock& b, std::string& reason) {
       if (!std::isfinite(w.value) || std::fabs(w.value) > kMaxCoordinate)
         return reason = "number out of range: \"" + std::string(s.substr(i, end - i)) + "\"", false;
       if ((letter == 'X' || letter == 'Y') && after_point > b.decimals) b.decimals = after_point;
-      if (b.words.empty()) b.words.reserve(4);  // one allocation for a usual block (G1 X Y, N G X Y)
-      b.words.push_back(w);
+      sc.words.push_back(w);
       i = j;
     } else {
       return reason = std::string("unexpected character '") + c + "'", false;
@@ -126,11 +138,11 @@ bool split_words(GBlock& b, std::string& reason) {
 
 int code10(double v) { return static_cast<int>(std::lround(v * 10.0)); }
 
-std::string word_text(const GBlock& b, const GWord& w) { return std::string(b.text.substr(w.pos, w.len)); }
+std::string_view word_text(const GBlock& b, const GWord& w) { return b.text.substr(w.pos, w.len); }
 
 // Applies one block to the modal state; false with a reason on a block kerf
 // cannot follow.
-bool apply_block(GBlock& b, State& st, std::string& reason) {
+bool apply_block(GBlock& b, Scratch& sc, State& st, std::string& reason) {
   double axis[3] = {0, 0, 0};
   bool has_axis[3] = {false, false, false};
   double ij[2] = {0, 0};
@@ -139,7 +151,7 @@ bool apply_block(GBlock& b, State& st, std::string& reason) {
   bool sets_origin = false, loses_position = false, other_words = false;
   int torch_change = 0;
   bool seen[26] = {};
-  for (const GWord& w : b.words) {
+  for (const GWord& w : sc.words) {
     const char L = w.letter;
     if (L != 'G' && L != 'M') {
       if (seen[L - 'A']) return reason = std::string("word ") + L + " appears twice", false;
@@ -169,7 +181,7 @@ bool apply_block(GBlock& b, State& st, std::string& reason) {
         } else if (g == 40 || g == 400 || g == 490 || g == 610 || g == 640 || g == 800 || g == 940) {
           other_words = true;  // dwell, no compensation, exact/blend, cancel, feed mode: no XY change
         } else {
-          b.unknown.push_back(word_text(b, w));
+          sc.unknown.push_back(word_text(b, w));
           loses_position = true;  // homing, work offsets, ...: kerf no longer knows where it is
           other_words = true;
         }
@@ -180,7 +192,7 @@ bool apply_block(GBlock& b, State& st, std::string& reason) {
         if (m == 30 || m == 40) torch_change = 1;
         else if (m == 50) torch_change = -1;
         else if (m == 70 || m == 80 || m == 90 || m == 0 || m == 10 || m == 20 || m == 300) {
-        } else b.unknown.push_back(word_text(b, w));
+        } else sc.unknown.push_back(word_text(b, w));
         other_words = true;
         break;
       }
@@ -197,7 +209,7 @@ bool apply_block(GBlock& b, State& st, std::string& reason) {
       case 'F': b.has_f = true; break;
       case 'N': break;
       case 'S': case 'T': case 'P': other_words = true; break;
-      default: b.unknown.push_back(word_text(b, w)); other_words = true; break;
+      default: sc.unknown.push_back(word_text(b, w)); other_words = true; break;
     }
   }
   if (torch_change != 0) st.torch = torch_change > 0;
@@ -245,7 +257,7 @@ bool apply_block(GBlock& b, State& st, std::string& reason) {
     }
     (void)other_words;
     b.xy_line = st.motion == Motion::linear && st.xy_plane && !has_axis[2] && b.known_start &&
-                b.unknown.empty() && !other_words;
+                sc.unknown.empty() && !other_words;
   }
   for (int k = 0; k < 3; ++k) b.end_pos[k] = st.pos[k];
   b.motion = st.motion;
@@ -288,25 +300,74 @@ void collect_polylines(GcodeFile& f) {
 
 namespace {
 
-GcodeFile parse_source(std::shared_ptr<const std::string> source, std::string display_name) {
+// Makes room for n more items in v, whose pages up to `mapped` (items) are
+// mapped: it maps 256 KiB ahead at a time, so that filling v takes no page
+// fault per 4 KiB and touches no memory the parse does not reach (a file
+// refused at an early line).
+template <class T>
+void make_room(std::vector<T>& v, std::size_t& mapped, std::size_t n) {
+  if (v.size() + n > v.capacity()) {
+    v.reserve(2 * v.capacity() + n);
+    mapped = v.size();
+  }
+  if (v.size() + n > mapped) {
+    mapped = std::min(v.capacity(), v.size() + std::max<std::size_t>(n, (256u << 10) / sizeof(T)));
+    prefault(v.data() + v.size(), (mapped - v.size()) * sizeof(T));
+  }
+}
+
+template <class T>
+void append(std::vector<T>& to, std::size_t& mapped, const std::vector<T>& v) {
+  make_room(to, mapped, v.size());
+  to.insert(to.end(), v.begin(), v.end());
+}
+
+// Points each block's spans at its words and pieces in `src`, which no
+// longer grows (each span's size was set as the block was parsed).
+void bind_spans(GcodeFile& f, const GcodeFile::Source& src) {
+  std::size_t word = 0, piece = 0;
+  for (GBlock& b : f.blocks) {
+    b.words = {src.words.data() + word, b.words.size()};
+    word += b.words.size();
+    b.comments = {src.pieces.data() + piece, b.comments.size()};
+    piece += b.comments.size();
+    b.unknown = {src.pieces.data() + piece, b.unknown.size()};
+    piece += b.unknown.size();
+  }
+}
+
+GcodeFile parse_source(std::string text_in, std::string display_name) {
   GcodeFile f;
   f.file = std::move(display_name);
-  f.source = std::move(source);
-  const std::string_view text = *f.source;
+  auto src = std::make_shared<GcodeFile::Source>();
+  src->text = std::move(text_in);
+  const std::string_view text = src->text;
   State st;
-  // One block per line, reserved at once: growing a vector of 40k blocks
-  // moved and faulted in megabytes (a third of the read).
-  std::size_t lines = 1;
-  for (std::size_t k = 0; k < text.size(); ++k)
-    lines += text[k] == '\n' || (text[k] == '\r' && (k + 1 == text.size() || text[k + 1] != '\n'));
+  // One block per line and at most a word per letter, reserved at once:
+  // growing them moved and faulted in megabytes.
+  std::size_t lines = 1, letters = 0;
+  for (std::size_t k = 0; k < text.size(); ++k) {
+    const char c = text[k];
+    lines += c == '\n' || (c == '\r' && (k + 1 == text.size() || text[k + 1] != '\n'));
+    letters += static_cast<unsigned char>((c | 0x20) - 'a') < 26;
+  }
   f.blocks.reserve(lines);
+  src->words.reserve(std::min(letters, 8 * lines));
+  src->pieces.reserve(lines);  // a comment or an unknown word per line is common; more grows
+  std::size_t blocks_mapped = 0, words_mapped = 0, pieces_mapped = 0;
+  Scratch sc;
   std::size_t i = 0, line = 0;
+  auto refuse = [&](std::string why) {
+    fail(f, line, std::move(why));
+    bind_spans(f, *src);
+    f.source = std::move(src);
+  };
   while (i < text.size()) {
     ++line;
     std::size_t j = i;
     while (j < text.size() && text[j] != '\n' && text[j] != '\r') ++j;
     if (j - i > kMaxLineBytes) {
-      fail(f, line, "line longer than 65536 bytes (not a G-code file?)");
+      refuse("line longer than 65536 bytes (not a G-code file?)");
       return f;
     }
     GBlock b;
@@ -319,14 +380,27 @@ GcodeFile parse_source(std::shared_ptr<const std::string> source, std::string di
     }
     i = j;
     std::string reason;
+    sc.words.clear();
+    sc.comments.clear();
+    sc.unknown.clear();
     if (b.text.find('\0') != std::string::npos) reason = "a NUL byte (not a text file?)";
-    if (!reason.empty() || !split_words(b, reason) || !apply_block(b, st, reason)) {
-      fail(f, line, reason);
+    if (!reason.empty() || !split_words(b, sc, reason) || !apply_block(b, sc, st, reason)) {
+      refuse(std::move(reason));
       return f;
     }
     if (b.decimals > f.decimals) f.decimals = b.decimals;
-    f.blocks.push_back(std::move(b));
+    // The spans get their place in bind_spans; their sizes are kept here.
+    append(src->words, words_mapped, sc.words);
+    append(src->pieces, pieces_mapped, sc.comments);
+    append(src->pieces, pieces_mapped, sc.unknown);
+    b.words = {src->words.data(), sc.words.size()};
+    b.comments = {src->pieces.data(), sc.comments.size()};
+    b.unknown = {src->pieces.data(), sc.unknown.size()};
+    make_room(f.blocks, blocks_mapped, 1);
+    f.blocks.push_back(b);
   }
+  bind_spans(f, *src);
+  f.source = std::move(src);
   collect_polylines(f);
   f.ok = true;
   return f;
@@ -335,7 +409,7 @@ GcodeFile parse_source(std::shared_ptr<const std::string> source, std::string di
 }  // namespace
 
 GcodeFile parse_gcode(std::string_view text, std::string display_name) {
-  return parse_source(std::make_shared<const std::string>(text), std::move(display_name));
+  return parse_source(std::string(text), std::move(display_name));
 }
 
 GcodeFile read_gcode(const std::string& path) {
@@ -350,25 +424,32 @@ GcodeFile read_gcode(const std::string& path) {
   std::string text;
   if (!use_stdin && std::fseek(in, 0, SEEK_END) == 0) {  // one allocation for the whole file
     const long size = std::ftell(in);
-    if (size > 0) text.reserve(static_cast<std::size_t>(size));
+    if (size > 0) text.reserve(static_cast<std::size_t>(size) + 1);  // + 1: the read that finds the end
     std::rewind(in);
   }
-  char buf[65536];
-  std::size_t n = 0;
+  // Read in chunks straight into the text, each chunk's pages mapped at once.
   // Reading stops inside a line longer than kMaxLineBytes (parse_gcode then
   // reports it, or an earlier error), so a runaway line is not read whole.
+  constexpr std::size_t kChunk = 1u << 20;
   std::size_t line_bytes = 0;
   bool too_long = false;
-  while (!too_long && (n = std::fread(buf, 1, sizeof buf, in)) > 0) {
-    for (std::size_t k = 0; k < n; ++k) {
-      if (buf[k] == '\n' || buf[k] == '\r') {
+  while (!too_long) {
+    const std::size_t have = text.size();
+    if (text.capacity() == have) text.reserve(2 * have + kChunk);
+    const std::size_t chunk = std::min(kChunk, text.capacity() - have);
+    prefault(text.data() + have, chunk);
+    text.resize(have + chunk);
+    const std::size_t n = std::fread(text.data() + have, 1, chunk, in);
+    text.resize(have + n);
+    for (std::size_t k = have; k < have + n; ++k) {
+      if (text[k] == '\n' || text[k] == '\r') {
         line_bytes = 0;
       } else if (++line_bytes > kMaxLineBytes) {
         too_long = true;
         break;
       }
     }
-    text.append(buf, n);
+    if (n < chunk) break;
   }
   const bool bad = std::ferror(in) != 0;
   if (!use_stdin) std::fclose(in);
@@ -376,7 +457,7 @@ GcodeFile read_gcode(const std::string& path) {
     f.reason = "read error";
     return f;
   }
-  return parse_source(std::make_shared<const std::string>(std::move(text)), f.file);
+  return parse_source(std::move(text), f.file);
 }
 
 std::string describe_error(const GcodeFile& f) {
@@ -465,7 +546,7 @@ bool gcode_job_from(const GcodeFile& g, PointFile& out, std::string& error) {
   };
   std::vector<Vec2<double>> arc;
   for (const GBlock& b : g.blocks) {
-    if (!b.unknown.empty()) return refuse(b.line, "unsupported word \"" + b.unknown.front() + "\"");
+    if (!b.unknown.empty()) return refuse(b.line, "unsupported word \"" + std::string(b.unknown.front()) + "\"");
     if (b.torch != torch) close();
     torch = b.torch;
     if (!b.moves) continue;

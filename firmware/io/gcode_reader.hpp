@@ -17,6 +17,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -28,20 +29,24 @@ namespace kerf::io {
 
 enum class Motion : std::uint8_t { none, rapid, linear, cw, ccw };
 
+// 16 bytes: a large file has hundreds of thousands of words, each written
+// to memory touched for the first time.
 struct GWord {
-  char letter = 0;      // upper case
   double value = 0.0;
-  std::uint32_t pos = 0;  // where the word starts in GBlock::text (lines are at most 64 KiB)
-  std::uint32_t len = 0;  // its length as written (blanks inside included)
+  std::uint32_t pos = 0;      // where the word starts in GBlock::text (lines are at most 64 KiB)
+  std::uint32_t len : 24 = 0;  // its length as written (blanks inside included)
+  char letter : 8 = 0;        // upper case
 };
 
 struct GBlock {
   std::size_t line = 0;        // 1-based source line
-  std::string_view text;       // the line as read, without its line end (in GcodeFile::source)
-  std::string end;             // its line end as read: "\n", "\r\n", "\r" or "" (last line)
-  std::vector<GWord> words;
-  std::vector<std::string> comments;  // each comment as written, delimiters included
-  std::vector<std::string> unknown;   // words kerf does not model, as written
+  // The views and spans below point into GcodeFile::source: one buffer each
+  // for the whole file instead of several allocations per line.
+  std::string_view text;       // the line as read, without its line end
+  std::string_view end;        // its line end as read: "\n", "\r\n", "\r" or "" (last line)
+  std::span<const GWord> words;
+  std::span<const std::string_view> comments;  // each comment as written, delimiters included
+  std::span<const std::string_view> unknown;   // words kerf does not model, as written
   Motion motion = Motion::none;  // modal motion in force after this block
   bool motion_word = false;    // the block names its motion (G0..G3)
   bool moves = false;          // it programs a motion (axis words under a motion mode)
@@ -76,9 +81,14 @@ struct GPolyline {
 struct GcodeFile {
   bool ok = false;
   std::string file;
-  // The file's text, which the blocks' text views point into: one buffer
-  // instead of an allocation per line (shared, so that copies stay valid).
-  std::shared_ptr<const std::string> source;
+  // What the blocks' views and spans point into (shared, so that copies of
+  // the file stay valid).
+  struct Source {
+    std::string text;                        // the file as read
+    std::vector<GWord> words;                // every block's words, in order
+    std::vector<std::string_view> pieces;    // every block's comments, then its unknown words
+  };
+  std::shared_ptr<const Source> source;
   std::size_t line = 0;  // of the error
   std::string reason;
   std::vector<GBlock> blocks;
