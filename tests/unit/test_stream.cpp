@@ -17,6 +17,7 @@
 #include "kerf/fit/fit.hpp"
 #include "kerf/fit/stream.hpp"
 #include "kerf/fit/stream_band.hpp"
+#include "stream_curves.hpp"
 
 namespace {
 
@@ -28,30 +29,8 @@ using V = kerf::Vec2<double>;
 constexpr std::uint32_t kCap = 1024;
 using Window = kerf::fit::PointWindow<double, kCap>;
 
-std::vector<V> load(const std::string& name) {
-  std::ifstream in(std::string(KERF_TEST_DATA_DIR) + "/curves/" + name);
-  std::vector<V> p;
-  double x, y;
-  while (in >> x >> y) p.push_back({x, y});
-  return p;
-}
-
-// A smooth random curve: the heading takes a random walk, plus noise.
-std::vector<V> random_curve(unsigned seed, std::size_t n) {
-  std::mt19937 rng(seed);
-  std::normal_distribution<double> turn(0.0, 0.08);
-  std::uniform_real_distribution<double> noise(-0.002, 0.002);
-  std::vector<V> p;
-  double x = 0, y = 0, h = 0, k = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    p.push_back({x + noise(rng), y + noise(rng)});
-    k = 0.9 * k + turn(rng);
-    h += k * 0.1;
-    x += std::cos(h);
-    y += std::sin(h);
-  }
-  return p;
-}
+using kerf_test::load_curve;
+using kerf_test::random_curve;
 
 struct Streamed {
   std::vector<Piece<double>> pieces;
@@ -125,7 +104,7 @@ struct Case {
 std::vector<Case> cases() {
   std::vector<Case> c;
   for (const char* f : {"parabola.txt", "circle.txt", "ellipse.txt", "sine.txt", "spiral.txt"})
-    for (double tol : {0.0183, 0.1, 1.0}) c.push_back({load(f), tol, f});
+    for (double tol : {0.0183, 0.1, 1.0}) c.push_back({load_curve(f), tol, f});
   for (unsigned seed = 1; seed <= 4; ++seed)
     c.push_back({random_curve(seed, 400), 0.05, "random " + std::to_string(seed)});
   return c;
@@ -229,7 +208,7 @@ TEST(Stream, RefusesBadInput) {
 
 // Pieces come out while the input is still arriving, not at the end.
 TEST(Stream, EmitsBeforeTheEnd) {
-  const std::vector<V> pts = load("sine.txt");
+  const std::vector<V> pts = load_curve("sine.txt");
   auto w = std::make_unique<Window>();
   std::size_t seen = 0;
   std::size_t first_at = 0;

@@ -22,6 +22,7 @@
 #include "kerf/fit/fit.hpp"
 #include "kerf/fit/stream.hpp"
 #include "kerf/fit/stream_band.hpp"
+#include "stream_curves.hpp"
 
 namespace {
 
@@ -32,29 +33,8 @@ using V = kerf::Vec2<double>;
 
 constexpr std::uint32_t kCap = 1u << 13;
 
-std::vector<V> load(const std::string& name) {
-  std::ifstream in(std::string(KERF_TEST_DATA_DIR) + "/curves/" + name);
-  std::vector<V> p;
-  double x, y;
-  while (in >> x >> y) p.push_back({x, y});
-  return p;
-}
-
-std::vector<V> random_curve(unsigned seed, std::size_t n) {
-  std::mt19937 rng(seed);
-  std::normal_distribution<double> turn(0.0, 0.08);
-  std::uniform_real_distribution<double> noise(-0.002, 0.002);
-  std::vector<V> p;
-  double x = 0, y = 0, h = 0, k = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    p.push_back({x + noise(rng), y + noise(rng)});
-    k = 0.9 * k + turn(rng);
-    h += k * 0.1;
-    x += std::cos(h);
-    y += std::sin(h);
-  }
-  return p;
-}
+using kerf_test::load_curve;
+using kerf_test::random_curve;
 
 struct Path {
   std::string name;
@@ -65,7 +45,7 @@ struct Path {
 std::vector<Path> paths() {
   std::vector<Path> c;
   for (const char* f : {"parabola.txt", "circle.txt", "ellipse.txt", "sine.txt", "spiral.txt"})
-    for (double tol : {0.0183, 0.1, 1.0}) c.push_back({f, load(f), tol});
+    for (double tol : {0.0183, 0.1, 1.0}) c.push_back({f, load_curve(f), tol});
   for (unsigned seed = 1; seed <= 4; ++seed)
     c.push_back({"random " + std::to_string(seed), random_curve(seed, 600), 0.05});
   for (const char* f : {"cncjs_Circle_Diamond_Square_Calibration.gcode", "cncjs_jsdc-laser.gcode",

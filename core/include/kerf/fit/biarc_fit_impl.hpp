@@ -26,18 +26,9 @@ S problem_factor(Span<const Vec2<S>> pts) {
   }
 }
 
-// x (or a length) of the scaled problem in the input's units.
-template <class S>
-Vec2<S> unscale(Vec2<S> x, S factor) {
-  if constexpr (kFloating<S>) {
-    (void)factor;
-    return x;
-  } else {
-    return x * (S(1) / factor);
-  }
-}
-template <class S>
-S unscale(S x, S factor) {
+// x (a point or a length) of the scaled problem in the input's units.
+template <class T, class S>
+T unscale(T x, S factor) {
   if constexpr (kFloating<S>) {
     (void)factor;
     return x;
