@@ -106,6 +106,8 @@ if(OBJDUMP)
       set(pkg libmodbus5)
     elseif(soname STREQUAL "libgpiod.so.2")
       set(pkg libgpiod2)
+    elseif(soname MATCHES "^lib(asan|ubsan)\\.so\\.([0-9]+)$")
+      set(pkg lib${CMAKE_MATCH_1}${CMAKE_MATCH_2})  # the sanitizer build's runtimes
     else()
       message(FATAL_ERROR "kerf needs ${soname}: add its package to this check and to Depends")
     endif()
