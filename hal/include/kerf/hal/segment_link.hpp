@@ -59,7 +59,7 @@ enum class Command : std::uint16_t {
   hold = 2,         // feed hold: ramp to a stop, keep the queue
   resume = 3,
   abort = 4,        // stop now, torch off, clear the queue, state fault
-  fault_reset = 5,  // from fault back to idle
+  fault_reset = 5,  // from fault back to idle, once the axes are at rest (latched while braking)
   finish = 6,       // no more segments: an empty queue then means done
 };
 
