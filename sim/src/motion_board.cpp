@@ -99,6 +99,7 @@ void MotionBoard::fault_locked(std::uint16_t bit) {
   torch_ = false;
   state_ = BoardState::fault;
   faults_ |= bit;
+  reset_pending_ = false;  // a fault after the reset command wants a reset of its own
   count_ = 0;
   exec_->abort();
   changed_.notify_all();
