@@ -125,6 +125,25 @@ class ArcProbe {
   S psi_{};
 };
 
+namespace band_detail {
+
+// Whether x, a point on gate e0 e1's line, lies on the gate segment (within
+// 1/64 of its length). Inside R an arc passes from cell to cell only through
+// gate segments; a gate line's other crossing lies off the segment (an arc of
+// more than a half turn meets the line again) and bounds no cell.
+template <class S>
+bool on_gate_segment(Vec2<S> e0, Vec2<S> e1, Vec2<S> x) {
+  const S f = frame_factor(e1 - e0);
+  const Vec2<S> ge = (e1 - e0) * f;
+  const S gl2 = ge.norm2();
+  if (!(gl2 > S(0))) return true;
+  const S t = ((x - e0) * f).dot(ge);
+  const S slack = gl2 / S(64);
+  return !(t < -slack) && !(t > gl2 + slack);
+}
+
+}  // namespace band_detail
+
 // The largest distance from the stretch [from, to] of `arc` to the segment
 // p0 p1 (see the top of this file for why these candidates suffice).
 template <class S>
@@ -172,15 +191,7 @@ S band_deviation(const BandRegion<S>& r, std::uint32_t i, std::uint32_t j, Vec2<
       // full turn). So a crossing on the segment wins over one off it.
       const Vec2<S> e0 = r.gate_end(k + 1, orient);
       const Vec2<S> e1 = r.gate_end(k + 1, -orient);
-      const S f = band_detail::frame_factor(e1 - e0);
-      const Vec2<S> ge = (e1 - e0) * f;
-      const S gl2 = ge.norm2();
-      auto on_gate = [&](Vec2<S> x) {
-        if (!(gl2 > S(0))) return true;
-        const S t = ((x - e0) * f).dot(ge);
-        const S slack = gl2 / S(64);
-        return !(t < -slack) && !(t > gl2 + slack);
-      };
+      auto on_gate = [&](Vec2<S> x) { return band_detail::on_gate_segment(e0, e1, x); };
       bool found = false;
       bool found_on_gate = false;
       for (int t = 0; t < m; ++t) {

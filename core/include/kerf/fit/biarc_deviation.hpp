@@ -62,20 +62,9 @@ S arc_deviation(const BandRegion<S>& r, std::uint32_t i, std::uint32_t j, const 
   const Vec2<S> chord = part.b - part.a;
   auto position = [&](Vec2<S> x) { return straight ? (x - part.a).dot(chord) : part.position(x); };
   const S end = position(part.b);
-  // Inside R the arc passes from cell to cell only through gate segments.
-  // A gate line's other crossing lies off the segment (an arc of more than
-  // a half turn meets the line again across the circle) and bounds no cell,
-  // so it is skipped, as in band_deviation.
+  // Only crossings on a gate segment bound cells (band_detail::on_gate_segment).
   auto on_gate = [&](std::uint32_t k, Vec2<S> x) {
-    const Vec2<S> e0 = f.map(r.gate_end(k, 1));
-    const Vec2<S> e1 = f.map(r.gate_end(k, -1));
-    const S ff = band_detail::frame_factor(e1 - e0);
-    const Vec2<S> ge = (e1 - e0) * ff;
-    const S gl2 = ge.norm2();
-    if (!(gl2 > S(0))) return true;
-    const S t = ((x - e0) * ff).dot(ge);
-    const S slack = gl2 / S(64);
-    return !(t < -slack) && !(t > gl2 + slack);
+    return band_detail::on_gate_segment(f.map(r.gate_end(k, 1)), f.map(r.gate_end(k, -1)), x);
   };
   S worst = S(0);
   Vec2<S> from = part.a;
