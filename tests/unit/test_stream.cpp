@@ -123,10 +123,11 @@ TEST(Stream, EqualsWholeInputWhenTheWindowHoldsEverything) {
   }
 }
 
-// The claim of the issue, in the form tested (fit/stream.hpp, point (5)): a
-// window of 3 L + 8 points, L the longest piece of the whole-input fit, gives
-// the whole-input count (and pieces: test_stream_exact.cpp). 2 L + 8 is not
-// enough on every curve (a random curve there lost a piece).
+// The issue's claim as measured on these curves (fit/stream.hpp, point (5)):
+// a window of 3 L + 8 points, L the longest piece of the whole-input fit,
+// gives the whole-input count (and pieces: test_stream_exact.cpp). 2 L + 8 is
+// not enough on every curve (a random curve there lost a piece). No window
+// is enough on every input: test_stream_window_span.cpp.
 TEST(Stream, EqualsWholeInputWhenTheWindowExceedsTheLongestSpan) {
   std::uint32_t forced = 0;
   for (const Case& c : cases()) {

@@ -63,22 +63,30 @@
 //      arc misses), which is why (3) is the general bound.
 //  (5) Window and span. With no forced commit, count = OPT and the pieces
 //      are the whole input's (above). No window length rules forced commits
-//      out, for this rule or any rule that must commit when its window is
-//      full: the candidates are shortest paths to different frontier nodes,
-//      and they can stay apart for longer than any number of pieces (two
-//      interleaved chains of pieces, each of length <= L); which one the
-//      whole-input path takes is decided by pred at the last point, that is
-//      by points not read yet, so two inputs sharing the window's points
-//      but continuing differently can need different first pieces, and one
-//      committed prefix cannot equal both. (We have not written down a
-//      geometric instance; the measurements below show the chains do stay
-//      apart past 2 L + 8 points.) So the claim is stated for what is tested:
-//      L the longest piece of the whole-input fit, a window of 3 L + 8
-//      points gave the whole input's pieces, bit for bit, on every path
-//      tested (test curves, corpus polylines, 24 random curves; vertex: no
-//      forced commit at all; band: 47 forced commits on 3 paths, harmless),
-//      while 2 L + 8 forced 22 (vertex) and 225 (band) commits, and gave
-//      other pieces on 2 and 6 paths (a random curve lost a piece). The
+//      out, and no rule that must commit when its window of W points is full
+//      gives the fewest pieces on every input whose pieces are all far
+//      shorter than W. Instance (tests/unit/test_stream_window_span.cpp,
+//      vertex and band): the square wave x_k = k, y_k = 1 if k mod 5 >= 3
+//      else 0, at tol 0.42 (band: both widths). No valid piece spans more
+//      than 6 steps, and the long ones form two chains that never share a
+//      point, 3, 9, 13, 19, ... and 4, 8, 14, 18, ... (two pieces per 10
+//      steps). For W = 3 mod 10 every fewest-pieces fit of the first W + 1
+//      points (A) starts 0 -> 3, and every one of the first W + 2 points (B)
+//      starts 0 -> 4: exact, from the DAG of all valid pairs (the test: W = 63
+//      and 103; a search: every such W from 13 to 1003). A window of W
+//      points, full when point W arrives, has read only points A and B
+//      share and must emit its first piece: the same for both, so one of
+//      them gets OPT + 1 pieces or more, though W = 63 is over 10 L. (Any
+//      other W: take the next W' = 3 mod 10 above it.) kerf loses one piece
+//      on one of the two (vertex: B; band: A), one forced commit each,
+//      within (3).
+//        Measured on smoother paths, L the longest piece of the whole-input
+//      fit: a window of 3 L + 8 points gave the whole input's pieces, bit for
+//      bit, on every path tested (test curves, corpus polylines, 24 random
+//      curves; vertex: no forced commit at all; band: 47 forced commits on 3
+//      paths, harmless), while 2 L + 8 forced 22 (vertex) and 225 (band)
+//      commits, and gave other pieces on 2 and 6 paths (a random curve lost
+//      a piece). A measurement, not a guarantee (the square wave). The
 //      stream counts forced commits (StreamStats::forced); with none, the
 //      result is the whole input's whatever the window. StreamStats::reach,
 //      the longest a start stayed alive, bounds how far back the frontier
