@@ -67,19 +67,19 @@
 //      gives the fewest pieces on every input whose pieces are all far
 //      shorter than W. Instance (tests/unit/test_stream_window_span.cpp,
 //      vertex and band): the square wave x_k = k, y_k = 1 if k mod 5 >= 3
-//      else 0, at tol 0.42 (band: both widths). No valid piece spans more
-//      than 6 steps, and the long ones form two chains that never share a
-//      point, 3, 9, 13, 19, ... and 4, 8, 14, 18, ... (two pieces per 10
-//      steps). For W = 3 mod 10 every fewest-pieces fit of the first W + 1
-//      points (A) starts 0 -> 3, and every one of the first W + 2 points (B)
-//      starts 0 -> 4: exact, from the DAG of all valid pairs (the test: W = 63
-//      and 103; a search: every such W from 13 to 1003). A window of W
-//      points, full when point W arrives, has read only points A and B
-//      share and must emit its first piece: the same for both, so one of
-//      them gets OPT + 1 pieces or more, though W = 63 is over 10 L. (Any
-//      other W: take the next W' = 3 mod 10 above it.) kerf loses one piece
-//      on one of the two (vertex: B; band: A), one forced commit each,
-//      within (3).
+//      else 0, at tol 0.42 (band: both widths); no valid piece spans more
+//      than 6 steps. Take W = 3 mod 10, A its first W + 1 points, B its
+//      first W + 2. Every fewest-pieces fit of A starts 0 -> 3 and every one
+//      of B 0 -> 4: exact, from the DAG of all valid pairs (the test: W = 63
+//      and 103; a search: every such W from 13 to 1003). At W = 63 A's fit
+//      cuts at 3, 9, 13, 19, ..., 63 and B's at 4, 8, 14, 18, ..., 64:
+//      pieces of 6 and 4 steps across the low runs, two chains that never
+//      meet. A window of W points, full when point W arrives, has read only
+//      points A and B share and must emit its first piece: the same for
+//      both, so one of them gets OPT + 1 pieces or more, though W = 63 is
+//      over 10 L. (Any other W: take the next W' = 3 mod 10 above it.) kerf
+//      loses one piece on one of the two (vertex: B; band: A), one forced
+//      commit each, within (3).
 //        Measured on smoother paths, L the longest piece of the whole-input
 //      fit: a window of 3 L + 8 points gave the whole input's pieces, bit for
 //      bit, on every path tested (test curves, corpus polylines, 24 random
