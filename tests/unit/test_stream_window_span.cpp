@@ -4,8 +4,8 @@
 //
 // A square wave, x = k, y = 1 if k mod 5 >= 3 else 0, at tol (band: both
 // widths) 0.42. A has W + 1 points, B has W + 2: they share every point a
-// window of W can hold before it must commit. Every valid piece spans at most
-// a few steps, far less than W / 10, yet the pieces that start some
+// window of W can hold before it must commit. Every valid piece spans fewer
+// than W / 10 steps (at most 6; W = 63, 103), yet the pieces that start some
 // fewest-pieces solution of A and those of B are disjoint sets. A window that
 // is full when point W arrives must emit a first piece, the same one for both,
 // so one of them ends with more than the fewest pieces, whatever the rule.
@@ -179,7 +179,8 @@ void expect_no_window_suffices(std::uint32_t window, const Side& a, const Side& 
   ASSERT_FALSE(fa.ends.empty());
   ASSERT_FALSE(fb.ends.empty());
   EXPECT_TRUE(disjoint(fa.ends, fb.ends)) << "A:" << show(fa.ends) << "  B:" << show(fb.ends);
-  testing::Test::RecordProperty("first_pieces_w" + std::to_string(window), "A:" + show(fa.ends) + "  B:" + show(fb.ends));
+  testing::Test::RecordProperty("first_pieces_w" + std::to_string(window),
+                                "A:" + show(fa.ends) + "  B:" + show(fb.ends));
 
   // The stream: the same first piece for both (it is emitted before point W
   // is accepted), so not both optimal; each within OPT + F (L - 1).
@@ -194,8 +195,9 @@ void expect_no_window_suffices(std::uint32_t window, const Side& a, const Side& 
   for (const Side* s : {&a, &b}) {
     const auto count = static_cast<std::uint32_t>(s->streamed.pieces.size());
     measured += (s == &a ? "A: " : "  B: ") + std::to_string(count) + " pieces (OPT " +
-                std::to_string(s->whole_count) + ", forced " + std::to_string(s->streamed.stats.forced) +
-                ", L " + std::to_string(s->whole_longest) + ", longest valid " +
+                std::to_string(s->whole_count) + ", forced " +
+                std::to_string(s->streamed.stats.forced) + ", L " +
+                std::to_string(s->whole_longest) + ", longest valid " +
                 std::to_string(s->dag.longest) + ")";
     EXPECT_GE(count, s->whole_count);
     EXPECT_LE(count, s->whole_count + s->streamed.stats.forced * (s->whole_longest - 1));
@@ -211,8 +213,8 @@ Side vertex_side(std::size_t n, std::uint32_t window) {
   const std::vector<V> pts = square_wave(n);
   Side s;
   kerf::io::FitStorage st(n);
-  const auto whole =
-      kerf::fit::fit_min_count<double>({pts.data(), n}, kTol, Method::optimal, st.workspace(), st.pieces());
+  const auto whole = kerf::fit::fit_min_count<double>({pts.data(), n}, kTol, Method::optimal,
+                                                      st.workspace(), st.pieces());
   EXPECT_TRUE(whole.ok());
   if (!whole.ok()) return s;
   s.whole_count = whole.value().pieces;
@@ -235,7 +237,8 @@ Side band_side(std::size_t n, std::uint32_t window) {
   s.whole_count = whole.value().pieces;
   s.whole_longest = longest(st.pieces().data(), s.whole_count);
   s.dag = band_dag(pts, kTol);
-  s.streamed = stream<BandWindow>(pts, [window](BandWindow& w) { return w.start(kTol, kTol, window); });
+  s.streamed =
+      stream<BandWindow>(pts, [window](BandWindow& w) { return w.start(kTol, kTol, window); });
   return s;
 }
 
@@ -243,7 +246,8 @@ Side band_side(std::size_t n, std::uint32_t window) {
 TEST(StreamWindowSpan, VertexNoWindowGivesTheWholeInputFit) {
   for (std::uint32_t window : {63u, 103u}) {
     SCOPED_TRACE("window " + std::to_string(window));
-    expect_no_window_suffices(window, vertex_side(window + 1, window), vertex_side(window + 2, window));
+    expect_no_window_suffices(window, vertex_side(window + 1, window),
+                              vertex_side(window + 2, window));
   }
 }
 
