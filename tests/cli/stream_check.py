@@ -12,7 +12,10 @@ For each test curve and some random curves:
   - with no forced commit (the summary says so), the piece lines are the
     same, byte for byte, as `kerf fit --tie-break none` writes (the fit at
     tol itself; the default tie-break needs the whole input). Also on the
-    G1 runs of G-code corpus files (tests/data/gcode), each as a point file.
+    G1 runs of G-code corpus files (tests/data/gcode), each as a point file;
+  - no window guarantees the whole-input count: on the square wave of
+    core/include/kerf/fit/stream.hpp, point (5), a window of 63 gives one of
+    two inputs (64 and 65 points, pieces of at most 6 steps) an extra piece.
 And pieces come out while the input is still arriving: half the points are
 written to kerf's stdin, and a piece must be read back before the rest go in.
 """
@@ -221,6 +224,30 @@ if refused > compared // 10:
     sys.exit(f"{refused} whole-input fixed fits refused, {compared} compared: too few compared")
 print(f"ok: {compared} streamed fits (double and fixed) equal the whole-input fit "
       f"(--tie-break none) line for line ({refused} fixed whole-input fits refused their own check)")
+
+# No window guarantees the whole-input count (core/include/kerf/fit/stream.hpp,
+# point (5)): the square wave x = k, y = [k mod 5 >= 3] at tol 0.42, 64 and 65
+# points. No whole-input piece spans more than 6 steps (x = k is the index),
+# but a window of 63 must write its first piece before it can tell the two
+# apart, and their fewest-pieces fits start differently: one stream gets more.
+for criterion in ["vertex", "band"]:
+    got = {}
+    for n in [64, 65]:
+        pts = [(float(k), 1.0 if k % 5 >= 3 else 0.0) for k in range(n)]
+        args = ["--criterion", criterion, "--tol", "0.42", "-"]
+        whole = run(["fit"] + args, curve_text(pts))
+        streamed = run(["fit", "--stream", "--window", "63"] + args, curve_text(pts))
+        longest = max(b[0] - a[0] for _, a, b, _ in pieces(whole))
+        if 10 * longest >= 63:
+            sys.exit(f"square wave {n} {criterion}: a whole-input piece of {longest} steps")
+        check_pieces(f"square wave {n} {criterion} window 63", pts, pieces(streamed), 0.42)
+        got[n] = (narc(whole), narc(streamed), pieces(streamed)[0])
+    if got[64][2] != got[65][2]:
+        sys.exit(f"square wave {criterion}: the first streamed pieces differ: {got}")
+    if got[64][1] == got[64][0] and got[65][1] == got[65][0]:
+        sys.exit(f"square wave {criterion}: both streams have the whole-input count: {got}")
+    print(f"ok: square wave {criterion}, window 63: 64 points {got[64][1]} pieces (whole "
+          f"{got[64][0]}), 65 points {got[65][1]} (whole {got[65][0]})")
 
 # Pieces before the end of the input.
 pts = random_curve(9, 2000)

@@ -80,7 +80,7 @@
 //      over 10 L. (Any other W: take the next W' = 3 mod 10 above it.) kerf
 //      loses one piece on one of the two (vertex: B; band: A), one forced
 //      commit each, within (3); its reach there is 9, so a window past the
-//      reach is no remedy either (`kerf fit --stream --window 63` agrees).
+//      reach is no remedy either (the CLI too: tests/cli/stream_check.py).
 //        Measured on smoother paths, L the longest piece of the whole-input
 //      fit: a window of 3 L + 8 points gave the whole input's pieces, bit for
 //      bit, on every path tested (test curves, corpus polylines, 24 random
