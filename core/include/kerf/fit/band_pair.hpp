@@ -194,11 +194,17 @@ class BandPair {
     return q;
   }
 
-  S area(Vec2<S> q) const { return ((q - a_) * f_).dot((q - b_) * f_); }
+  // v in the pair's frame: times f_, which is 1 in floating point (the
+  // multiplications by it were a sixth of the segment test).
+  Vec2<S> framed(Vec2<S> v) const {
+    if constexpr (band_detail::kFloating<S>) return v;
+    else return v * f_;
+  }
+  S area(Vec2<S> q) const { return framed(q - a_).dot(framed(q - b_)); }
   // Measured from a, not from the midpoint: (b - a).perp(b - a) is exactly
   // 0 in floating point, so a point on a or b gets exactly w = 0 (no
   // condition) instead of a rounding residue that would cut the range.
-  S offset(Vec2<S> q) const { return ((q - a_) * f_).dot(n_); }
+  S offset(Vec2<S> q) const { return framed(q - a_).dot(n_); }
   void outside(PsiRange<S>& r, Vec2<S> q) const { cut(r, {-offset(q), area(q)}); }
   void inside(PsiRange<S>& r, Vec2<S> q) const { cut(r, {offset(q), -area(q)}); }
 
@@ -224,11 +230,11 @@ class BandPair {
     q2 = snapped(q2, near);
     if (q1 == q2) return;
     const Vec2<S> dq = q2 - q1;
-    const Vec2<S> fq = dq * f_;  // in the pair's frame
+    const Vec2<S> fq = framed(dq);
     // area and offset of q1, (q1 - mid).dq, |dq|^2, dq.n and 2 (q2 - mid).dq:
     // all of degree 2 in lengths, so balanced together (band_numeric.hpp).
-    S v[6] = {area(q1), offset(q1), fq.dot(((q1 - a_) + (q1 - b_)) * f_) / S(2), fq.norm2(),
-              fq.dot(n_), fq.dot(((q2 - a_) + (q2 - b_)) * f_)};
+    S v[6] = {area(q1), offset(q1), fq.dot(framed((q1 - a_) + (q1 - b_))) / S(2), fq.norm2(),
+              fq.dot(n_), fq.dot(framed((q2 - a_) + (q2 - b_)))};
     band_detail::balance(v, 6);
     const S a1 = v[0], y1 = v[1], vd = v[2], dd = v[3], dn = v[4], vd2 = v[5];
     if (clear(lo, a1, y1, vd, dd, dn) && clear(hi, a1, y1, vd, dd, dn)) return;
