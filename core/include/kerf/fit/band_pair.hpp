@@ -163,16 +163,7 @@ class BandPair {
     // the end itself: every point is taken snapped.
     // Every point, the one shared with the previous cell too: cells are not
     // visited in order, and the segment test below needs both ends applied.
-    // Each point's area and offset are kept for the segments (the same
-    // values they would compute again).
-    Known known[kBandChainMax];
-    for (int t = 0; t < c.size; ++t) {
-      Known& k = known[t];
-      k.q = snapped(c.pt[t]);
-      k.area = area(k.q);
-      k.offset = offset(k.q);
-      cut(range, {-k.offset, k.area});  // outside(range, k.q)
-    }
+    for (int t = 0; t < c.size; ++t) outside(range, snapped(c.pt[t]));
     if (range.empty()) return false;
     // Clear at both ends of the range means clear inside it (a segment's
     // valid set is an interval); the ends are taken once, before the
@@ -180,7 +171,7 @@ class BandPair {
     const Vec2<S> lo = direction_of(range.lo);
     const Vec2<S> hi = direction_of(range.hi);
     for (int t = 0; t + 1 < c.size && !range.empty(); ++t)
-      segment(range, lo, hi, known[t], known[t + 1]);
+      segment(range, lo, hi, snapped(c.pt[t]), snapped(c.pt[t + 1]));
     return true;
   }
 
@@ -195,30 +186,12 @@ class BandPair {
     }
   }
 
-  // A chain point as the tests take it (snapped), with its area and offset.
-  struct Known {
-    Vec2<S> q;
-    S area;
-    S offset;
-  };
-
   // q, or a or b when q lies within `reach` of it (at least rounding's).
   Vec2<S> snapped(Vec2<S> q, S reach = S(0)) const {
     const S d = max_of(reach, reach_);
     if (band_detail::within(q, a_, d)) return a_;
     if (band_detail::within(q, b_, d)) return b_;
     return q;
-  }
-
-  // k snapped within `reach`; its area and offset computed again only if
-  // that moved it.
-  Known snapped(const Known& k, S reach) const {
-    const S d = max_of(reach, reach_);
-    Vec2<S> q = k.q;
-    if (band_detail::within(q, a_, d)) q = a_;
-    else if (band_detail::within(q, b_, d)) q = b_;
-    else return k;
-    return Known{q, area(q), offset(q)};
   }
 
   // v in the pair's frame: times f_, which is 1 in floating point (the
@@ -246,31 +219,25 @@ class BandPair {
     return S(4) * c2 * p1 >= c1 * c1;
   }
 
-  void segment(PsiRange<S>& r, Vec2<S> lo, Vec2<S> hi, const Known& k1, const Known& k2) const {
+  void segment(PsiRange<S>& r, Vec2<S> lo, Vec2<S> hi, Vec2<S> q1, Vec2<S> q2) const {
     // An end a hair from a or b (a gate end of a sharp turn, whose gate
     // runs almost along the edges: a sub-resolution width gives a half gate
     // of many ulps) is a or b itself: the binding point would lie within
     // rounding of t = 1 and be lost (band_numeric.hpp, segment_end_reach).
     // Both ends' own conditions were applied in cell().
-    const S near = band_detail::segment_end_reach(k2.q - k1.q);
-    const Known e1 = snapped(k1, near);
-    const Known e2 = snapped(k2, near);
-    const Vec2<S> q1 = e1.q;
-    const Vec2<S> q2 = e2.q;
+    const S near = band_detail::segment_end_reach(q2 - q1);
+    q1 = snapped(q1, near);
+    q2 = snapped(q2, near);
     if (q1 == q2) return;
     const Vec2<S> dq = q2 - q1;
     const Vec2<S> fq = framed(dq);
     // area and offset of q1, (q1 - mid).dq, |dq|^2, dq.n and 2 (q2 - mid).dq:
     // all of degree 2 in lengths, so balanced together (band_numeric.hpp).
-    // Floating point needs no balance, and the last only past the early out.
-    auto end_dot = [&] { return fq.dot(framed((q2 - a_) + (q2 - b_))); };
-    S v[6] = {e1.area, e1.offset, fq.dot(framed((q1 - a_) + (q1 - b_))) / S(2), fq.norm2(),
-              fq.dot(n_), S(0)};
-    if constexpr (!band_detail::kFloating<S>) v[5] = end_dot();
+    S v[6] = {area(q1), offset(q1), fq.dot(framed((q1 - a_) + (q1 - b_))) / S(2), fq.norm2(),
+              fq.dot(n_), fq.dot(framed((q2 - a_) + (q2 - b_)))};
     band_detail::balance(v, 6);
-    const S a1 = v[0], y1 = v[1], vd = v[2], dd = v[3], dn = v[4];
+    const S a1 = v[0], y1 = v[1], vd = v[2], dd = v[3], dn = v[4], vd2 = v[5];
     if (clear(lo, a1, y1, vd, dd, dn) && clear(hi, a1, y1, vd, dd, dn)) return;
-    const S vd2 = band_detail::kFloating<S> ? end_dot() : v[5];
     // The circle through a, b and q(t) is extreme where A Y' = Y A':
     //   dd dn t^2 + 2 y1 dd t + (2 y1 vd - a1 dn) = 0.
     // An end on a or b (w = 0 there) is always a root; it is divided out,
@@ -278,8 +245,8 @@ class BandPair {
     S qs[3] = {dd * dn, S(2) * y1 * dd, S(2) * y1 * vd - a1 * dn};
     band_detail::balance(qs, 3);
     const S qa = qs[0], qb = qs[1], qc = qs[2];
-    const S a2 = e2.area;
-    const S y2 = e2.offset;
+    const S a2 = area(q2);
+    const S y2 = offset(q2);
     const bool from_end = a1 == S(0) && y1 == S(0);
     const bool to_end = a2 == S(0) && y2 == S(0);
     S roots[3];
