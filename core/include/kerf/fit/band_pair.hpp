@@ -233,11 +233,15 @@ class BandPair {
     const Vec2<S> fq = framed(dq);
     // area and offset of q1, (q1 - mid).dq, |dq|^2, dq.n and 2 (q2 - mid).dq:
     // all of degree 2 in lengths, so balanced together (band_numeric.hpp).
+    // Floating point needs no balance, and the last only past the early out.
+    auto end_dot = [&] { return fq.dot(framed((q2 - a_) + (q2 - b_))); };
     S v[6] = {area(q1), offset(q1), fq.dot(framed((q1 - a_) + (q1 - b_))) / S(2), fq.norm2(),
-              fq.dot(n_), fq.dot(framed((q2 - a_) + (q2 - b_)))};
+              fq.dot(n_), S(0)};
+    if constexpr (!band_detail::kFloating<S>) v[5] = end_dot();
     band_detail::balance(v, 6);
-    const S a1 = v[0], y1 = v[1], vd = v[2], dd = v[3], dn = v[4], vd2 = v[5];
+    const S a1 = v[0], y1 = v[1], vd = v[2], dd = v[3], dn = v[4];
     if (clear(lo, a1, y1, vd, dd, dn) && clear(hi, a1, y1, vd, dd, dn)) return;
+    const S vd2 = band_detail::kFloating<S> ? end_dot() : v[5];
     // The circle through a, b and q(t) is extreme where A Y' = Y A':
     //   dd dn t^2 + 2 y1 dd t + (2 y1 vd - a1 dn) = 0.
     // An end on a or b (w = 0 there) is always a root; it is divided out,
