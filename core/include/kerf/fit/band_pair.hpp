@@ -85,12 +85,14 @@ class BandPair {
     }
     // The cached chain is read in place (a BandChain is 40 points, zeroed
     // on construction: a copy per cell test cost more than the test).
-    if (const BandChain<S>* cached = r_.cached_chain(k, -orient_)) {
-      if (!chain_conditions(*cached, range)) return false;
+    if (const BandChainSlot<S>* cached = r_.cached_slot(k, -orient_)) {
+      const bool ok = apart(*cached) ? chain_conditions<false>(cached->chain, range)
+                                     : chain_conditions<true>(cached->chain, range);
+      if (!ok) return false;
     } else {
       BandChain<S> c;
       r_.chain(k, -orient_, c);
-      if (!chain_conditions(c, range)) return false;
+      if (!chain_conditions<true>(c, range)) return false;
     }
     if (k + 1 < j_) {
       // The arc lies on its bulge side of the chord (offset <= 0), so a gate
@@ -151,9 +153,34 @@ class BandPair {
  private:
   static S pseudo(Vec2<S> d) { return S(1) - d.x / (Scalar<S>::abs(d.x) + d.y); }
 
+  // Does no point of the slot's chain snap to a or b, with any reach the
+  // test uses (rounding's, or a segment's end reach)? Snapping a point
+  // costs more than its condition, and it is needed only at the ends.
+  // Exact: rounding is monotone, so no point's computed distance to a or b
+  // along an axis is below its box's, nor any segment's extent above the
+  // box's. Floating point only.
+  bool apart(const BandChainSlot<S>& slot) const {
+    if constexpr (!band_detail::kFloating<S>) {
+      (void)slot;
+      return false;
+    } else {
+      if (slot.chain.size == 0) return false;
+      const Vec2<S> lo = slot.box_lo;
+      const Vec2<S> hi = slot.box_hi;
+      const S extent = max_of(hi.x - lo.x, hi.y - lo.y);
+      const S d = max_of(reach_, band_detail::segment_end_reach(Vec2<S>{extent, S(0)}));
+      auto outside_box = [&](Vec2<S> p) {
+        return lo.x - p.x > d || p.x - hi.x > d || lo.y - p.y > d || p.y - hi.y > d;
+      };
+      return outside_box(a_) && outside_box(b_);
+    }
+  }
+
   // Cell conditions of the bulge-side chain c: false when they empty the
-  // range.
+  // range. kSnap false: no point snaps (apart()), so none is tried.
+  template <bool kSnap>
   bool chain_conditions(const BandChain<S>& c, PsiRange<S>& range) const {
+    auto snap = [&](Vec2<S> q) { return kSnap ? snapped(q) : q; };
     // A width below the coordinates' resolution puts the chain's first or
     // last point a rounding step beside a or b instead of on it. The
     // segment test then finds its binding point within a step of the end
@@ -163,7 +190,7 @@ class BandPair {
     // the end itself: every point is taken snapped.
     // Every point, the one shared with the previous cell too: cells are not
     // visited in order, and the segment test below needs both ends applied.
-    for (int t = 0; t < c.size; ++t) outside(range, snapped(c.pt[t]));
+    for (int t = 0; t < c.size; ++t) outside(range, snap(c.pt[t]));
     if (range.empty()) return false;
     // Clear at both ends of the range means clear inside it (a segment's
     // valid set is an interval); the ends are taken once, before the
@@ -171,7 +198,7 @@ class BandPair {
     const Vec2<S> lo = direction_of(range.lo);
     const Vec2<S> hi = direction_of(range.hi);
     for (int t = 0; t + 1 < c.size && !range.empty(); ++t)
-      segment(range, lo, hi, snapped(c.pt[t]), snapped(c.pt[t + 1]));
+      segment<kSnap>(range, lo, hi, snap(c.pt[t]), snap(c.pt[t + 1]));
     return true;
   }
 
@@ -219,15 +246,18 @@ class BandPair {
     return S(4) * c2 * p1 >= c1 * c1;
   }
 
+  template <bool kSnap>
   void segment(PsiRange<S>& r, Vec2<S> lo, Vec2<S> hi, Vec2<S> q1, Vec2<S> q2) const {
     // An end a hair from a or b (a gate end of a sharp turn, whose gate
     // runs almost along the edges: a sub-resolution width gives a half gate
     // of many ulps) is a or b itself: the binding point would lie within
     // rounding of t = 1 and be lost (band_numeric.hpp, segment_end_reach).
     // Both ends' own conditions were applied in cell().
-    const S near = band_detail::segment_end_reach(q2 - q1);
-    q1 = snapped(q1, near);
-    q2 = snapped(q2, near);
+    if constexpr (kSnap) {
+      const S near = band_detail::segment_end_reach(q2 - q1);
+      q1 = snapped(q1, near);
+      q2 = snapped(q2, near);
+    }
     if (q1 == q2) return;
     const Vec2<S> dq = q2 - q1;
     const Vec2<S> fq = framed(dq);
