@@ -145,6 +145,7 @@ class BandRegion {
   static std::uint8_t split_depth(Vec2<S> e1, Vec2<S> e2, S w, S width);
   bool cell_convex(std::uint32_t k, int& bad_side) const;
   void build_chain(std::uint32_t k, int side, BandChain<S>& out) const;
+  void fill_slot(std::uint32_t k, int side, std::size_t key, BandChainSlot<S>& slot) const;
 
   const Vec2<S>* p_ = nullptr;
   std::uint32_t n_ = 0;
