@@ -90,10 +90,11 @@ bool fit_job(const std::vector<Vec2<double>>& pts, const std::vector<double>& to
     std::vector<fit::BandWidth<double>> widths(n, {tol, tol});
     for (std::size_t k = 0; k < tols.size() && k < n; ++k) widths[k] = {tols[k], tols[k]};
     const Span<const fit::BandWidth<double>> w(widths.data(), n);
-    io::BandStorage storage(n);
+    // Kept across calls: a weld fits one polyline after another.
+    thread_local io::BandStorage storage(0);
     r = fixed           ? fit_band_fixed(points, w, 0, dst)
-        : tie_break > 0 ? fit::fit_band_min_count(points, w, storage.workspace(), dst, tie_break)
-                        : fit::fit_band_min_count(points, w, storage.workspace(), dst);
+        : tie_break > 0 ? fit::fit_band_min_count(points, w, storage.workspace_for(n), dst, tie_break)
+                        : fit::fit_band_min_count(points, w, storage.workspace_for(n), dst);
   } else if (fixed) {
     r = fit_vertex_fixed(points, tol, 0, fit::Method::optimal, dst);
   } else {

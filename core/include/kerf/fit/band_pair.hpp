@@ -85,12 +85,14 @@ class BandPair {
     }
     // The cached chain is read in place (a BandChain is 40 points, zeroed
     // on construction: a copy per cell test cost more than the test).
-    if (const BandChain<S>* cached = r_.cached_chain(k, -orient_)) {
-      if (!chain_conditions(*cached, range)) return false;
+    if (const BandChainSlot<S>* cached = r_.cached_slot(k, -orient_)) {
+      const bool ok = apart(*cached) ? chain_conditions<false>(cached->chain, range)
+                                     : chain_conditions<true>(cached->chain, range);
+      if (!ok) return false;
     } else {
       BandChain<S> c;
       r_.chain(k, -orient_, c);
-      if (!chain_conditions(c, range)) return false;
+      if (!chain_conditions<true>(c, range)) return false;
     }
     if (k + 1 < j_) {
       // The arc lies on its bulge side of the chord (offset <= 0), so a gate
@@ -119,17 +121,23 @@ class BandPair {
       return false;
     }
     const std::uint32_t len = j_ - i_;
-    std::uint32_t bits = 0;
-    while ((1u << bits) < len) ++bits;
-    for (std::uint32_t t = 0; t < (1u << bits); ++t) {
-      std::uint32_t rev = 0;
-      for (std::uint32_t b = 0; b < bits; ++b) rev |= ((t >> b) & 1u) << (bits - 1 - b);
-      if (rev >= len) continue;
-      const std::uint32_t k = i_ + rev;
-      if (!cell(k, range)) {
-        fail = k;
+    std::uint32_t top = 1;  // 2^bits, the first power of two >= len
+    while (top < len) top *= 2;
+    // rev runs through 0..top-1 bit-reversed: adding one at the top bit,
+    // carrying downwards (amortized O(1); a reversal per step was a
+    // tenth of the search).
+    std::uint32_t rev = 0;
+    for (std::uint32_t t = 0; t < top; ++t) {
+      if (rev < len && !cell(i_ + rev, range)) {
+        fail = i_ + rev;
         return false;
       }
+      std::uint32_t bit = top / 2;
+      while (bit != 0 && (rev & bit) != 0) {
+        rev ^= bit;
+        bit /= 2;
+      }
+      rev |= bit;
     }
     return true;
   }
@@ -145,9 +153,34 @@ class BandPair {
  private:
   static S pseudo(Vec2<S> d) { return S(1) - d.x / (Scalar<S>::abs(d.x) + d.y); }
 
+  // Does no point of the slot's chain snap to a or b, with any reach the
+  // test uses (rounding's, or a segment's end reach)? Snapping a point
+  // costs more than its condition, and it is needed only at the ends.
+  // Exact: rounding is monotone, so no point's computed distance to a or b
+  // along an axis is below its box's, nor any segment's extent above the
+  // box's. Floating point only.
+  bool apart(const BandChainSlot<S>& slot) const {
+    if constexpr (!band_detail::kFloating<S>) {
+      (void)slot;
+      return false;
+    } else {
+      if (slot.chain.size == 0) return false;
+      const Vec2<S> lo = slot.box_lo;
+      const Vec2<S> hi = slot.box_hi;
+      const S extent = max_of(hi.x - lo.x, hi.y - lo.y);
+      const S d = max_of(reach_, band_detail::segment_end_reach(Vec2<S>{extent, S(0)}));
+      auto outside_box = [&](Vec2<S> p) {
+        return lo.x - p.x > d || p.x - hi.x > d || lo.y - p.y > d || p.y - hi.y > d;
+      };
+      return outside_box(a_) && outside_box(b_);
+    }
+  }
+
   // Cell conditions of the bulge-side chain c: false when they empty the
-  // range.
+  // range. kSnap false: no point snaps (apart()), so none is tried.
+  template <bool kSnap>
   bool chain_conditions(const BandChain<S>& c, PsiRange<S>& range) const {
+    auto snap = [&](Vec2<S> q) { return kSnap ? snapped(q) : q; };
     // A width below the coordinates' resolution puts the chain's first or
     // last point a rounding step beside a or b instead of on it. The
     // segment test then finds its binding point within a step of the end
@@ -157,7 +190,7 @@ class BandPair {
     // the end itself: every point is taken snapped.
     // Every point, the one shared with the previous cell too: cells are not
     // visited in order, and the segment test below needs both ends applied.
-    for (int t = 0; t < c.size; ++t) outside(range, snapped(c.pt[t]));
+    for (int t = 0; t < c.size; ++t) outside(range, snap(c.pt[t]));
     if (range.empty()) return false;
     // Clear at both ends of the range means clear inside it (a segment's
     // valid set is an interval); the ends are taken once, before the
@@ -165,7 +198,7 @@ class BandPair {
     const Vec2<S> lo = direction_of(range.lo);
     const Vec2<S> hi = direction_of(range.hi);
     for (int t = 0; t + 1 < c.size && !range.empty(); ++t)
-      segment(range, lo, hi, snapped(c.pt[t]), snapped(c.pt[t + 1]));
+      segment<kSnap>(range, lo, hi, snap(c.pt[t]), snap(c.pt[t + 1]));
     return true;
   }
 
@@ -188,11 +221,17 @@ class BandPair {
     return q;
   }
 
-  S area(Vec2<S> q) const { return ((q - a_) * f_).dot((q - b_) * f_); }
+  // v in the pair's frame: times f_, which is 1 in floating point (the
+  // multiplications by it were a sixth of the segment test).
+  Vec2<S> framed(Vec2<S> v) const {
+    if constexpr (band_detail::kFloating<S>) return v;
+    else return v * f_;
+  }
+  S area(Vec2<S> q) const { return framed(q - a_).dot(framed(q - b_)); }
   // Measured from a, not from the midpoint: (b - a).perp(b - a) is exactly
   // 0 in floating point, so a point on a or b gets exactly w = 0 (no
   // condition) instead of a rounding residue that would cut the range.
-  S offset(Vec2<S> q) const { return ((q - a_) * f_).dot(n_); }
+  S offset(Vec2<S> q) const { return framed(q - a_).dot(n_); }
   void outside(PsiRange<S>& r, Vec2<S> q) const { cut(r, {-offset(q), area(q)}); }
   void inside(PsiRange<S>& r, Vec2<S> q) const { cut(r, {offset(q), -area(q)}); }
 
@@ -207,25 +246,32 @@ class BandPair {
     return S(4) * c2 * p1 >= c1 * c1;
   }
 
+  template <bool kSnap>
   void segment(PsiRange<S>& r, Vec2<S> lo, Vec2<S> hi, Vec2<S> q1, Vec2<S> q2) const {
     // An end a hair from a or b (a gate end of a sharp turn, whose gate
     // runs almost along the edges: a sub-resolution width gives a half gate
     // of many ulps) is a or b itself: the binding point would lie within
     // rounding of t = 1 and be lost (band_numeric.hpp, segment_end_reach).
     // Both ends' own conditions were applied in cell().
-    const S near = band_detail::segment_end_reach(q2 - q1);
-    q1 = snapped(q1, near);
-    q2 = snapped(q2, near);
+    if constexpr (kSnap) {
+      const S near = band_detail::segment_end_reach(q2 - q1);
+      q1 = snapped(q1, near);
+      q2 = snapped(q2, near);
+    }
     if (q1 == q2) return;
     const Vec2<S> dq = q2 - q1;
-    const Vec2<S> fq = dq * f_;  // in the pair's frame
+    const Vec2<S> fq = framed(dq);
     // area and offset of q1, (q1 - mid).dq, |dq|^2, dq.n and 2 (q2 - mid).dq:
     // all of degree 2 in lengths, so balanced together (band_numeric.hpp).
-    S v[6] = {area(q1), offset(q1), fq.dot(((q1 - a_) + (q1 - b_)) * f_) / S(2), fq.norm2(),
-              fq.dot(n_), fq.dot(((q2 - a_) + (q2 - b_)) * f_)};
+    // Floating point needs no balance, and the last only past the early out.
+    auto end_dot = [&] { return fq.dot(framed((q2 - a_) + (q2 - b_))); };
+    S v[6] = {area(q1), offset(q1), fq.dot(framed((q1 - a_) + (q1 - b_))) / S(2), fq.norm2(),
+              fq.dot(n_), S(0)};
+    if constexpr (!band_detail::kFloating<S>) v[5] = end_dot();
     band_detail::balance(v, 6);
-    const S a1 = v[0], y1 = v[1], vd = v[2], dd = v[3], dn = v[4], vd2 = v[5];
+    const S a1 = v[0], y1 = v[1], vd = v[2], dd = v[3], dn = v[4];
     if (clear(lo, a1, y1, vd, dd, dn) && clear(hi, a1, y1, vd, dd, dn)) return;
+    const S vd2 = band_detail::kFloating<S> ? end_dot() : v[5];
     // The circle through a, b and q(t) is extreme where A Y' = Y A':
     //   dd dn t^2 + 2 y1 dd t + (2 y1 vd - a1 dn) = 0.
     // An end on a or b (w = 0 there) is always a root; it is divided out,

@@ -83,6 +83,8 @@ template <class S>
 struct BandChainSlot {
   std::size_t key = 0;  // 2 k + (side > 0) + 1 for cell k; 0: empty
   BandChain<S> chain{};
+  Vec2<S> box_lo{};  // the chain's bounding box (the pair test's snapping
+  Vec2<S> box_hi{};  // skips a chain whose box is far from both ends)
 };
 
 template <class S>
@@ -116,6 +118,8 @@ class BandRegion {
   // The same chain in the cache (built there if missing), or nullptr
   // without one. Valid until the next chain call.
   const BandChain<S>* cached_chain(std::uint32_t k, int side) const;
+  // Its cache slot, with the chain's bounding box; nullptr without a cache.
+  const BandChainSlot<S>* cached_slot(std::uint32_t k, int side) const;
 
   // Keeps the chains built since in `slots` (a power of two of them, by
   // cell; fewer than two: no cache): the pair test asks for the same cells
@@ -141,6 +145,7 @@ class BandRegion {
   static std::uint8_t split_depth(Vec2<S> e1, Vec2<S> e2, S w, S width);
   bool cell_convex(std::uint32_t k, int& bad_side) const;
   void build_chain(std::uint32_t k, int side, BandChain<S>& out) const;
+  void fill_slot(std::uint32_t k, int side, std::size_t key, BandChainSlot<S>& slot) const;
 
   const Vec2<S>* p_ = nullptr;
   std::uint32_t n_ = 0;

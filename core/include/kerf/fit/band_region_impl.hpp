@@ -133,15 +133,35 @@ void BandRegion<S>::corner(std::uint32_t k, std::uint32_t edge, Vec2<S> from, Ve
 }
 
 template <class S>
-const BandChain<S>* BandRegion<S>::cached_chain(std::uint32_t k, int side) const {
+const BandChainSlot<S>* BandRegion<S>::cached_slot(std::uint32_t k, int side) const {
   if (cache_ == nullptr) return nullptr;
   const std::size_t key = 2 * static_cast<std::size_t>(k) + (side > 0 ? 2 : 1);
   BandChainSlot<S>& slot = cache_[key & cache_mask_];
-  if (slot.key != key) {
-    build_chain(k, side, slot.chain);
-    slot.key = key;
+  if (slot.key != key) fill_slot(k, side, key, slot);
+  return &slot;
+}
+
+// Kept out of line: the lookup above is the pair test's hot path.
+template <class S>
+__attribute__((noinline)) void BandRegion<S>::fill_slot(std::uint32_t k, int side, std::size_t key,
+                                                        BandChainSlot<S>& slot) const {
+  build_chain(k, side, slot.chain);
+  slot.key = key;
+  const BandChain<S>& c = slot.chain;
+  Vec2<S> lo = c.size > 0 ? c.pt[0] : Vec2<S>{};
+  Vec2<S> hi = lo;
+  for (int t = 1; t < c.size; ++t) {
+    lo = {min_of(lo.x, c.pt[t].x), min_of(lo.y, c.pt[t].y)};
+    hi = {max_of(hi.x, c.pt[t].x), max_of(hi.y, c.pt[t].y)};
   }
-  return &slot.chain;
+  slot.box_lo = lo;
+  slot.box_hi = hi;
+}
+
+template <class S>
+const BandChain<S>* BandRegion<S>::cached_chain(std::uint32_t k, int side) const {
+  const BandChainSlot<S>* slot = cached_slot(k, side);
+  return slot != nullptr ? &slot->chain : nullptr;
 }
 
 template <class S>

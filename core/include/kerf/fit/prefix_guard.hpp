@@ -45,17 +45,21 @@ bool circle_through_near_three(Vec2<S> origin, const Vec2<S> pts[3], S eps) {
   Vec2<S> w[3];
   S lim[3];
   S slack[3];
+  S w_len[3];
+  // Each length once (the square roots were most of the guard's time).
+  const S z_len[3] = {z[0].norm(), z[1].norm(), z[2].norm()};
   const int pairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
   int active = 0;
   for (const auto& pr : pairs) {
     w[active] = z[pr[0]] - z[pr[1]];
     lim[active] = e[pr[0]] + e[pr[1]];
-    slack[active] = S(256) * M::epsilon() * (z[pr[0]].norm() + z[pr[1]].norm() + lim[active]);
-    if (w[active].norm() > lim[active] + slack[active]) ++active;
+    slack[active] = S(256) * M::epsilon() * (z_len[pr[0]] + z_len[pr[1]] + lim[active]);
+    w_len[active] = w[active].norm();
+    if (w_len[active] > lim[active] + slack[active]) ++active;
   }
   if (active < 2) return true;  // one arc alone is never empty
   for (int c = 0; c < active; ++c) {
-    const S len = w[c].norm();
+    const S len = w_len[c];
     const Vec2<S> u = w[c].perp() * (S(1) / len);  // |beta . w| = 0 along u
     const S k = lim[c] / len;
     const S co = M::sqrt(S(1) - k * k);
