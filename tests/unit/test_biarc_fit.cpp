@@ -184,6 +184,21 @@ TEST(BiarcJointCircle, AJointAtAnEndPointIsG1OnlyForOneMatchingArc) {
   EXPECT_TRUE(generic.biarc(0.5, b));
 }
 
+TEST(BiarcJointCircle, BothTangentsAlongTheChordBackwardsGiveNoBiarc) {
+  // p2 straight behind p1, both tangents pointing ahead along the line
+  // through them: J is that line, and every joint leaves one part a line
+  // run backwards (a circle through infinity), which no cut can follow.
+  kerf::fit::Biarc<double> b;
+  const kerf::fit::JointCircle<double> back({0, 68}, {0, 1}, {0, -608}, {0, 1});
+  for (double s = 0.0; s <= 2.0; s += 0.0625) EXPECT_FALSE(back.biarc(s, b)) << s;
+  // p2 ahead instead: a joint between them gives the straight line itself.
+  const kerf::fit::JointCircle<double> ahead({0, 68}, {0, 1}, {0, 608}, {0, 1});
+  for (double s = 0.0625; s < 1.0; s += 0.0625) {
+    ASSERT_TRUE(ahead.biarc(s, b)) << s;
+    EXPECT_FALSE(b.first.backward_line() || b.second.backward_line()) << s;
+  }
+}
+
 // --- fits ---------------------------------------------------------------------
 
 TEST(BiarcFit, SampledCircleArcIsOneBiarc) {
@@ -327,6 +342,26 @@ TEST(BiarcTwin, KerfNeverNeedsMoreThanTheTwin) {
     }
   }
   EXPECT_GE(compared, 40);
+}
+
+// A path that runs up, jumps back below its start and runs up over itself
+// again (the fuzzer's fit_biarc finding): p3 and p8 lie on x = 0 with both
+// estimated tangents straight up, p8 behind p3. The fitter used to accept
+// 3 -> 8 with a joint above p3, its second part a line run downwards with
+// the tangent up: the CLI saw a corner at the joint and an end tangent
+// against t_8. No G1 chain exists here (it would need two U-turns of
+// radius <= 16 in one biarc), so the answer is a refusal.
+TEST(BiarcFit, APathOverItselfGetsNoBackwardLine) {
+  const std::vector<VPoint> p{{0, -204}, {0, -136}, {0, -68}, {0, 0},      {0, 16},    {4, 84},
+                              {-4, -864}, {0, -784}, {0, -716}, {0, -648}, {0, -580}, {12, -460}};
+  CoreBiarcFitter core(p, {}, 16);
+  const auto fit = core.fit();
+  if (fit.ok()) {
+    const auto rep = kerf_test::check_biarc_fit(p, core.tangents(), kerf_test::symmetric_widths(p.size(), 16),
+                                                core.biarcs(fit.value().pieces), slack_for(p));
+    EXPECT_TRUE(rep.ok) << rep.why;
+  }
+  EXPECT_EQ(fit.status(), kerf::Status::infeasible);
 }
 
 }  // namespace

@@ -204,4 +204,24 @@ TYPED_TEST(TypedBiarc, EstimatedTangentsAgreeWithDouble) {
   }
 }
 
+// The fuzzer's path over itself (tests/unit/test_biarc_fit.cpp,
+// APathOverItselfGetsNoBackwardLine) in both types: no biarc with a part
+// run backwards along a line (both types accepted 3 -> 8 so, Fixed also
+// 0 -> 3 with its joint beyond p3); no G1 chain exists, so a refusal.
+TYPED_TEST(TypedBiarc, APathOverItselfGetsNoBackwardLine) {
+  using S = TypeParam;
+  const std::vector<VD> pd{{0, -204}, {0, -136}, {0, -68}, {0, 0},      {0, 16},    {4, 84},
+                           {-4, -864}, {0, -784}, {0, -716}, {0, -648}, {0, -580}, {12, -460}};
+  const BiarcRun<S> got = fit_biarc<S>(pd, 16);
+  if (got.fit.ok()) {
+    std::vector<kerf_test::VPoint> vp;
+    for (const VD& p : pd) vp.push_back({p.x, p.y});
+    const double slack = allowance<S>(pd);
+    const auto rep = kerf_test::check_biarc_fit(vp, got.tangents, kerf_test::symmetric_widths(pd.size(), 16),
+                                                got.biarcs, slack, max_turn<S>(slack, got.shortest_chord));
+    EXPECT_TRUE(rep.ok) << rep.why;
+  }
+  EXPECT_EQ(got.fit.status(), kerf::Status::infeasible);
+}
+
 }  // namespace
