@@ -96,6 +96,21 @@ class BiarcCheck {
         }
       }
     }
+    // Every gate between g_i and g_j crossed at least once. Where R is
+    // simple each of them separates g_i from g_j, so this refuses nothing;
+    // where R runs back over itself (a path that jumps back over its own
+    // band) a biarc could otherwise skip the part between and leave its
+    // points uncut.
+    for (std::uint32_t k = i_ + 1; k < j_ && left > 0; ++k) {
+      const Vec2<S> q1 = gate_end(k, -1);
+      const Vec2<S> q2 = gate_end(k, 1);
+      for (std::uint32_t q = 0; q < m; ++q) {
+        if (alive[q] && !meets(b[q], q1, q2)) {
+          alive[q] = false;
+          --left;
+        }
+      }
+    }
     return left;
   }
 
