@@ -364,4 +364,29 @@ TEST(BiarcFit, APathOverItselfGetsNoBackwardLine) {
   EXPECT_EQ(fit.status(), kerf::Status::infeasible);
 }
 
+// A path that runs up, jumps back to its first point and runs up again:
+// the band of the jump covers the first run, so R (cells 0..10) runs back
+// over itself. The biarc 0 -> 10 used to go straight up inside it, never
+// reaching points 2..8 (392 away): R held it, but the CLI's own check saw
+// a point farther than tol. Every gate between p_i and p_j must be crossed;
+// no G1 chain then exists (two U-turns of radius <= 16 in one biarc).
+TEST(BiarcFit, ABiarcMayNotSkipWhereThePathRunsOverItself) {
+  const std::vector<VPoint> p{{0, 0},    {4, 24},  {8, 140},  {16, 188},  {20, 192}, {28, 276},
+                              {24, 300}, {16, 356}, {12, 464}, {0, 0},     {-8, 72},  {-8, 168},
+                              {-16, 224}, {-16, 272}, {24, 328}, {32, 420}, {28, 544}};
+  CoreBiarcFitter core(p, {}, 16);
+  const auto fit = core.fit();
+  for (std::uint32_t k = 0; fit.ok() && k < fit.value().pieces; ++k) {
+    const kerf::fit::BiarcPiece<double>& b = core.piece(k);
+    for (std::uint32_t q = b.first; q <= b.last; ++q) {
+      const kerf::Vec2<double> x{p[q].x, p[q].y};
+      EXPECT_LE(std::fmin(kerf::distance_to_segment(b.arc[0], x), kerf::distance_to_segment(b.arc[1], x)),
+                16 + slack_for(p))
+          << "point " << q << " of biarc " << k;
+    }
+  }
+  EXPECT_EQ(fit.status(), kerf::Status::infeasible);
+}
+
 }  // namespace
+

@@ -62,6 +62,7 @@ struct BiarcRun {
   std::vector<kerf_test::VBiarc> biarcs;      // in double, for the referee
   std::vector<kerf_test::VPoint> tangents;    // the ones the fit used, in double
   double shortest_chord = 1e300;              // of the arcs, in double
+  std::vector<kerf::Segment<double>> arcs;    // both parts of each biarc, in double
 };
 
 kerf_test::VPiece to_vpiece(const kerf::Segment<double>& s, std::uint32_t first, std::uint32_t last) {
@@ -101,6 +102,7 @@ BiarcRun<S> fit_biarc(const std::vector<VD>& pd, double tol) {
     v.a1 = to_vpiece(a1, b.first, b.last);
     v.a2 = to_vpiece(a2, b.first, b.last);
     for (const kerf::Segment<double>& s : {a1, a2}) {
+      run.arcs.push_back(s);
       const double c = (s.end - s.start).norm();
       if (c > 0) run.shortest_chord = std::min(run.shortest_chord, c);
     }
@@ -224,4 +226,25 @@ TYPED_TEST(TypedBiarc, APathOverItselfGetsNoBackwardLine) {
   EXPECT_EQ(got.fit.status(), kerf::Status::infeasible);
 }
 
+// The path that jumps back to its first point and runs up over itself
+// (tests/unit/test_biarc_fit.cpp, ABiarcMayNotSkipWhereThePathRunsOverItself)
+// in both types: both skipped points 2..8 with the biarc 0 -> 10.
+TYPED_TEST(TypedBiarc, ABiarcMayNotSkipWhereThePathRunsOverItself) {
+  using S = TypeParam;
+  const std::vector<VD> pd{{0, 0},    {4, 24},  {8, 140},  {16, 188},  {20, 192}, {28, 276},
+                           {24, 300}, {16, 356}, {12, 464}, {0, 0},     {-8, 72},  {-8, 168},
+                           {-16, 224}, {-16, 272}, {24, 328}, {32, 420}, {28, 544}};
+  const BiarcRun<S> got = fit_biarc<S>(pd, 16);
+  const double slack = allowance<S>(pd);
+  for (std::size_t k = 0; k < got.biarcs.size(); ++k) {
+    for (std::size_t q = got.biarcs[k].a1.first; q <= got.biarcs[k].a1.last; ++q) {
+      const double d = std::min(kerf::distance_to_segment(got.arcs[2 * k], pd[q]),
+                                kerf::distance_to_segment(got.arcs[2 * k + 1], pd[q]));
+      EXPECT_LE(d, 16 + slack) << "point " << q << " of biarc " << k;
+    }
+  }
+  EXPECT_EQ(got.fit.status(), kerf::Status::infeasible);
+}
+
 }  // namespace
+
