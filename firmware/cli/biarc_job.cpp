@@ -84,6 +84,16 @@ bool fit_biarc_path(const std::vector<Vec2<double>>& pts, const std::vector<Vec2
                                                opts, storage.workspace(), storage.pieces());
   if (!r.ok()) {
     status = r.status();
+    // An estimated tangent is zero only where the path turns straight back
+    // between two equal steps: core refuses it as a bad argument.
+    for (std::size_t k = 0; given.empty() && k < n; ++k) {
+      if (tangents[k].x == 0.0 && tangents[k].y == 0.0) {
+        error = "point " + std::to_string(k + 1) +
+                ": the path turns straight back there (180 degrees between equal steps), so it "
+                "has no tangent to estimate";
+        return false;
+      }
+    }
     error = r.status() == Status::infeasible
                 ? "no chain of biarcs fits (tangents against the path, or a corner sharper than "
                   "the band allows)"
