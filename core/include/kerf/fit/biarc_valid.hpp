@@ -2,7 +2,10 @@
 // Drysdale, Rote, Sturm)? Both arcs inside R, gates g_i and g_j touched
 // only at p_i and p_j, the tangents through g_i and g_j forwards (the
 // paper's assumption (C')). Intermediate gates may be crossed any number of
-// times: section 3.3 relaxes the gate rule for biarcs.
+// times (section 3.3 relaxes the gate rule for biarcs), but at least once:
+// where the path jumps back over its own band, R overlaps itself, and a
+// biarc inside it could otherwise skip the part in between (where R is
+// simple, every intermediate gate separates g_i from g_j anyway).
 //
 // The test. Between g_i and g_j, R is the polygon bounded by g_i, the left
 // chains of cells i..j-1, g_j and the right chains (fit/band_region.hpp).
