@@ -133,10 +133,17 @@ std::string check_biarcs(const std::vector<Vec2<double>>& pts,
     if ((a1.start - pts[b.first]).norm() > eps || (a2.end - pts[b.last]).norm() > eps ||
         (a1.end - a2.start).norm() > eps)
       return name + ": ends do not meet";
-    if (turn(tangent_of(a1, false), tangents[b.first]) > turn_max(a1)) return name + ": start tangent";
-    if (turn(tangent_of(a1, true), tangent_of(a2, false)) > turn_max(a1) + turn_max(a2))
+    // A joint on p_first or p_last (one circle has both tangents) leaves one
+    // part a point, without a tangent: the other part must meet both.
+    const bool point1 = (a1.end - a1.start).norm() <= eps;
+    const bool point2 = (a2.end - a2.start).norm() <= eps;
+    if (point1 && point2) return name + ": both parts are points";
+    const Segment<double>& head = point1 ? a2 : a1;
+    const Segment<double>& tail = point2 ? a1 : a2;
+    if (turn(tangent_of(head, false), tangents[b.first]) > turn_max(head)) return name + ": start tangent";
+    if (!point1 && !point2 && turn(tangent_of(a1, true), tangent_of(a2, false)) > turn_max(a1) + turn_max(a2))
       return name + ": corner at the joint";
-    if (turn(tangent_of(a2, true), tangents[b.last]) > turn_max(a2)) return name + ": end tangent";
+    if (turn(tangent_of(tail, true), tangents[b.last]) > turn_max(tail)) return name + ": end tangent";
     for (std::size_t q = b.first; q <= b.last; ++q)
       if (std::fmin(distance_to(a1, pts[q]), distance_to(a2, pts[q])) > tol * (1 + 1e-9) + eps)
         return name + ": point " + std::to_string(q) + " is farther than tol";
