@@ -246,5 +246,31 @@ TYPED_TEST(TypedBiarc, ABiarcMayNotSkipWhereThePathRunsOverItself) {
   EXPECT_EQ(got.fit.status(), kerf::Status::infeasible);
 }
 
+// A straight run along an axis or not, 2 or 3 points: one biarc of two
+// lines. The validity test placed a gate crossing beyond the joint on the
+// first part, so every joint counted as meeting g_j: in fixed point on the
+// axis-aligned runs (ArcPart::position scaled each point's offset by its
+// own power of two), in double on the 250000 mm diagonal (a curvature of
+// 1e-21 from rounding left the pseudo-angle no bits).
+TYPED_TEST(TypedBiarc, AStraightRunIsOneBiarc) {
+  using S = TypeParam;
+  const std::vector<std::vector<VD>> runs{{{0, 0}, {100, 0}},
+                                          {{0, 0}, {50, 0}, {100, 0}},
+                                          {{-1688, -1392}, {-1688, -736}},
+                                          {{-3072, -16384}, {-183808, -183808}},
+                                          {{0, 0}, {100, 50}}};
+  for (const std::vector<VD>& pd : runs) {
+    const BiarcRun<S> got = fit_biarc<S>(pd, 1);
+    ASSERT_TRUE(got.fit.ok()) << pd.back().x << " " << pd.back().y << ": " << kerf::to_string(got.fit.status());
+    EXPECT_EQ(got.fit.value().pieces, 1u);
+    std::vector<kerf_test::VPoint> vp;
+    for (const VD& p : pd) vp.push_back({p.x, p.y});
+    const double slack = allowance<S>(pd);
+    const auto rep = kerf_test::check_biarc_fit(vp, got.tangents, kerf_test::symmetric_widths(pd.size(), 1),
+                                                got.biarcs, slack, max_turn<S>(slack, got.shortest_chord));
+    EXPECT_TRUE(rep.ok) << rep.why;
+  }
+}
+
 }  // namespace
 

@@ -160,12 +160,21 @@ class BiarcCheck {
     }
     const S slack = biarc_detail::relative_reach(S(1), S(1e-12), 4);
     const S skip_reach = biarc_detail::relative_reach(scale_, S(1e-9), 4096);
-    const S end = arc.position(arc.b);
+    // Where x lies along the arc. A nearly straight arc (turning by less
+    // than 2^-20 rad) goes by the distance along its chord: its pseudo-angle
+    // (ArcPart::position) has no bits left there, and in fixed point a line's
+    // was scaled per point, so that a crossing of g_j beyond the joint
+    // compared as on the first part and a straight run found no joint. A
+    // point of its circle that is not near the chord lies a radius away.
+    const Vec2<S> c = arc.b - arc.a;
+    const bool flat = Scalar<S>::abs(k) * band_detail::length(c) < S(1.0 / 1048576.0);
+    auto where = [&](Vec2<S> x) { return flat ? (x - arc.a).dot(c) : arc.position(x); };
+    const S end = where(arc.b);
     for (int t = 0; t < m; ++t) {
       if (!(roots[t] >= -slack && roots[t] <= S(1) + slack)) continue;
       const Vec2<S> x = q1 + d * roots[t];
       if (biarc_detail::near(x, skip, skip_reach)) continue;
-      const S pos = arc.position(x);
+      const S pos = where(x);
       if (pos >= S(0) - slack && pos <= end + slack * (S(1) + Scalar<S>::abs(end))) return true;
     }
     return false;
