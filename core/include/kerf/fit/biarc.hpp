@@ -92,7 +92,13 @@ struct ArcPart {
   // cut can follow and segment() would turn into a reversed line. Where
   // p_i, p_j and both tangents lie on one line, with p_j behind p_i, every
   // joint gives such a part.
-  bool backward_line() const { return !empty() && !(t.dot(b - a) > S(0)) && nearly_straight(); }
+  bool backward_line() const {
+    const Vec2<S> c = b - a;
+    const S along = t.dot(c);
+    if (along > S(0) || empty()) return false;
+    // Cheap first: more than 45 degrees off the backward chord is no line.
+    return !(Scalar<S>::abs(t.cross(c)) > -along) && nearly_straight();
+  }
 
   // The arc as a path segment: a line when nearly_straight(). In fixed
   // point a line also when its radius reaches max_radius (its centre would
