@@ -84,6 +84,16 @@ bool fit_biarc_path(const std::vector<Vec2<double>>& pts, const std::vector<Vec2
                                                opts, storage.workspace(), storage.pieces());
   if (!r.ok()) {
     status = r.status();
+    // An estimated tangent is zero only where the path turns straight back
+    // between two equal steps: core refuses it as a bad argument.
+    for (std::size_t k = 0; given.empty() && k < n; ++k) {
+      if (tangents[k].x == 0.0 && tangents[k].y == 0.0) {
+        error = "point " + std::to_string(k + 1) +
+                ": the path turns straight back there (180 degrees between equal steps), so it "
+                "has no tangent to estimate";
+        return false;
+      }
+    }
     error = r.status() == Status::infeasible
                 ? "no chain of biarcs fits (tangents against the path, or a corner sharper than "
                   "the band allows)"
@@ -110,10 +120,11 @@ std::string check_biarcs(const std::vector<Vec2<double>>& pts,
   for (const Vec2<double>& p : pts) scale = std::fmax(scale, std::fmax(std::fabs(p.x), std::fabs(p.y)));
   const double eps = 1e-9 * (scale + 1) + slack;
   // The angle allowed at an arc's end: 1e-9 rad, plus 2 slack over its chord.
-  auto turn_max = [&](const Segment<double>& s) {
+  auto grid_turn = [&](const Segment<double>& s) {
     const double c = (s.end - s.start).norm();
-    return 1e-9 + (slack > 0 && c > 0 ? 2 * slack / c : 0.0);
+    return slack > 0 && c > 0 ? 2 * slack / c : 0.0;
   };
+  auto turn_max = [&](const Segment<double>& s) { return 1e-9 + grid_turn(s); };
   for (std::size_t k = 0; k < pieces.size(); ++k) {
     const fit::BiarcPiece<double>& b = pieces[k];
     const std::string name = "biarc " + std::to_string(k + 1);
@@ -123,10 +134,21 @@ std::string check_biarcs(const std::vector<Vec2<double>>& pts,
     if ((a1.start - pts[b.first]).norm() > eps || (a2.end - pts[b.last]).norm() > eps ||
         (a1.end - a2.start).norm() > eps)
       return name + ": ends do not meet";
-    if (turn(tangent_of(a1, false), tangents[b.first]) > turn_max(a1)) return name + ": start tangent";
-    if (turn(tangent_of(a1, true), tangent_of(a2, false)) > turn_max(a1) + turn_max(a2))
+    // A joint on p_first or p_last (one circle has both tangents) leaves one
+    // part a point, without a tangent: the other part must meet both.
+    const bool point1 = (a1.end - a1.start).norm() <= eps;
+    const bool point2 = (a2.end - a2.start).norm() <= eps;
+    if (point1 && point2) return name + ": both parts are points";
+    const Segment<double>& head = point1 ? a2 : a1;
+    const Segment<double>& tail = point2 ? a1 : a2;
+    if (turn(tangent_of(head, false), tangents[b.first]) > turn_max(head)) return name + ": start tangent";
+    if (!point1 && !point2 && turn(tangent_of(a1, true), tangent_of(a2, false)) > turn_max(a1) + turn_max(a2))
       return name + ": corner at the joint";
-    if (turn(tangent_of(a2, true), tangents[b.last]) > turn_max(a2)) return name + ": end tangent";
+    // The second part starts with the first's end tangent, reflected in the
+    // first's chord on the grid: a short first part's error carries to the end.
+    const double carried = point1 || point2 ? 0.0 : grid_turn(a1);
+    if (turn(tangent_of(tail, true), tangents[b.last]) > turn_max(tail) + carried)
+      return name + ": end tangent";
     for (std::size_t q = b.first; q <= b.last; ++q)
       if (std::fmin(distance_to(a1, pts[q]), distance_to(a2, pts[q])) > tol * (1 + 1e-9) + eps)
         return name + ": point " + std::to_string(q) + " is farther than tol";

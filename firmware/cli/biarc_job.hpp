@@ -27,9 +27,12 @@ bool fit_biarc_path(const std::vector<Vec2<double>>& pts, const std::vector<Vec2
 // biarc starts on p_first with the point's tangent, its arcs meet at the
 // joint with one tangent (1e-9 rad), it ends on p_last with that point's
 // tangent, and every point p_first..p_last lies within tol of the biarc.
+// A part that is a point (the joint on an end, one circle with both
+// tangents) has no tangent: the other part must then meet both.
 // slack (fixed-point fits: fixed_fit_slack) is added to every distance,
 // and 2 slack / the arc's chord to every angle (an arc's tangent comes from
-// its centre and ends, each that close). Empty when fine, else what is wrong.
+// its centre and ends, each that close); the end tangent also gets the
+// first arc's (the second arc starts with the first's end tangent). Empty when fine, else what is wrong.
 std::string check_biarcs(const std::vector<Vec2<double>>& pts,
                          const std::vector<Vec2<double>>& tangents, double tol,
                          const std::vector<fit::BiarcPiece<double>>& pieces, double slack = 0.0);

@@ -4,11 +4,16 @@
 // between two points whose tangents leave the band), but with a status, and
 // what it returns must pass the independent biarc referee
 // (tests/support/biarc_checker.hpp: tangent continuity, certified band,
-// gate rules).
+// gate rules), and the CLI's own check (cli/biarc_job.hpp: every point
+// within tol of its biarc, too), whose failure a user would see as an
+// internal error.
 #include <cstddef>
 #include <cstdint>
+#include <string>
+#include <vector>
 
 #include "bridge/biarc_bridge.hpp"
+#include "cli/biarc_job.hpp"
 #include "fuzz_check.hpp"
 #include "fuzz_points.hpp"
 
@@ -34,5 +39,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                                               core.biarcs(r.value().pieces),
                                               kerf_fuzz::slack_for(f.pts));
   FUZZ_CHECK(rep.ok, rep.why.c_str());
+  std::vector<kerf::Vec2<double>> pts, tangents;
+  for (const auto& p : f.pts) pts.push_back({p.x, p.y});
+  for (const auto& t : core.tangents()) tangents.push_back({t.x, t.y});
+  std::vector<kerf::fit::BiarcPiece<double>> pieces;
+  for (std::uint32_t k = 0; k < r.value().pieces; ++k) pieces.push_back(core.piece(k));
+  const std::string cli = kerf::cli::check_biarcs(pts, tangents, f.tol, pieces, 0.0);
+  FUZZ_CHECK(cli.empty(), cli.c_str());
   return 0;
 }

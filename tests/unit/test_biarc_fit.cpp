@@ -184,6 +184,21 @@ TEST(BiarcJointCircle, AJointAtAnEndPointIsG1OnlyForOneMatchingArc) {
   EXPECT_TRUE(generic.biarc(0.5, b));
 }
 
+TEST(BiarcJointCircle, BothTangentsAlongTheChordBackwardsGiveNoBiarc) {
+  // p2 straight behind p1, both tangents pointing ahead along the line
+  // through them: J is that line, and every joint leaves one part a line
+  // run backwards (a circle through infinity), which no cut can follow.
+  kerf::fit::Biarc<double> b;
+  const kerf::fit::JointCircle<double> back({0, 68}, {0, 1}, {0, -608}, {0, 1});
+  for (double s = 0.0; s <= 2.0; s += 0.0625) EXPECT_FALSE(back.biarc(s, b)) << s;
+  // p2 ahead instead: a joint between them gives the straight line itself.
+  const kerf::fit::JointCircle<double> ahead({0, 68}, {0, 1}, {0, 608}, {0, 1});
+  for (double s = 0.0625; s < 1.0; s += 0.0625) {
+    ASSERT_TRUE(ahead.biarc(s, b)) << s;
+    EXPECT_FALSE(b.first.backward_line() || b.second.backward_line()) << s;
+  }
+}
+
 // --- fits ---------------------------------------------------------------------
 
 TEST(BiarcFit, SampledCircleArcIsOneBiarc) {
@@ -329,4 +344,49 @@ TEST(BiarcTwin, KerfNeverNeedsMoreThanTheTwin) {
   EXPECT_GE(compared, 40);
 }
 
+// A path that runs up, jumps back below its start and runs up over itself
+// again (the fuzzer's fit_biarc finding): p3 and p8 lie on x = 0 with both
+// estimated tangents straight up, p8 behind p3. The fitter used to accept
+// 3 -> 8 with a joint above p3, its second part a line run downwards with
+// the tangent up: the CLI saw a corner at the joint and an end tangent
+// against t_8. No G1 chain exists here (it would need two U-turns of
+// radius <= 16 in one biarc), so the answer is a refusal.
+TEST(BiarcFit, APathOverItselfGetsNoBackwardLine) {
+  const std::vector<VPoint> p{{0, -204}, {0, -136}, {0, -68}, {0, 0},      {0, 16},    {4, 84},
+                              {-4, -864}, {0, -784}, {0, -716}, {0, -648}, {0, -580}, {12, -460}};
+  CoreBiarcFitter core(p, {}, 16);
+  const auto fit = core.fit();
+  if (fit.ok()) {
+    const auto rep = kerf_test::check_biarc_fit(p, core.tangents(), kerf_test::symmetric_widths(p.size(), 16),
+                                                core.biarcs(fit.value().pieces), slack_for(p));
+    EXPECT_TRUE(rep.ok) << rep.why;
+  }
+  EXPECT_EQ(fit.status(), kerf::Status::infeasible);
+}
+
+// A path that runs up, jumps back to its first point and runs up again:
+// the band of the jump covers the first run, so R (cells 0..10) runs back
+// over itself. The biarc 0 -> 10 used to go straight up inside it, never
+// reaching points 2..8 (392 away): R held it, but the CLI's own check saw
+// a point farther than tol. Every gate between p_i and p_j must be crossed;
+// no G1 chain then exists (two U-turns of radius <= 16 in one biarc).
+TEST(BiarcFit, ABiarcMayNotSkipWhereThePathRunsOverItself) {
+  const std::vector<VPoint> p{{0, 0},    {4, 24},  {8, 140},  {16, 188},  {20, 192}, {28, 276},
+                              {24, 300}, {16, 356}, {12, 464}, {0, 0},     {-8, 72},  {-8, 168},
+                              {-16, 224}, {-16, 272}, {24, 328}, {32, 420}, {28, 544}};
+  CoreBiarcFitter core(p, {}, 16);
+  const auto fit = core.fit();
+  for (std::uint32_t k = 0; fit.ok() && k < fit.value().pieces; ++k) {
+    const kerf::fit::BiarcPiece<double>& b = core.piece(k);
+    for (std::uint32_t q = b.first; q <= b.last; ++q) {
+      const kerf::Vec2<double> x{p[q].x, p[q].y};
+      EXPECT_LE(std::fmin(kerf::distance_to_segment(b.arc[0], x), kerf::distance_to_segment(b.arc[1], x)),
+                16 + slack_for(p))
+          << "point " << q << " of biarc " << k;
+    }
+  }
+  EXPECT_EQ(fit.status(), kerf::Status::infeasible);
+}
+
 }  // namespace
+

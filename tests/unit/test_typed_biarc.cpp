@@ -62,6 +62,7 @@ struct BiarcRun {
   std::vector<kerf_test::VBiarc> biarcs;      // in double, for the referee
   std::vector<kerf_test::VPoint> tangents;    // the ones the fit used, in double
   double shortest_chord = 1e300;              // of the arcs, in double
+  std::vector<kerf::Segment<double>> arcs;    // both parts of each biarc, in double
 };
 
 kerf_test::VPiece to_vpiece(const kerf::Segment<double>& s, std::uint32_t first, std::uint32_t last) {
@@ -101,6 +102,7 @@ BiarcRun<S> fit_biarc(const std::vector<VD>& pd, double tol) {
     v.a1 = to_vpiece(a1, b.first, b.last);
     v.a2 = to_vpiece(a2, b.first, b.last);
     for (const kerf::Segment<double>& s : {a1, a2}) {
+      run.arcs.push_back(s);
       const double c = (s.end - s.start).norm();
       if (c > 0) run.shortest_chord = std::min(run.shortest_chord, c);
     }
@@ -204,4 +206,71 @@ TYPED_TEST(TypedBiarc, EstimatedTangentsAgreeWithDouble) {
   }
 }
 
+// The fuzzer's path over itself (tests/unit/test_biarc_fit.cpp,
+// APathOverItselfGetsNoBackwardLine) in both types: no biarc with a part
+// run backwards along a line (both types accepted 3 -> 8 so, Fixed also
+// 0 -> 3 with its joint beyond p3); no G1 chain exists, so a refusal.
+TYPED_TEST(TypedBiarc, APathOverItselfGetsNoBackwardLine) {
+  using S = TypeParam;
+  const std::vector<VD> pd{{0, -204}, {0, -136}, {0, -68}, {0, 0},      {0, 16},    {4, 84},
+                           {-4, -864}, {0, -784}, {0, -716}, {0, -648}, {0, -580}, {12, -460}};
+  const BiarcRun<S> got = fit_biarc<S>(pd, 16);
+  if (got.fit.ok()) {
+    std::vector<kerf_test::VPoint> vp;
+    for (const VD& p : pd) vp.push_back({p.x, p.y});
+    const double slack = allowance<S>(pd);
+    const auto rep = kerf_test::check_biarc_fit(vp, got.tangents, kerf_test::symmetric_widths(pd.size(), 16),
+                                                got.biarcs, slack, max_turn<S>(slack, got.shortest_chord));
+    EXPECT_TRUE(rep.ok) << rep.why;
+  }
+  EXPECT_EQ(got.fit.status(), kerf::Status::infeasible);
+}
+
+// The path that jumps back to its first point and runs up over itself
+// (tests/unit/test_biarc_fit.cpp, ABiarcMayNotSkipWhereThePathRunsOverItself)
+// in both types: both skipped points 2..8 with the biarc 0 -> 10.
+TYPED_TEST(TypedBiarc, ABiarcMayNotSkipWhereThePathRunsOverItself) {
+  using S = TypeParam;
+  const std::vector<VD> pd{{0, 0},    {4, 24},  {8, 140},  {16, 188},  {20, 192}, {28, 276},
+                           {24, 300}, {16, 356}, {12, 464}, {0, 0},     {-8, 72},  {-8, 168},
+                           {-16, 224}, {-16, 272}, {24, 328}, {32, 420}, {28, 544}};
+  const BiarcRun<S> got = fit_biarc<S>(pd, 16);
+  const double slack = allowance<S>(pd);
+  for (std::size_t k = 0; k < got.biarcs.size(); ++k) {
+    for (std::size_t q = got.biarcs[k].a1.first; q <= got.biarcs[k].a1.last; ++q) {
+      const double d = std::min(kerf::distance_to_segment(got.arcs[2 * k], pd[q]),
+                                kerf::distance_to_segment(got.arcs[2 * k + 1], pd[q]));
+      EXPECT_LE(d, 16 + slack) << "point " << q << " of biarc " << k;
+    }
+  }
+  EXPECT_EQ(got.fit.status(), kerf::Status::infeasible);
+}
+
+// A straight run along an axis or not, 2 or 3 points: one biarc of two
+// lines. The validity test placed a gate crossing beyond the joint on the
+// first part, so every joint counted as meeting g_j: in fixed point on the
+// axis-aligned runs (ArcPart::position scaled each point's offset by its
+// own power of two), in double on the 250000 mm diagonal (a curvature of
+// 1e-21 from rounding left the pseudo-angle no bits).
+TYPED_TEST(TypedBiarc, AStraightRunIsOneBiarc) {
+  using S = TypeParam;
+  const std::vector<std::vector<VD>> runs{{{0, 0}, {100, 0}},
+                                          {{0, 0}, {50, 0}, {100, 0}},
+                                          {{-1688, -1392}, {-1688, -736}},
+                                          {{-3072, -16384}, {-183808, -183808}},
+                                          {{0, 0}, {100, 50}}};
+  for (const std::vector<VD>& pd : runs) {
+    const BiarcRun<S> got = fit_biarc<S>(pd, 1);
+    ASSERT_TRUE(got.fit.ok()) << pd.back().x << " " << pd.back().y << ": " << kerf::to_string(got.fit.status());
+    EXPECT_EQ(got.fit.value().pieces, 1u);
+    std::vector<kerf_test::VPoint> vp;
+    for (const VD& p : pd) vp.push_back({p.x, p.y});
+    const double slack = allowance<S>(pd);
+    const auto rep = kerf_test::check_biarc_fit(vp, got.tangents, kerf_test::symmetric_widths(pd.size(), 1),
+                                                got.biarcs, slack, max_turn<S>(slack, got.shortest_chord));
+    EXPECT_TRUE(rep.ok) << rep.why;
+  }
+}
+
 }  // namespace
+

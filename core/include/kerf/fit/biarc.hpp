@@ -75,22 +75,41 @@ struct ArcPart {
     return a + v * (t.cross(v) * c.norm2() / (tc * v.norm2()) / f);
   }
 
-  // The arc as a path segment: a line when the sagitta would be below
-  // 1e-12 of the chord.
-  // In fixed point a line also when the arc turns by less than 2^-24 rad
-  // (it leaves its chord by less than 2^-26 of the chord, a few steps of
-  // the scaled problem) or its radius reaches max_radius (its centre would
+  // Straight to within what segment() keeps: a sagitta below 1e-12 of
+  // the chord; in fixed point a turn below 2^-24 rad (it leaves its chord
+  // by less than 2^-26 of the chord, a few steps of the scaled problem).
+  bool nearly_straight() const {
+    const S ak = Scalar<S>::abs(curvature());
+    if constexpr (biarc_detail::kFloating<S>) {
+      return ak * (b - a).norm() < S(1e-12);
+    } else {
+      return ak * band_detail::length(b - a) < S(1.0 / 16777216.0);
+    }
+  }
+
+  // Straight, but its tangent does not point along the chord to b: the
+  // limit of circles through infinity (or a line run backwards), which no
+  // cut can follow and segment() would turn into a reversed line. Where
+  // p_i, p_j and both tangents lie on one line, with p_j behind p_i, every
+  // joint gives such a part.
+  bool backward_line() const {
+    const Vec2<S> c = b - a;
+    const S along = t.dot(c);
+    if (along > S(0) || empty()) return false;
+    // Cheap first: more than 45 degrees off the backward chord is no line.
+    return !(Scalar<S>::abs(t.cross(c)) > -along) && nearly_straight();
+  }
+
+  // The arc as a path segment: a line when nearly_straight(). In fixed
+  // point a line also when its radius reaches max_radius (its centre would
   // not be representable where the caller takes it).
   Segment<S> segment(S max_radius = Scalar<S>::infinity()) const {
-    const Vec2<S> c = b - a;
     const S k = curvature();
+    if (nearly_straight()) return Segment<S>::line(a, b);
     if constexpr (biarc_detail::kFloating<S>) {
       (void)max_radius;
-      if (Scalar<S>::abs(k) * c.norm() < S(1e-12)) return Segment<S>::line(a, b);
     } else {
-      const S ak = Scalar<S>::abs(k);
-      if (ak * band_detail::length(c) < S(1.0 / 16777216.0) || !(ak * max_radius > S(1)))
-        return Segment<S>::line(a, b);
+      if (!(Scalar<S>::abs(k) * max_radius > S(1))) return Segment<S>::line(a, b);
     }
     return Segment<S>::arc(a, b, a + t.perp() * (S(1) / k), k > S(0) ? 1 : -1);
   }
@@ -133,7 +152,8 @@ class JointCircle {
   }
 
   // The biarc with its joint at point(s). Returns false when it is not G1
-  // (a joint at an end point without a single matching arc) or not finite.
+  // (a joint at an end point without a single matching arc), not finite,
+  // or has a part that is a backward line (ArcPart::backward_line).
   bool biarc(S s, Biarc<S>& out) const {
     const Vec2<S> m = point(s);
     out.s = s;
@@ -150,10 +170,11 @@ class JointCircle {
       if (band_detail::length(whole.end_tangent() - t2_) > biarc_detail::unit_slack<S>(S(1e-9))) return false;
       out.first = at_p1 ? ArcPart<S>{p1_, p1_, t1_} : whole;
       out.second = at_p1 ? whole : ArcPart<S>{p2_, p2_, t2_};
-      return true;
+      return !whole.backward_line();
     }
     out.first = {p1_, m, t1_};
     out.second = {m, p2_, out.first.end_tangent()};
+    if (out.first.backward_line() || out.second.backward_line()) return false;
     // m is on J only up to rounding, which a joint very near an end point
     // magnifies: refuse a biarc whose end tangent strays from t2.
     return band_detail::length(out.second.end_tangent() - t2_) <= biarc_detail::unit_slack<S>(S(1e-10));

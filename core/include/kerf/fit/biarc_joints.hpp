@@ -23,6 +23,9 @@
 // where the biarc meets them: no joint is sampled, and no valid interval,
 // however narrow, is missed. Critical joints themselves (a biarc touching
 // the boundary) count as invalid, like every touch in fit/biarc_valid.hpp.
+// The sets are exact for the boundary; the rule that every intermediate gate
+// be crossed (fit/biarc_valid.hpp; it refuses anything only where R
+// overlaps itself) is applied to the joints verified from them.
 //
 // Relation to the paper. Drysdale, Rote and Sturm find the same arc of
 // joints (A1 A2, Lemmas 3.5-3.7) in O(log n) per pair from precomputed

@@ -2,7 +2,10 @@
 // Drysdale, Rote, Sturm)? Both arcs inside R, gates g_i and g_j touched
 // only at p_i and p_j, the tangents through g_i and g_j forwards (the
 // paper's assumption (C')). Intermediate gates may be crossed any number of
-// times: section 3.3 relaxes the gate rule for biarcs.
+// times (section 3.3 relaxes the gate rule for biarcs), but at least once:
+// where the path jumps back over its own band, R overlaps itself, and a
+// biarc inside it could otherwise skip the part in between (where R is
+// simple, every intermediate gate separates g_i from g_j anyway).
 //
 // The test. Between g_i and g_j, R is the polygon bounded by g_i, the left
 // chains of cells i..j-1, g_j and the right chains (fit/band_region.hpp).
@@ -96,6 +99,21 @@ class BiarcCheck {
         }
       }
     }
+    // Every gate between g_i and g_j crossed at least once. Where R is
+    // simple each of them separates g_i from g_j, so this refuses nothing;
+    // where R runs back over itself (a path that jumps back over its own
+    // band) a biarc could otherwise skip the part between and leave its
+    // points uncut.
+    for (std::uint32_t k = i_ + 1; k < j_ && left > 0; ++k) {
+      const Vec2<S> q1 = gate_end(k, -1);
+      const Vec2<S> q2 = gate_end(k, 1);
+      for (std::uint32_t q = 0; q < m; ++q) {
+        if (alive[q] && !meets(b[q], q1, q2)) {
+          alive[q] = false;
+          --left;
+        }
+      }
+    }
     return left;
   }
 
@@ -142,12 +160,21 @@ class BiarcCheck {
     }
     const S slack = biarc_detail::relative_reach(S(1), S(1e-12), 4);
     const S skip_reach = biarc_detail::relative_reach(scale_, S(1e-9), 4096);
-    const S end = arc.position(arc.b);
+    // Where x lies along the arc. A nearly straight arc (turning by less
+    // than 2^-20 rad) goes by the distance along its chord: its pseudo-angle
+    // (ArcPart::position) has no bits left there, and in fixed point a line's
+    // was scaled per point, so that a crossing of g_j beyond the joint
+    // compared as on the first part and a straight run found no joint. A
+    // point of its circle that is not near the chord lies a radius away.
+    const Vec2<S> c = arc.b - arc.a;
+    const bool flat = Scalar<S>::abs(k) * band_detail::length(c) < S(1.0 / 1048576.0);
+    auto where = [&](Vec2<S> x) { return flat ? (x - arc.a).dot(c) : arc.position(x); };
+    const S end = where(arc.b);
     for (int t = 0; t < m; ++t) {
       if (!(roots[t] >= -slack && roots[t] <= S(1) + slack)) continue;
       const Vec2<S> x = q1 + d * roots[t];
       if (biarc_detail::near(x, skip, skip_reach)) continue;
-      const S pos = arc.position(x);
+      const S pos = where(x);
       if (pos >= S(0) - slack && pos <= end + slack * (S(1) + Scalar<S>::abs(end))) return true;
     }
     return false;
