@@ -32,7 +32,8 @@ bool fit_biarc_path(const std::vector<Vec2<double>>& pts, const std::vector<Vec2
 // slack (fixed-point fits: fixed_fit_slack) is added to every distance,
 // and 2 slack / the arc's chord to every angle (an arc's tangent comes from
 // its centre and ends, each that close); the end tangent also gets the
-// first arc's (the second arc starts with the first's end tangent). Empty when fine, else what is wrong.
+// first arc's (the second arc starts with the first's end tangent).
+// Empty when fine, else what is wrong.
 std::string check_biarcs(const std::vector<Vec2<double>>& pts,
                          const std::vector<Vec2<double>>& tangents, double tol,
                          const std::vector<fit::BiarcPiece<double>>& pieces, double slack = 0.0);
