@@ -86,13 +86,12 @@ bool fit_biarc_path(const std::vector<Vec2<double>>& pts, const std::vector<Vec2
     status = r.status();
     // An estimated tangent is zero only where the path turns straight back
     // between two equal steps: core refuses it as a bad argument.
-    for (std::size_t k = 0; given.empty() && k < n; ++k) {
-      if (tangents[k].x == 0.0 && tangents[k].y == 0.0) {
-        error = "point " + std::to_string(k + 1) +
-                ": the path turns straight back there (180 degrees between equal steps), so it "
-                "has no tangent to estimate";
-        return false;
-      }
+    for (std::size_t k = 0; k < n && given.empty(); ++k) {
+      if (tangents[k].x != 0.0 || tangents[k].y != 0.0) continue;
+      error = "point " + std::to_string(k + 1) +
+              ": the path turns straight back there (180 degrees between equal steps), so it "
+              "has no tangent to estimate";
+      return false;
     }
     error = r.status() == Status::infeasible
                 ? "no chain of biarcs fits (tangents against the path, or a corner sharper than "

@@ -18,12 +18,7 @@ class BandStorage {
         chains_(fit::band_chain_slots(n)),
         pieces_(n > 1 ? n - 1 : 1) {}
 
-  fit::BandWorkspace<double> workspace() {
-    return {{words_.data(), words_.size()},
-            {points_.data(), points_.size()},
-            {vertices_.data(), vertices_.size()},
-            {chains_.data(), chains_.size()}};
-  }
+  fit::BandWorkspace<double> workspace() { return workspace_for(points_.size()); }
   Span<fit::Piece<double>> pieces() { return {pieces_.data(), pieces_.size()}; }
 
   // A workspace for n points with the sizes BandStorage(n) has, growing

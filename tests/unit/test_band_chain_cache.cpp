@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "io/band_storage.hpp"
 #include "io/gcode_reader.hpp"
 #include "kerf/fit/band_fit.hpp"
 #include "typed_core_helpers.hpp"
@@ -22,18 +23,13 @@ std::vector<kerf::fit::Piece<double>> fit(const std::vector<VD>& p, kerf::fit::B
                                           bool cache, std::size_t& cells_cached) {
   const std::size_t n = p.size();
   std::vector<kerf::fit::BandWidth<double>> w(n, width);
-  std::vector<std::uint32_t> words(kerf::fit::band_workspace_words(n));
-  std::vector<VD> points(n);
-  std::vector<kerf::fit::BandVertex<double>> vertices(n);
-  std::vector<kerf::fit::BandChainSlot<double>> chains(cache ? kerf::fit::band_chain_slots(n) : 0);
+  kerf::io::BandStorage storage(n);
+  kerf::fit::BandWorkspace<double> ws = storage.workspace();
+  if (!cache) ws.chains = {};
   std::vector<kerf::fit::Piece<double>> out(n);
-  const kerf::fit::BandWorkspace<double> ws{{words.data(), words.size()},
-                                            {points.data(), n},
-                                            {vertices.data(), n},
-                                            {chains.data(), chains.size()}};
   const auto r = kerf::fit::fit_band_min_count<double>({p.data(), n}, {w.data(), n}, ws, {out.data(), n});
   EXPECT_TRUE(r.ok());
-  for (const auto& slot : chains) cells_cached += slot.key != 0 ? 1 : 0;
+  for (const auto& slot : ws.chains) cells_cached += slot.key != 0 ? 1 : 0;
   out.resize(r.ok() ? r.value().pieces : 0);
   return out;
 }
