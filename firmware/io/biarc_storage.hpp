@@ -22,6 +22,9 @@ class BasicBiarcStorage {
             {points_.data(), points_.size()}};
   }
   Span<fit::BiarcPiece<S>> pieces() { return {pieces_.data(), pieces_.size()}; }
+  // After a fit: the region it certified (its widths narrowed where the
+  // band's cells were not convex), in the scaled problem's units.
+  const std::vector<fit::BandVertex<S>>& region() const { return vertices_; }
 
  private:
   std::vector<std::uint32_t> words_;

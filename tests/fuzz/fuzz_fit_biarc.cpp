@@ -4,7 +4,7 @@
 // between two points whose tangents leave the band), but with a status, and
 // what it returns must pass the independent biarc referee
 // (tests/support/biarc_checker.hpp: tangent continuity, certified band,
-// gate rules), and the CLI's own check (cli/biarc_job.hpp: every point
+// gate rules at the gates of the region the fit certified), and the CLI's own check (cli/biarc_job.hpp: every point
 // within tol of its biarc, too), whose failure a user would see as an
 // internal error.
 #include <cstddef>
@@ -34,10 +34,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     FUZZ_CHECK(r.status() != kerf::Status::ok, "a failure without a status");
     return 0;
   }
+  const kerf_test::BandWidths region = core.region_widths();
   const auto rep = kerf_test::check_biarc_fit(f.pts, core.tangents(),
                                               kerf_test::symmetric_widths(f.pts.size(), f.tol),
                                               core.biarcs(r.value().pieces),
-                                              kerf_fuzz::slack_for(f.pts));
+                                              kerf_fuzz::slack_for(f.pts), 1e-9, &region);
   FUZZ_CHECK(rep.ok, rep.why.c_str());
   std::vector<kerf::Vec2<double>> pts, tangents;
   for (const auto& p : f.pts) pts.push_back({p.x, p.y});

@@ -74,7 +74,8 @@ VBiarc biarc_through(VPoint p, VPoint tp, VPoint q, VPoint tq, VPoint m, std::si
 }
 
 BandReport check_biarc(const std::vector<VPoint>& pts, const std::vector<VPoint>& tangents,
-                       const BandWidths& widths, const VBiarc& b, double slack, double max_turn) {
+                       const BandWidths& widths, const VBiarc& b, double slack, double max_turn,
+                       const BandWidths* gate_widths) {
   BandReport rep;
   auto fail = [&](const std::string& why) {
     rep.ok = false;
@@ -106,7 +107,13 @@ BandReport check_biarc(const std::vector<VPoint>& pts, const std::vector<VPoint>
   if (angle_between(t0, tangents[i]) > max_turn) return fail("start tangent is not t_i");
   if (angle_between(t1, tangents[j]) > max_turn) return fail("end tangent is not t_j");
   if (angle_between(tj1, tj2) > max_turn) return fail("corner at the joint");
-  const BandGate gi = band_gate(pts, widths, i), gj = band_gate(pts, widths, j);
+  const BandWidths& gw = gate_widths != nullptr ? *gate_widths : widths;
+  for (const std::size_t k : {i, j}) {
+    if (!(gw.left[k] >= 0 && gw.right[k] >= 0 && gw.left[k] <= widths.left[k] * (1 + 1e-12) &&
+          gw.right[k] <= widths.right[k] * (1 + 1e-12)))
+      return fail("the region's width at point " + std::to_string(k) + " is not within the band's");
+  }
+  const BandGate gi = band_gate(pts, gw, i), gj = band_gate(pts, gw, j);
   if (t0.x * gi.fx + t0.y * gi.fy <= 0) return fail("leaves gate i backwards");
   if (t1.x * gj.fx + t1.y * gj.fy <= 0) return fail("reaches gate j backwards");
   for (const VPiece* pc : {&b.a1, &b.a2}) {
@@ -122,7 +129,7 @@ BandReport check_biarc(const std::vector<VPoint>& pts, const std::vector<VPoint>
 
 BandReport check_biarc_fit(const std::vector<VPoint>& pts, const std::vector<VPoint>& tangents,
                            const BandWidths& widths, const std::vector<VBiarc>& fit, double slack,
-                           double max_turn) {
+                           double max_turn, const BandWidths* gate_widths) {
   BandReport rep;
   std::size_t at = 0;
   for (const VBiarc& b : fit) {
@@ -131,7 +138,7 @@ BandReport check_biarc_fit(const std::vector<VPoint>& pts, const std::vector<VPo
       rep.why = "biarcs are not contiguous at point " + std::to_string(at);
       return rep;
     }
-    const BandReport one = check_biarc(pts, tangents, widths, b, slack, max_turn);
+    const BandReport one = check_biarc(pts, tangents, widths, b, slack, max_turn, gate_widths);
     if (!one.ok) return one;
     rep.worst = std::max(rep.worst, one.worst);
     at = b.a1.last;

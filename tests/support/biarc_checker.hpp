@@ -15,8 +15,16 @@
 //    first..last-1, proven by the band checker's certified subdivision;
 //  - the gate rules (Definition 3.2): a1's start tangent and a2's end
 //    tangent point to the forward side of gates first and last; neither arc
-//    meets gate `first` or gate `last` (ideal gates, band_gate) except at
+//    meets gate `first` or gate `last` (band_gate of `gate_widths`) except at
 //    p_first and p_last (1e-9 of the scale).
+//
+// gate_widths: the widths of the region the fitter certifies, no wider than
+// `widths` at any point (checked). Where the ideal band runs back over
+// itself (a hairpin of short edges), an ideal gate reaches into the band of
+// the return leg, and a biarc going down that leg crosses it there; kerf's
+// region narrows the widths until its cells are convex (fit/band_region.hpp),
+// and its shorter gates are the ones Definition 3.2 speaks of. Without them
+// the ideal gates are used, which suits fits made in the ideal band.
 #pragma once
 
 #include <cstddef>
@@ -47,10 +55,10 @@ VBiarc biarc_through(VPoint p, VPoint tp, VPoint q, VPoint tq, VPoint m, std::si
 
 BandReport check_biarc(const std::vector<VPoint>& pts, const std::vector<VPoint>& tangents,
                        const BandWidths& widths, const VBiarc& b, double slack,
-                       double max_turn = 1e-9);
+                       double max_turn = 1e-9, const BandWidths* gate_widths = nullptr);
 
 BandReport check_biarc_fit(const std::vector<VPoint>& pts, const std::vector<VPoint>& tangents,
                            const BandWidths& widths, const std::vector<VBiarc>& fit, double slack,
-                           double max_turn = 1e-9);
+                           double max_turn = 1e-9, const BandWidths* gate_widths = nullptr);
 
 }  // namespace kerf_test

@@ -388,5 +388,28 @@ TEST(BiarcFit, ABiarcMayNotSkipWhereThePathRunsOverItself) {
   EXPECT_EQ(fit.status(), kerf::Status::infeasible);
 }
 
+// A hairpin of short edges (the fuzzer's fit_biarc finding): the path
+// climbs to p2, turns round p3 (4 away) and runs back down past p2. The
+// ideal gate at p2 (16 each side) reaches into the band of the return leg,
+// and the biarc 2 -> 4, going down that leg, crosses it there. kerf's
+// region narrows the widths at p2 until its cells are convex; its gate is
+// the one the biarc may touch only at p2, and the referee checks the gate
+// rules at the region's gates (the region no wider than the band).
+TEST(BiarcFit, AHairpinsReturnLegMayCrossTheIdealGate) {
+  const std::vector<VPoint> p{{8, 140}, {16, 188}, {20, 192}, {28, 104}, {-24, -12}};
+  CoreBiarcFitter core(p, {}, 16);
+  const auto fit = core.fit();
+  ASSERT_TRUE(fit.ok()) << kerf::to_string(fit.status());
+  const auto biarcs = core.biarcs(fit.value().pieces);
+  const auto widths = kerf_test::symmetric_widths(p.size(), 16);
+  const kerf_test::BandWidths region = core.region_widths();
+  EXPECT_LT(region.right[1], 16.0);  // narrowed at the hairpin
+  const auto rep = kerf_test::check_biarc_fit(p, core.tangents(), widths, biarcs, slack_for(p), 1e-9, &region);
+  EXPECT_TRUE(rep.ok) << rep.why;
+  const auto ideal = kerf_test::check_biarc_fit(p, core.tangents(), widths, biarcs, slack_for(p));
+  EXPECT_FALSE(ideal.ok);
+  EXPECT_NE(ideal.why.find("meets gate"), std::string::npos) << ideal.why;
+}
+
 }  // namespace
 

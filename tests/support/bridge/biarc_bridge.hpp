@@ -47,6 +47,16 @@ class CoreBiarcFitter {
     return v;
   }
   const kerf::fit::BiarcPiece<double>& piece(std::size_t k) { return storage_.pieces()[k]; }
+  // After fit(): the widths of the region the fit certified (double keeps
+  // the input's scale), for the referee's gate rules.
+  BandWidths region_widths() const {
+    BandWidths w;
+    for (std::size_t k = 0; k < pts_.size(); ++k) {
+      w.left.push_back(storage_.region()[k].left);
+      w.right.push_back(storage_.region()[k].right);
+    }
+    return w;
+  }
   std::vector<VPoint> tangents() const {
     std::vector<VPoint> v;
     for (const auto& t : tangents_) v.push_back({t.x, t.y});
