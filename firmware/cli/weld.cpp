@@ -1,9 +1,16 @@
 #include "cli/weld.hpp"
 
 #include <algorithm>
+#include <atomic>
+#include <condition_variable>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
+#include <exception>
+#include <mutex>
+#include <optional>
+#include <thread>
 #include <vector>
 
 #include "cli/fit_job.hpp"
@@ -189,26 +196,36 @@ std::vector<P> without_jitter(const std::vector<P>& pts, double e, std::vector<s
   return out;
 }
 
-struct Welder {
+struct Planned {
+  fit::Piece<double> piece;
+  bool keep = false;  // write its input lines
+  Written written;
+  std::size_t block = 0;  // the input block of the piece's last point
+};
+
+// What welding one polyline writes, planned apart from the output: the
+// planning of polylines runs on several threads, the writing in file order.
+struct PolylinePlan {
+  bool ok = true;
+  std::string error;          // when !ok
+  bool welded = false;        // false: its lines are passed through (G91, a single point)
+  P offset_in{};              // the offset (Writer::offset) it was planned from
+  P offset_out{};             // the offset after it
+  std::vector<Planned> pieces;
+  std::size_t kept_pieces = 0;
+  std::vector<std::size_t> progress;  // the lines to report to opts.progress, in order
+  std::exception_ptr exception;       // thrown while planning on a worker thread
+};
+
+// Plans polylines: reads g and opts only, so that planners on several
+// threads share nothing (fit_job's workspace is thread_local).
+struct Planner {
   const io::GcodeFile& g;
   const WeldOptions& opts;
-  WeldStats& stats;
-  Emitter emit;
+  int decimals = 0;
   std::string error;
-  // Where the machine is minus where the input says, after the moves written
-  // so far: nonzero only when --decimals rounds the input's own end points.
-  P offset{};
   const io::GPolyline* current = nullptr;  // for progress
-
-  // Writes an input line as it is.
-  void pass(const io::GBlock& b) {
-    emit.verbatim(b);
-    if (!b.moves && b.unknown.empty() && word_text(b, 'X').empty() && word_text(b, 'Y').empty()) return;
-    if (b.moves) ++stats.output_moves;
-    if (!word_text(b, 'X').empty() && !b.relative) offset.x = 0;
-    if (!word_text(b, 'Y').empty() && !b.relative) offset.y = 0;
-    if (!b.unknown.empty()) offset = {};  // homing, offsets: the input's own coordinates again
-  }
+  PolylinePlan* out = nullptr;
 
   // The trouble resolve met in the run being planned: pieces refitted or
   // kept as their input lines.
@@ -216,8 +233,20 @@ struct Welder {
   std::size_t kept = 0;
   bool closed_part = false;  // the part being planned ends where it starts
 
-  bool weld(const io::GPolyline& pl) {
+  // Plans pl, starting where the machine is: its first point plus `offset`.
+  void plan(const io::GPolyline& pl, P offset, PolylinePlan& result) {
+    result = PolylinePlan{};
+    result.offset_in = offset;
+    out = &result;
     current = &pl;
+    error.clear();
+    if (!weld(pl, offset)) {
+      result.ok = false;
+      result.error = error;
+    }
+  }
+
+  bool weld(const io::GPolyline& pl, P offset) {
     const double unit = pl.inches ? 25.4 : 1.0;
     const double tol = opts.tol_mm / unit;
     // Distinct consecutive points, each with the polyline index it came from.
@@ -228,11 +257,8 @@ struct Welder {
       pts.push_back(pl.points[k]);
       from_index.push_back(k);
     }
-    if (pl.relative || pts.size() < 2) {  // G91 polylines are not welded (see README)
-      for (std::size_t i = pl.first_block; i <= pl.last_block; ++i) pass(g.blocks[i]);
-      return true;
-    }
-    const int d0 = stats.decimals;
+    if (pl.relative || pts.size() < 2) return true;  // G91 polylines are not welded (see README)
+    const int d0 = decimals;
     const double budget = 2 * std::pow(10.0, -d0);
     const double fit_tol = tol > 2 * budget ? tol - budget : tol / 2;
     // The fit sees the run without its jitter (CAM output is full of 0.0003
@@ -242,71 +268,14 @@ struct Welder {
     std::vector<std::size_t> kept_index;
     double moved = 0;
     const std::vector<P> simple = without_jitter(pts, tol * opts.jitter, kept_index, moved);
-    std::vector<Planned> plan;
+    std::vector<Planned>& plan = out->pieces;
     P from = pts.front() + offset;
     if (!plan_parts(simple, kept_index, pts, from_index, fit_tol, moved, tol, from, plan)) return false;
-    ++stats.polylines;
-    offset = from - pts.back();
-    std::size_t next_block = pl.first_block;
-    for (std::size_t k = 0; k < plan.size(); ++k) {
-      const fit::Piece<double>& pc = plan[k].piece;
-      const Written& w = plan[k].written;
-      const bool last_piece = k + 1 == plan.size();
-      const std::size_t end_block = last_piece ? pl.last_block : pl.point_block[from_index[pc.last]];
-      if (plan[k].keep) {
-        for (std::size_t i = next_block; i <= end_block; ++i) {
-          emit.verbatim(g.blocks[i]);
-          if (g.blocks[i].moves) ++stats.output_moves;
-        }  // its X/Y words are the input's: offset is zero after it (resolve)
-        next_block = end_block + 1;
-        continue;
-      }
-      stats.max_deviation_mm = std::max(stats.max_deviation_mm, w.deviation * unit);
-      const io::GBlock& eb = g.blocks[pl.point_block[from_index[pc.last]]];
-      std::string line;
-      if (const std::string_view n = word_text(eb, 'N'); !n.empty()) {
-        line = n;
-        line += ' ';
-      }
-      line += w.text;
-      if (k == 0)
-        if (const std::string_view f = word_text(g.blocks[pl.first_block], 'F'); !f.empty()) {
-          line += ' ';
-          line += f;
-        }
-      for (const std::string_view c : eb.comments) {
-        line += ' ';
-        line += c;
-      }
-      const bool arc = pc.segment.is_arc();
-      emit.written(line, arc, eb.end);
-      ++stats.output_moves;
-      if (arc) ++stats.arcs;
-      // The comments of the replaced lines stay, in order, after the piece.
-      for (std::size_t i = next_block; i <= end_block; ++i) {
-        const io::GBlock& b = g.blocks[i];
-        if (&b == &eb) continue;
-        if (b.only_comment()) {
-          emit.verbatim(b);
-        } else if (!b.comments.empty()) {
-          std::string c;
-          for (const std::string_view t : b.comments) {
-            if (!c.empty()) c += ' ';
-            c += t;
-          }
-          emit.written(c, arc, b.end);
-        }
-      }
-      next_block = end_block + 1;
-    }
+    for (Planned& p : plan) p.block = pl.point_block[from_index[p.piece.last]];
+    out->welded = true;
+    out->offset_out = from - pts.back();
     return true;
   }
-
-  struct Planned {
-    fit::Piece<double> piece;
-    bool keep = false;  // write its input lines
-    Written written;
-  };
 
   // Plans the jitter-free run `simple` part by part: it is fitted
   // separately at turns sharper than 90 degrees. With the band criterion each
@@ -351,9 +320,9 @@ struct Welder {
       }
       plan.insert(plan.end(), first.begin(), first.end());
       from = first_from;
-      stats.kept_pieces += first_kept;
+      out->kept_pieces += first_kept;
       begin = k;
-      if (opts.progress) opts.progress(current->point_block[from_index[kept_index[k]]], g.blocks.size());
+      if (opts.progress) out->progress.push_back(current->point_block[from_index[kept_index[k]]]);
     }
     return true;
   }
@@ -394,7 +363,7 @@ struct Welder {
   bool resolve(const std::vector<P>& pts, const std::vector<fit::Piece<double>>& pieces, double fit_tol,
                double tol, int depth, P& from, std::vector<Planned>& plan) {
     for (const fit::Piece<double>& pc : pieces) {
-      Planned pl{pc, false, {}};
+      Planned pl{pc, false, {}, 0};
       if (pc.last - pc.first < 2) {  // a single segment: its input line is already the best
         // Closing a loop beside other pieces: an unbalanced split (a full
         // circle drawn as one arc and a line); the tie-break's is tried too.
@@ -410,7 +379,7 @@ struct Welder {
         const double half = distance(pc.segment.start, pc.segment.end) / 2;
         if (half < r && r - std::sqrt(r * r - half * half) < tol) {
           const Written line = write_piece(Segment<double>::line(pc.segment.start, pc.segment.end), from, pts,
-                                           pc.first, pc.last, stats.decimals, tol);
+                                           pc.first, pc.last, decimals, tol);
           if (line.deviation <= tol) {
             pl.written = line;
             pl.piece.segment = Segment<double>::line(pc.segment.start, pc.segment.end);
@@ -418,7 +387,7 @@ struct Welder {
           }
         }
       }
-      for (int d = stats.decimals; d <= stats.decimals + 2 && !ok; ++d) {
+      for (int d = decimals; d <= decimals + 2 && !ok; ++d) {
         pl.written = write_piece(pc.segment, from, pts, pc.first, pc.last, d, tol);
         ok = pl.written.deviation <= tol;
       }
@@ -450,6 +419,155 @@ struct Welder {
   }
 };
 
+
+// Writes the input lines and the plans, in file order; keeps the stats.
+struct Writer {
+  const io::GcodeFile& g;
+  const WeldOptions& opts;
+  WeldStats& stats;
+  Emitter emit;
+  // Where the machine is minus where the input says, after the moves written
+  // so far: nonzero only when --decimals rounds the input's own end points.
+  P offset{};
+
+  // Writes an input line as it is.
+  void pass(const io::GBlock& b) {
+    emit.verbatim(b);
+    if (!b.moves && b.unknown.empty() && word_text(b, 'X').empty() && word_text(b, 'Y').empty()) return;
+    if (b.moves) ++stats.output_moves;
+    if (!word_text(b, 'X').empty() && !b.relative) offset.x = 0;
+    if (!word_text(b, 'Y').empty() && !b.relative) offset.y = 0;
+    if (!b.unknown.empty()) offset = {};  // homing, offsets: the input's own coordinates again
+  }
+
+  // Writes pl as planned (from `offset`); false when its planning failed.
+  bool write(const io::GPolyline& pl, const PolylinePlan& plan) {
+    if (opts.progress)
+      for (const std::size_t line : plan.progress) opts.progress(line, g.blocks.size());
+    stats.kept_pieces += plan.kept_pieces;
+    if (!plan.ok) return false;
+    if (!plan.welded) {
+      for (std::size_t i = pl.first_block; i <= pl.last_block; ++i) pass(g.blocks[i]);
+      return true;
+    }
+    const double unit = pl.inches ? 25.4 : 1.0;
+    ++stats.polylines;
+    offset = plan.offset_out;
+    std::size_t next_block = pl.first_block;
+    for (std::size_t k = 0; k < plan.pieces.size(); ++k) {
+      const Planned& p = plan.pieces[k];
+      const Written& w = p.written;
+      const bool last_piece = k + 1 == plan.pieces.size();
+      const std::size_t end_block = last_piece ? pl.last_block : p.block;
+      if (p.keep) {
+        for (std::size_t i = next_block; i <= end_block; ++i) {
+          emit.verbatim(g.blocks[i]);
+          if (g.blocks[i].moves) ++stats.output_moves;
+        }  // its X/Y words are the input's: offset is zero after it (resolve)
+        next_block = end_block + 1;
+        continue;
+      }
+      stats.max_deviation_mm = std::max(stats.max_deviation_mm, w.deviation * unit);
+      const io::GBlock& eb = g.blocks[p.block];
+      std::string line;
+      if (const std::string_view n = word_text(eb, 'N'); !n.empty()) {
+        line = n;
+        line += ' ';
+      }
+      line += w.text;
+      if (k == 0)
+        if (const std::string_view f = word_text(g.blocks[pl.first_block], 'F'); !f.empty()) {
+          line += ' ';
+          line += f;
+        }
+      for (const std::string_view c : eb.comments) {
+        line += ' ';
+        line += c;
+      }
+      const bool arc = p.piece.segment.is_arc();
+      emit.written(line, arc, eb.end);
+      ++stats.output_moves;
+      if (arc) ++stats.arcs;
+      // The comments of the replaced lines stay, in order, after the piece.
+      for (std::size_t i = next_block; i <= end_block; ++i) {
+        const io::GBlock& b = g.blocks[i];
+        if (&b == &eb) continue;
+        if (b.only_comment()) {
+          emit.verbatim(b);
+        } else if (!b.comments.empty()) {
+          std::string c;
+          for (const std::string_view t : b.comments) {
+            if (!c.empty()) c += ' ';
+            c += t;
+          }
+          emit.written(c, arc, b.end);
+        }
+      }
+      next_block = end_block + 1;
+    }
+    return true;
+  }
+};
+
+bool same_offset(P a, P b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+// The plans of every polyline, made by `threads` workers that take the next
+// polyline in file order; the writer waits for each in turn. A plan assumes
+// the machine starts at its polyline's first point (offset zero, the rule
+// unless --decimals rounds the input): the writer plans it again, on its own
+// thread, when the offset is not.
+class PlanPool {
+ public:
+  PlanPool(const io::GcodeFile& g, const WeldOptions& opts, int decimals, unsigned threads)
+      : g_(g), opts_(opts), decimals_(decimals), plans_(g.polylines.size()), ready_(g.polylines.size(), 0) {
+    workers_.reserve(threads);
+    for (unsigned t = 0; t < threads; ++t) workers_.emplace_back([this] { work(); });
+  }
+  PlanPool(const PlanPool&) = delete;
+  PlanPool& operator=(const PlanPool&) = delete;
+  ~PlanPool() {
+    stop_ = true;  // the workers finish the polyline they plan, then take no other
+    for (std::thread& t : workers_) t.join();
+  }
+
+  // The plan of polyline i, once made; the caller owns it until the pool ends.
+  PolylinePlan& wait(std::size_t i) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    done_.wait(lock, [&] { return ready_[i] != 0; });
+    return plans_[i];
+  }
+
+ private:
+  void work() {
+    Planner planner{g_, opts_, decimals_, {}};
+    for (;;) {
+      const std::size_t i = next_.fetch_add(1);
+      if (i >= plans_.size() || stop_) return;
+      try {
+        planner.plan(g_.polylines[i], P{}, plans_[i]);
+      } catch (...) {
+        plans_[i].exception = std::current_exception();
+      }
+      {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        ready_[i] = 1;
+      }
+      done_.notify_one();  // only the writer waits
+    }
+  }
+
+  const io::GcodeFile& g_;
+  const WeldOptions& opts_;
+  const int decimals_;
+  std::vector<PolylinePlan> plans_;  // plans_[i]: written by the worker that took i, then read by the writer
+  std::vector<char> ready_;          // guarded by mutex_
+  std::mutex mutex_;
+  std::condition_variable done_;
+  std::atomic<std::size_t> next_{0};
+  std::atomic<bool> stop_{false};
+  std::vector<std::thread> workers_;  // last: started once the rest is built
+};
+
 }  // namespace
 
 // Each step of a tie-break is a whole search: at the fitters' own precision
@@ -458,6 +576,12 @@ struct Welder {
 // rounding more often when they hug the points, and 1e-3 keeps the corpus's
 // counts (tests/gcode WeldCounts); coarser (1e-2) wrote more moves.
 double tie_break_for(const std::string& criterion) { return criterion == "band" ? 0.1 : 1e-3; }
+
+unsigned weld_threads(int requested, std::size_t polylines) {
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  const unsigned n = requested <= 0 ? cores : std::min(cores, static_cast<unsigned>(requested));
+  return static_cast<unsigned>(std::min<std::size_t>(n, std::max<std::size_t>(polylines, 1)));
+}
 
 bool weld_gcode(const io::GcodeFile& g, const WeldOptions& opts, std::string& out,
                 WeldStats& stats, std::string& error) {
@@ -468,15 +592,29 @@ bool weld_gcode(const io::GcodeFile& g, const WeldOptions& opts, std::string& ou
   for (const io::GBlock& b : g.blocks) bytes += b.text.size() + b.end.size();
   out.reserve(bytes + bytes / 8);  // arcs shorten the text; a "G1 " added after one lengthens it
   io::prefault(out.data(), bytes);
-  Welder w{g, opts, stats, Emitter(out), {}};
+  Writer w{g, opts, stats, Emitter(out), {}};
+  Planner here{g, opts, stats.decimals, {}};  // the sequential path, and plans made again
+  const unsigned threads = weld_threads(opts.threads, g.polylines.size());
+  std::optional<PlanPool> pool;
+  if (threads > 1) pool.emplace(g, opts, stats.decimals, threads);
+  PolylinePlan plan;
   std::size_t next = 0;
   for (std::size_t p = 0; p < g.polylines.size(); ++p) {
     const io::GPolyline& pl = g.polylines[p];
     for (; next < pl.first_block; ++next) w.pass(g.blocks[next]);
-    if (!w.weld(pl)) {
-      error = g.file + ":" + std::to_string(g.blocks[pl.first_block].line) + ": " + w.error;
+    PolylinePlan* made = &plan;
+    if (pool) {
+      made = &pool->wait(p);
+      if (made->exception) std::rethrow_exception(made->exception);
+      if (!same_offset(made->offset_in, w.offset)) here.plan(pl, w.offset, *made);
+    } else {
+      here.plan(pl, w.offset, plan);
+    }
+    if (!w.write(pl, *made)) {
+      error = g.file + ":" + std::to_string(g.blocks[pl.first_block].line) + ": " + made->error;
       return false;
     }
+    *made = PolylinePlan{};  // written: its memory is free again
     next = pl.last_block + 1;
   }
   for (; next < g.blocks.size(); ++next) w.pass(g.blocks[next]);
