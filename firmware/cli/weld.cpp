@@ -200,32 +200,69 @@ struct Planned {
   fit::Piece<double> piece;
   bool keep = false;  // write its input lines
   Written written;
-  std::size_t block = 0;  // the input block of the piece's last point
 };
 
-// What welding one polyline writes, planned apart from the output: the
-// planning of polylines runs on several threads, the writing in file order.
-struct PolylinePlan {
+// A polyline made ready to plan: its distinct points, the run fitted (the
+// points without their jitter) and where that run is cut into parts.
+struct Run {
+  bool welded = false;  // false: its lines are passed through (G91, a single point)
+  double unit = 1, tol = 0, fit_tol = 0, moved = 0;
+  std::vector<P> pts;                   // distinct consecutive points
+  std::vector<std::size_t> from_index;  // each one's index in the polyline
+  std::vector<P> simple;                // pts without the jitter
+  std::vector<std::size_t> kept_index;  // each one's index in pts
+  std::vector<std::size_t> cuts;        // the parts: simple[cuts[j]..cuts[j + 1]]
+
+  std::size_t parts() const { return cuts.empty() ? 0 : cuts.size() - 1; }
+  P part_start(std::size_t j) const { return simple[cuts[j]]; }
+};
+
+// Fits separately at turns sharper than 90 degrees (opts.split_turns).
+void prepare(const io::GPolyline& pl, const WeldOptions& opts, int decimals, Run& r) {
+  r.unit = pl.inches ? 25.4 : 1.0;
+  r.tol = opts.tol_mm / r.unit;
+  for (std::size_t k = 0; k < pl.points.size(); ++k) {
+    if (!r.pts.empty() && r.pts.back() == pl.points[k]) continue;
+    r.pts.push_back(pl.points[k]);
+    r.from_index.push_back(k);
+  }
+  if (pl.relative || r.pts.size() < 2) return;  // G91 polylines are not welded (see README)
+  r.welded = true;
+  const double budget = 2 * std::pow(10.0, -decimals);
+  r.fit_tol = r.tol > 2 * budget ? r.tol - budget : r.tol / 2;
+  // The fit sees the run without its jitter (CAM output is full of 0.0003
+  // mm back-and-forths, each a cusp the fitters must stop at), at a tol
+  // less by how far the skipped points lie from their chords; every piece
+  // is then measured against all the input points (resolve).
+  r.simple = without_jitter(r.pts, r.tol * opts.jitter, r.kept_index, r.moved);
+  const std::vector<P>& simple = r.simple;
+  r.cuts.push_back(0);
+  for (std::size_t k = 1; k <= simple.size() - 1; ++k) {
+    const bool last = k == simple.size() - 1;
+    const bool turn =
+        !last && opts.split_turns && (simple[k] - simple[k - 1]).dot(simple[k + 1] - simple[k]) < 0;
+    if (last || turn) r.cuts.push_back(k);
+  }
+}
+
+// What planning one part gives: planned apart from the output, as the parts
+// are planned on several threads and written in file order.
+struct PartPlan {
   bool ok = true;
-  std::string error;          // when !ok
-  bool welded = false;        // false: its lines are passed through (G91, a single point)
-  P offset_in{};              // the offset (Writer::offset) it was planned from
-  P offset_out{};             // the offset after it
+  std::string error;  // when !ok
+  P from_in{};        // where the machine was at its start when it was planned
+  P from_out{};       // where the machine is after it
   std::vector<Planned> pieces;
-  std::size_t kept_pieces = 0;
-  std::vector<std::size_t> progress;  // the lines to report to opts.progress, in order
-  std::exception_ptr exception;       // thrown while planning on a worker thread
+  std::size_t kept = 0;          // pieces kept as their input lines (rounding)
+  std::exception_ptr exception;  // thrown while planning on a worker thread
 };
 
-// Plans polylines: reads g and opts only, so that planners on several
-// threads share nothing (fit_job's workspace is thread_local).
+// Plans parts: reads opts only, so that planners on several threads share
+// nothing (fit_job's workspace is thread_local).
 struct Planner {
-  const io::GcodeFile& g;
   const WeldOptions& opts;
   int decimals = 0;
   std::string error;
-  const io::GPolyline* current = nullptr;  // for progress
-  PolylinePlan* out = nullptr;
 
   // The trouble resolve met in the run being planned: pieces refitted or
   // kept as their input lines.
@@ -233,97 +270,51 @@ struct Planner {
   std::size_t kept = 0;
   bool closed_part = false;  // the part being planned ends where it starts
 
-  // Plans pl, starting where the machine is: its first point plus `offset`.
-  void plan(const io::GPolyline& pl, P offset, PolylinePlan& result) {
-    result = PolylinePlan{};
-    result.offset_in = offset;
-    out = &result;
-    current = &pl;
+  // Plans part j of r with the machine at `from` at its start. With the band
+  // criterion the part is fitted first without the fitters' tie-break (each
+  // of its steps is a whole search): the count is the same, only the pieces'
+  // place in the band differs. When a piece then fails the rounding check
+  // (refitted or kept, or a loop closed by a single segment), the part is
+  // planned again with weld's tie-break, whose pieces hug the input, and that
+  // plan is kept unless it has more moves: never more moves than the
+  // tie-break alone.
+  void plan(const Run& r, std::size_t j, P from, PartPlan& out) {
+    out = PartPlan{};
+    out.from_in = from;
     error.clear();
-    if (!weld(pl, offset)) {
-      result.ok = false;
-      result.error = error;
+    if (!plan_two_pass(r, j, from, out)) {
+      out.ok = false;
+      out.error = error;
     }
   }
 
-  bool weld(const io::GPolyline& pl, P offset) {
-    const double unit = pl.inches ? 25.4 : 1.0;
-    const double tol = opts.tol_mm / unit;
-    // Distinct consecutive points, each with the polyline index it came from.
-    std::vector<P> pts;
-    std::vector<std::size_t> from_index;
-    for (std::size_t k = 0; k < pl.points.size(); ++k) {
-      if (!pts.empty() && pts.back() == pl.points[k]) continue;
-      pts.push_back(pl.points[k]);
-      from_index.push_back(k);
-    }
-    if (pl.relative || pts.size() < 2) return true;  // G91 polylines are not welded (see README)
-    const int d0 = decimals;
-    const double budget = 2 * std::pow(10.0, -d0);
-    const double fit_tol = tol > 2 * budget ? tol - budget : tol / 2;
-    // The fit sees the run without its jitter (CAM output is full of 0.0003
-    // mm back-and-forths, each a cusp the fitters must stop at), at a tol
-    // less by how far the skipped points lie from their chords; every piece
-    // is then measured against all the input points (resolve).
-    std::vector<std::size_t> kept_index;
-    double moved = 0;
-    const std::vector<P> simple = without_jitter(pts, tol * opts.jitter, kept_index, moved);
-    std::vector<Planned>& plan = out->pieces;
-    P from = pts.front() + offset;
-    if (!plan_parts(simple, kept_index, pts, from_index, fit_tol, moved, tol, from, plan)) return false;
-    for (Planned& p : plan) p.block = pl.point_block[from_index[p.piece.last]];
-    out->welded = true;
-    out->offset_out = from - pts.back();
-    return true;
-  }
-
-  // Plans the jitter-free run `simple` part by part: it is fitted
-  // separately at turns sharper than 90 degrees. With the band criterion each
-  // part is fitted first without the fitters' tie-break (each of its steps is
-  // a whole search): the count is the same, only the pieces' place in the
-  // band differs. When a piece then fails the rounding check (refitted or
-  // kept, or a loop closed by a single segment), the part is planned
-  // again with weld's tie-break, whose pieces hug the input, and that plan is
-  // kept unless it has more moves: never more moves than the tie-break alone.
-  bool plan_parts(const std::vector<P>& simple, const std::vector<std::size_t>& kept_index,
-                  const std::vector<P>& pts, const std::vector<std::size_t>& from_index, double fit_tol,
-                  double moved, double tol, P& from, std::vector<Planned>& plan) {
+  bool plan_two_pass(const Run& r, std::size_t j, P from, PartPlan& out) {
     const double fine = opts.tie_break < 0 ? tie_break_for(opts.criterion) : opts.tie_break;
     // The vertex criterion's fast pieces leave the band often (refits): it
     // would plan most parts twice.
     const bool two_pass = opts.tie_break < 0 && fine < 1 && opts.criterion == "band";
-    std::vector<Planned> first, again;
-    std::size_t begin = 0;
-    for (std::size_t k = 1; k <= simple.size() - 1; ++k) {
-      const bool last = k == simple.size() - 1;
-      const bool turn =
-          !last && opts.split_turns && (simple[k] - simple[k - 1]).dot(simple[k + 1] - simple[k]) < 0;
-      if (!last && !turn) continue;
-      first.clear();
-      P first_from = from;
-      if (!plan_part(simple, begin, k, kept_index, pts, fit_tol, moved, tol, two_pass ? 1.0 : fine, first_from,
-                     first))
+    const std::size_t begin = r.cuts[j], k = r.cuts[j + 1];
+    std::vector<Planned>& first = out.pieces;
+    P first_from = from;
+    if (!plan_part(r.simple, begin, k, r.kept_index, r.pts, r.fit_tol, r.moved, r.tol, two_pass ? 1.0 : fine,
+                   first_from, first))
+      return false;
+    std::size_t first_kept = kept;
+    // Without trouble each piece is one move (a kept single segment with
+    // no repeated points between): no plan of the same count has fewer.
+    if (two_pass && (trouble > 0 || moves_of(first, r.from_index) > first.size())) {
+      std::vector<Planned> again;
+      P again_from = from;
+      if (!plan_part(r.simple, begin, k, r.kept_index, r.pts, r.fit_tol, r.moved, r.tol, fine, again_from, again))
         return false;
-      std::size_t first_kept = kept;
-      // Without trouble each piece is one move (a kept single segment with
-      // no repeated points between): no plan of the same count has fewer.
-      if (two_pass && (trouble > 0 || moves_of(first, from_index) > first.size())) {
-        again.clear();
-        P again_from = from;
-        if (!plan_part(simple, begin, k, kept_index, pts, fit_tol, moved, tol, fine, again_from, again))
-          return false;
-        if (moves_of(again, from_index) <= moves_of(first, from_index)) {
-          first.swap(again);
-          first_from = again_from;
-          first_kept = kept;
-        }
+      if (moves_of(again, r.from_index) <= moves_of(first, r.from_index)) {
+        first.swap(again);
+        first_from = again_from;
+        first_kept = kept;
       }
-      plan.insert(plan.end(), first.begin(), first.end());
-      from = first_from;
-      out->kept_pieces += first_kept;
-      begin = k;
-      if (opts.progress) out->progress.push_back(current->point_block[from_index[kept_index[k]]]);
     }
+    out.from_out = first_from;
+    out.kept = first_kept;
     return true;
   }
 
@@ -363,7 +354,7 @@ struct Planner {
   bool resolve(const std::vector<P>& pts, const std::vector<fit::Piece<double>>& pieces, double fit_tol,
                double tol, int depth, P& from, std::vector<Planned>& plan) {
     for (const fit::Piece<double>& pc : pieces) {
-      Planned pl{pc, false, {}, 0};
+      Planned pl{pc, false, {}};
       if (pc.last - pc.first < 2) {  // a single segment: its input line is already the best
         // Closing a loop beside other pieces: an unbalanced split (a full
         // circle drawn as one arc and a line); the tie-break's is tried too.
@@ -440,25 +431,17 @@ struct Writer {
     if (!b.unknown.empty()) offset = {};  // homing, offsets: the input's own coordinates again
   }
 
-  // Writes pl as planned (from `offset`); false when its planning failed.
-  bool write(const io::GPolyline& pl, const PolylinePlan& plan) {
-    if (opts.progress)
-      for (const std::size_t line : plan.progress) opts.progress(line, g.blocks.size());
-    stats.kept_pieces += plan.kept_pieces;
-    if (!plan.ok) return false;
-    if (!plan.welded) {
-      for (std::size_t i = pl.first_block; i <= pl.last_block; ++i) pass(g.blocks[i]);
-      return true;
-    }
-    const double unit = pl.inches ? 25.4 : 1.0;
+  // Writes pl, welded as `pieces` (planned from `offset`), ending at `end`.
+  void write(const io::GPolyline& pl, const Run& r, const std::vector<Planned>& pieces, P end) {
     ++stats.polylines;
-    offset = plan.offset_out;
+    offset = end - r.pts.back();
     std::size_t next_block = pl.first_block;
-    for (std::size_t k = 0; k < plan.pieces.size(); ++k) {
-      const Planned& p = plan.pieces[k];
+    for (std::size_t k = 0; k < pieces.size(); ++k) {
+      const Planned& p = pieces[k];
       const Written& w = p.written;
-      const bool last_piece = k + 1 == plan.pieces.size();
-      const std::size_t end_block = last_piece ? pl.last_block : p.block;
+      const std::size_t block = pl.point_block[r.from_index[p.piece.last]];
+      const bool last_piece = k + 1 == pieces.size();
+      const std::size_t end_block = last_piece ? pl.last_block : block;
       if (p.keep) {
         for (std::size_t i = next_block; i <= end_block; ++i) {
           emit.verbatim(g.blocks[i]);
@@ -467,8 +450,8 @@ struct Writer {
         next_block = end_block + 1;
         continue;
       }
-      stats.max_deviation_mm = std::max(stats.max_deviation_mm, w.deviation * unit);
-      const io::GBlock& eb = g.blocks[p.block];
+      stats.max_deviation_mm = std::max(stats.max_deviation_mm, w.deviation * r.unit);
+      const io::GBlock& eb = g.blocks[block];
       std::string line;
       if (const std::string_view n = word_text(eb, 'N'); !n.empty()) {
         line = n;
@@ -505,62 +488,94 @@ struct Writer {
       }
       next_block = end_block + 1;
     }
-    return true;
   }
 };
 
-bool same_offset(P a, P b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+bool same_point(P a, P b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
-// The plans of every polyline, made by `threads` workers that take the next
-// polyline in file order; the writer waits for each in turn. A plan assumes
-// the machine starts at its polyline's first point (offset zero, the rule
-// unless --decimals rounds the input): the writer plans it again, on its own
-// thread, when the offset is not.
+// Runs fn(i) for i in [0, n) on `threads` threads, each taking the next i.
+template <class Fn>
+void parallel_for(std::size_t n, unsigned threads, const Fn& fn) {
+  std::atomic<std::size_t> next{0};
+  auto work = [&] {
+    for (std::size_t i = next.fetch_add(1); i < n; i = next.fetch_add(1)) fn(i);
+  };
+  std::vector<std::thread> pool;
+  for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work);
+  work();
+  for (std::thread& t : pool) t.join();
+}
+
+// Every polyline prepared (on all the threads), then the plans of every part
+// of every polyline, made by `threads` workers that take the next part in
+// file order; the writer waits for each in turn. A part's plan assumes the
+// machine starts at the part's first input point (the rule, unless
+// --decimals rounds the input): the writer plans it again, on its own
+// thread, when the machine is elsewhere.
 class PlanPool {
  public:
   PlanPool(const io::GcodeFile& g, const WeldOptions& opts, int decimals, unsigned threads)
-      : g_(g), opts_(opts), decimals_(decimals), plans_(g.polylines.size()), ready_(g.polylines.size(), 0) {
+      : opts_(opts), decimals_(decimals), runs_(g.polylines.size()) {
+    parallel_for(runs_.size(), threads, [&](std::size_t p) { prepare(g.polylines[p], opts, decimals, runs_[p]); });
+    first_task_.reserve(runs_.size());
+    for (std::size_t p = 0; p < runs_.size(); ++p) {
+      first_task_.push_back(tasks_.size());
+      for (std::size_t j = 0; j < runs_[p].parts(); ++j) tasks_.push_back({p, j});
+    }
+    plans_.resize(tasks_.size());
+    ready_.assign(tasks_.size(), 0);
     workers_.reserve(threads);
     for (unsigned t = 0; t < threads; ++t) workers_.emplace_back([this] { work(); });
   }
   PlanPool(const PlanPool&) = delete;
   PlanPool& operator=(const PlanPool&) = delete;
   ~PlanPool() {
-    stop_ = true;  // the workers finish the polyline they plan, then take no other
+    stop_ = true;  // the workers finish the part they plan, then take no other
     for (std::thread& t : workers_) t.join();
   }
 
-  // The plan of polyline i, once made; the caller owns it until the pool ends.
-  PolylinePlan& wait(std::size_t i) {
+  // Polyline p, prepared; the caller may free it once its parts are taken.
+  Run& run(std::size_t p) { return runs_[p]; }
+
+  // The plan of part j of polyline p, once made; the caller owns it from then.
+  PartPlan& wait(std::size_t p, std::size_t j) {
+    const std::size_t t = first_task_[p] + j;
     std::unique_lock<std::mutex> lock(mutex_);
-    done_.wait(lock, [&] { return ready_[i] != 0; });
-    return plans_[i];
+    done_.wait(lock, [&] { return ready_[t] != 0; });
+    return plans_[t];
   }
 
  private:
+  struct Task {
+    std::size_t polyline, part;
+  };
+
   void work() {
-    Planner planner{g_, opts_, decimals_, {}};
+    Planner planner{opts_, decimals_, {}};
     for (;;) {
-      const std::size_t i = next_.fetch_add(1);
-      if (i >= plans_.size() || stop_) return;
+      const std::size_t t = next_.fetch_add(1);
+      if (t >= tasks_.size() || stop_) return;
+      const Run& r = runs_[tasks_[t].polyline];
       try {
-        planner.plan(g_.polylines[i], P{}, plans_[i]);
+        planner.plan(r, tasks_[t].part, r.part_start(tasks_[t].part), plans_[t]);
       } catch (...) {
-        plans_[i].exception = std::current_exception();
+        plans_[t].exception = std::current_exception();
       }
       {
         const std::lock_guard<std::mutex> lock(mutex_);
-        ready_[i] = 1;
+        ready_[t] = 1;
       }
       done_.notify_one();  // only the writer waits
     }
   }
 
-  const io::GcodeFile& g_;
   const WeldOptions& opts_;
   const int decimals_;
-  std::vector<PolylinePlan> plans_;  // plans_[i]: written by the worker that took i, then read by the writer
-  std::vector<char> ready_;          // guarded by mutex_
+  std::vector<Run> runs_;  // built before the workers start; runs_[p] freed by the writer after its parts
+  std::vector<std::size_t> first_task_;
+  std::vector<Task> tasks_;
+  std::vector<PartPlan> plans_;  // plans_[t]: written by the worker that took t, then the writer's
+  std::vector<char> ready_;      // guarded by mutex_
   std::mutex mutex_;
   std::condition_variable done_;
   std::atomic<std::size_t> next_{0};
@@ -577,10 +592,9 @@ class PlanPool {
 // counts (tests/gcode WeldCounts); coarser (1e-2) wrote more moves.
 double tie_break_for(const std::string& criterion) { return criterion == "band" ? 0.1 : 1e-3; }
 
-unsigned weld_threads(int requested, std::size_t polylines) {
+unsigned weld_threads(int requested) {
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-  const unsigned n = requested <= 0 ? cores : std::min(cores, static_cast<unsigned>(requested));
-  return static_cast<unsigned>(std::min<std::size_t>(n, std::max<std::size_t>(polylines, 1)));
+  return requested <= 0 ? cores : std::min(cores, static_cast<unsigned>(requested));
 }
 
 bool weld_gcode(const io::GcodeFile& g, const WeldOptions& opts, std::string& out,
@@ -593,29 +607,51 @@ bool weld_gcode(const io::GcodeFile& g, const WeldOptions& opts, std::string& ou
   out.reserve(bytes + bytes / 8);  // arcs shorten the text; a "G1 " added after one lengthens it
   io::prefault(out.data(), bytes);
   Writer w{g, opts, stats, Emitter(out), {}};
-  Planner here{g, opts, stats.decimals, {}};  // the sequential path, and plans made again
-  const unsigned threads = weld_threads(opts.threads, g.polylines.size());
+  Planner here{opts, stats.decimals, {}};  // the sequential path, and the parts planned again
+  const unsigned threads = g.polylines.empty() ? 1 : weld_threads(opts.threads);
   std::optional<PlanPool> pool;
   if (threads > 1) pool.emplace(g, opts, stats.decimals, threads);
-  PolylinePlan plan;
+  Run local;
+  PartPlan part;
+  std::vector<Planned> pieces;
   std::size_t next = 0;
   for (std::size_t p = 0; p < g.polylines.size(); ++p) {
     const io::GPolyline& pl = g.polylines[p];
     for (; next < pl.first_block; ++next) w.pass(g.blocks[next]);
-    PolylinePlan* made = &plan;
-    if (pool) {
-      made = &pool->wait(p);
-      if (made->exception) std::rethrow_exception(made->exception);
-      if (!same_offset(made->offset_in, w.offset)) here.plan(pl, w.offset, *made);
-    } else {
-      here.plan(pl, w.offset, plan);
-    }
-    if (!w.write(pl, *made)) {
-      error = g.file + ":" + std::to_string(g.blocks[pl.first_block].line) + ": " + made->error;
-      return false;
-    }
-    *made = PolylinePlan{};  // written: its memory is free again
     next = pl.last_block + 1;
+    Run& r = pool ? pool->run(p) : local;
+    if (!pool) {
+      r = Run{};
+      prepare(pl, opts, stats.decimals, r);
+    }
+    if (!r.welded) {
+      for (std::size_t i = pl.first_block; i <= pl.last_block; ++i) w.pass(g.blocks[i]);
+      continue;
+    }
+    P from = r.pts.front() + w.offset;
+    pieces.clear();
+    for (std::size_t j = 0; j < r.parts(); ++j) {
+      PartPlan* made = &part;
+      if (pool) {
+        made = &pool->wait(p, j);
+        if (made->exception) std::rethrow_exception(made->exception);
+        if (!same_point(made->from_in, from)) here.plan(r, j, from, *made);
+      } else {
+        here.plan(r, j, from, part);
+      }
+      if (!made->ok) {
+        error = g.file + ":" + std::to_string(g.blocks[pl.first_block].line) + ": " + made->error;
+        return false;
+      }
+      stats.kept_pieces += made->kept;
+      if (opts.progress)
+        opts.progress(pl.point_block[r.from_index[r.kept_index[r.cuts[j + 1]]]], g.blocks.size());
+      pieces.insert(pieces.end(), made->pieces.begin(), made->pieces.end());
+      from = made->from_out;
+      *made = PartPlan{};  // taken: its memory is free again
+    }
+    w.write(pl, r, pieces, from);
+    r = Run{};
   }
   for (; next < g.blocks.size(); ++next) w.pass(g.blocks[next]);
   for (const io::GBlock& b : g.blocks) stats.input_moves += b.moves ? 1 : 0;

@@ -225,7 +225,7 @@ bool threads_figure(const kerf::io::GcodeFile& g, kerf::cli::WeldOptions o, int 
   const double lines = static_cast<double>(g.blocks.size());
   for (int k = 0; k < 2; ++k)
     std::printf("  threads=%d (%u used): %.1f ms, %.0f lines/s\n", k + 1,
-                kerf::cli::weld_threads(k + 1, g.polylines.size()), 1e3 * best[k], lines / best[k]);
+                kerf::cli::weld_threads(k + 1), 1e3 * best[k], lines / best[k]);
   std::printf("  threads=2 / threads=1: %.2fx lines/s; same output: %s\n", best[0] / best[1],
               out[0] == out[1] ? "yes" : "NO");
   return out[0] == out[1];
