@@ -2,13 +2,11 @@
 
 #include <algorithm>
 #include <atomic>
-#include <condition_variable>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <exception>
-#include <mutex>
 #include <optional>
 #include <thread>
 #include <vector>
@@ -506,26 +504,34 @@ void parallel_for(std::size_t n, unsigned threads, const Fn& fn) {
   for (std::thread& t : pool) t.join();
 }
 
-// Every polyline prepared (on all the threads), then the plans of every part
-// of every polyline, made by `threads` workers that take the next part in
-// file order; the writer waits for each in turn. A part's plan assumes the
-// machine starts at the part's first input point (the rule, unless
-// --decimals rounds the input): the writer plans it again, on its own
-// thread, when the machine is elsewhere.
+// Every polyline prepared (on all the threads), then the plans of the
+// parts of at least kPooledPoints points, made by `threads` workers that take
+// the next part in file order; the writer waits for each in turn and plans
+// the small parts itself (a hand-over costs more than their fit: octocat's
+// 24k single-line polylines took 9 times longer through the pool). A pooled
+// part's plan assumes the machine starts at the part's first input point
+// (the rule, unless --decimals rounds the input): the writer plans it
+// again, on its own thread, when the machine is elsewhere.
 class PlanPool {
  public:
+  static constexpr std::size_t kPooledPoints = 32;
+
   PlanPool(const io::GcodeFile& g, const WeldOptions& opts, int decimals, unsigned threads)
       : opts_(opts), decimals_(decimals), runs_(g.polylines.size()) {
     parallel_for(runs_.size(), threads, [&](std::size_t p) { prepare(g.polylines[p], opts, decimals, runs_[p]); });
-    first_task_.reserve(runs_.size());
+    first_part_.reserve(runs_.size());
     for (std::size_t p = 0; p < runs_.size(); ++p) {
-      first_task_.push_back(tasks_.size());
-      for (std::size_t j = 0; j < runs_[p].parts(); ++j) tasks_.push_back({p, j});
+      first_part_.push_back(task_of_.size());
+      for (std::size_t j = 0; j < runs_[p].parts(); ++j) {
+        const bool pooled = runs_[p].cuts[j + 1] - runs_[p].cuts[j] + 1 >= kPooledPoints;
+        task_of_.push_back(pooled ? tasks_.size() : kNone);
+        if (pooled) tasks_.push_back({p, j});
+      }
     }
     plans_.resize(tasks_.size());
-    ready_.assign(tasks_.size(), 0);
+    ready_ = std::vector<std::atomic<bool>>(tasks_.size());
     workers_.reserve(threads);
-    for (unsigned t = 0; t < threads; ++t) workers_.emplace_back([this] { work(); });
+    for (unsigned t = 0; t < threads && !tasks_.empty(); ++t) workers_.emplace_back([this] { work(); });
   }
   PlanPool(const PlanPool&) = delete;
   PlanPool& operator=(const PlanPool&) = delete;
@@ -537,15 +543,17 @@ class PlanPool {
   // Polyline p, prepared; the caller may free it once its parts are taken.
   Run& run(std::size_t p) { return runs_[p]; }
 
-  // The plan of part j of polyline p, once made; the caller owns it from then.
-  PartPlan& wait(std::size_t p, std::size_t j) {
-    const std::size_t t = first_task_[p] + j;
-    std::unique_lock<std::mutex> lock(mutex_);
-    done_.wait(lock, [&] { return ready_[t] != 0; });
-    return plans_[t];
+  // The plan of part j of polyline p, once made, and the caller's from then;
+  // null when the part is the caller's to plan.
+  PartPlan* wait(std::size_t p, std::size_t j) {
+    const std::size_t t = task_of_[first_part_[p] + j];
+    if (t == kNone) return nullptr;
+    ready_[t].wait(false, std::memory_order_acquire);
+    return &plans_[t];
   }
 
  private:
+  static constexpr std::size_t kNone = ~std::size_t{0};
   struct Task {
     std::size_t polyline, part;
   };
@@ -561,23 +569,19 @@ class PlanPool {
       } catch (...) {
         plans_[t].exception = std::current_exception();
       }
-      {
-        const std::lock_guard<std::mutex> lock(mutex_);
-        ready_[t] = 1;
-      }
-      done_.notify_one();  // only the writer waits
+      ready_[t].store(true, std::memory_order_release);  // publishes plans_[t]
+      ready_[t].notify_one();                            // only the writer waits
     }
   }
 
   const WeldOptions& opts_;
   const int decimals_;
   std::vector<Run> runs_;  // built before the workers start; runs_[p] freed by the writer after its parts
-  std::vector<std::size_t> first_task_;
+  std::vector<std::size_t> first_part_;  // polyline p's first part in task_of_
+  std::vector<std::size_t> task_of_;     // each part's task, or kNone
   std::vector<Task> tasks_;
   std::vector<PartPlan> plans_;  // plans_[t]: written by the worker that took t, then the writer's
-  std::vector<char> ready_;      // guarded by mutex_
-  std::mutex mutex_;
-  std::condition_variable done_;
+  std::vector<std::atomic<bool>> ready_;
   std::atomic<std::size_t> next_{0};
   std::atomic<bool> stop_{false};
   std::vector<std::thread> workers_;  // last: started once the rest is built
@@ -631,12 +635,12 @@ bool weld_gcode(const io::GcodeFile& g, const WeldOptions& opts, std::string& ou
     P from = r.pts.front() + w.offset;
     pieces.clear();
     for (std::size_t j = 0; j < r.parts(); ++j) {
-      PartPlan* made = &part;
-      if (pool) {
-        made = &pool->wait(p, j);
+      PartPlan* made = pool ? pool->wait(p, j) : nullptr;
+      if (made) {
         if (made->exception) std::rethrow_exception(made->exception);
         if (!same_point(made->from_in, from)) here.plan(r, j, from, *made);
       } else {
+        made = &part;
         here.plan(r, j, from, part);
       }
       if (!made->ok) {

@@ -97,17 +97,18 @@ TEST(WeldThreads, CoarseDecimalsAreTheSame) {
   }
 }
 
-// A spiral of G1 lines, a new polyline at each F word (every 25 lines); with
+// A spiral of G1 lines, a new polyline at each F word (every 50 lines: parts
+// large enough for the pool, PlanPool::kPooledPoints); with
 // one decimal each polyline's last arc ends off its input point, so the next
 // one starts from there (its I/J differ from a plan made from its own point).
 TEST(WeldThreads, PlansFromWhereTheMachineIs) {
   std::string text = "G21 G90\nG0 X10 Y0\nM03\n";
-  for (int k = 1; k <= 1000; ++k) {
-    const double t = k * 0.05, r = 10 + 0.3 * t;
+  for (int k = 1; k <= 2000; ++k) {
+    const double t = k * 0.025, r = 10 + 0.3 * t;
     char buf[96];
     std::snprintf(buf, sizeof buf, "G1 X%.3f Y%.3f", r * std::cos(t), r * std::sin(t));
     text += buf;
-    if (k % 25 == 0) text += k % 50 == 0 ? " F100" : " F200";
+    if (k % 50 == 0) text += k % 100 == 0 ? " F100" : " F200";
     text += '\n';
   }
   text += "M05\n";
@@ -117,6 +118,7 @@ TEST(WeldThreads, PlansFromWhereTheMachineIs) {
   WeldOptions o;
   o.tol_mm = 0.5;
   o.decimals = 1;
+  o.jitter = 0;  // all 50 points fitted: each polyline goes through the pool
   const Welded one = weld(g, o, 1);
   ASSERT_TRUE(one.ok) << one.error;
   EXPECT_GE(one.stats.arcs, 40u);  // at least one per polyline: each ends off its point
