@@ -18,11 +18,12 @@
 // figure the README gives; median and best of the runs. It runs with
 // --threads 1: the CPU time of the sequential weld.
 //
-// Then "threads": the largest file welded in this process with threads = 1
-// and threads = 2 (WeldOptions::threads), alternately, --repeat runs each
-// (at least 5): the fastest wall time of each (the pool's point is wall
-// time; CPU time adds the threads up), its lines/s, their ratio, and whether
-// the two outputs are the same bytes. The reader is not timed.
+// Then "threads" (unless --no-threads): each file welded in this process
+// with threads = 1 and threads = 2 (WeldOptions::threads), alternately,
+// --repeat runs each (at least 5): the fastest wall time of each (the pool's
+// point is wall time; CPU time adds the threads up), its lines/s, their
+// ratio, and whether the two outputs are the same bytes (exit 1 if not).
+// The reader is not timed.
 //
 // usage: kerf_bench_weld [--criterion band|vertex|both] [--tol MM] [--no-split] [--jitter F]
 //                        [--tie-break R] [--no-greedy] [--repeat N] [--dump DIR]
@@ -201,11 +202,9 @@ bool whole_process(const std::string& kerf, const std::string& path, std::size_t
   return true;
 }
 
-// The "threads" figure (see the top of this file); false when a weld failed.
+// One line of the "threads" figures (see the top of this file); false when
+// a weld failed or the two outputs differ.
 bool threads_figure(const kerf::io::GcodeFile& g, kerf::cli::WeldOptions o, int repeat) {
-  const std::string name = g.file.substr(g.file.find_last_of('/') + 1);
-  std::printf("\nthreads: weld of %s (%zu lines), criterion %s, wall time, fastest of %d runs each\n",
-              name.c_str(), g.blocks.size(), o.criterion.c_str(), std::max(repeat, 5));
   double best[2] = {1e300, 1e300};
   std::string out[2];
   for (int r = 0; r < std::max(repeat, 5); ++r) {
@@ -223,10 +222,9 @@ bool threads_figure(const kerf::io::GcodeFile& g, kerf::cli::WeldOptions o, int 
     }
   }
   const double lines = static_cast<double>(g.blocks.size());
-  for (int k = 0; k < 2; ++k)
-    std::printf("  threads=%d (%u used): %.1f ms, %.0f lines/s\n", k + 1,
-                kerf::cli::weld_threads(k + 1), 1e3 * best[k], lines / best[k]);
-  std::printf("  threads=2 / threads=1: %.2fx lines/s; same output: %s\n", best[0] / best[1],
+  const std::string name = g.file.substr(g.file.find_last_of('/') + 1);
+  std::printf("%-46s %-7s %8.1f %12.0f %8.1f %12.0f %6.2fx %5s\n", name.c_str(), o.criterion.c_str(),
+              1e3 * best[0], lines / best[0], 1e3 * best[1], lines / best[1], best[0] / best[1],
               out[0] == out[1] ? "yes" : "NO");
   return out[0] == out[1];
 }
@@ -339,19 +337,25 @@ int main(int argc, char** argv) {
   if (!kerf.empty() && !largest.empty() &&
       !whole_process(kerf, largest, largest_lines, tol, criteria.front(), repeat))
     return 1;
-  if (with_threads && !largest.empty()) {
-    std::ifstream in(largest, std::ios::binary);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    const kerf::io::GcodeFile g = kerf::io::parse_gcode(ss.str(), largest);
-    for (const std::string& c : criteria) {
-      kerf::cli::WeldOptions o;
-      o.tol_mm = tol;
-      o.criterion = c;
-      o.split_turns = split;
-      o.jitter = jitter;
-      o.tie_break = tie_break;
-      if (!g.ok || !threads_figure(g, o, repeat)) return 1;
+  if (with_threads) {
+    std::printf("\nthreads: weld wall time, fastest of %d runs each, threads=1 and threads=2 (%u cores)\n",
+                std::max(repeat, 5), kerf::cli::weld_threads(0));
+    std::printf("%-46s %-7s %8s %12s %8s %12s %7s %5s\n", "file", "crit", "1: ms", "1: lines/s", "2: ms",
+                "2: lines/s", "2 / 1", "same");
+    for (const std::string& path : files) {
+      std::ifstream in(path, std::ios::binary);
+      std::stringstream ss;
+      ss << in.rdbuf();
+      const kerf::io::GcodeFile g = kerf::io::parse_gcode(ss.str(), path);
+      for (const std::string& c : criteria) {
+        kerf::cli::WeldOptions o;
+        o.tol_mm = tol;
+        o.criterion = c;
+        o.split_turns = split;
+        o.jitter = jitter;
+        o.tie_break = tie_break;
+        if (!g.ok || !threads_figure(g, o, repeat)) return 1;
+      }
     }
   }
   return 0;
