@@ -161,13 +161,16 @@ void parallel_for(std::size_t n, unsigned threads, const Fn& fn) {
 }
 
 // Every polyline prepared (on all the threads), then the plans of the
-// parts of at least kPooledPoints points, made by `threads` workers that take
-// the next part in file order; the writer waits for each in turn and plans
-// the small parts itself (a hand-over costs more than their fit: octocat's
-// 24k single-line polylines took 9 times longer through the pool). A pooled
-// part's plan assumes the machine starts at the part's first input point
-// (the rule, unless --decimals rounds the input): the writer plans it
-// again, on its own thread, when the machine is elsewhere.
+// parts of at least kPooledPoints points, made by `threads - 1` workers and
+// the writer, each taking the next part in file order: the writer takes one
+// while the part it is to write next is not ready (it sleeps only when
+// every part is taken), so that no more threads run than there are cores.
+// It plans the small parts itself, when it writes them (a hand-over costs
+// more than their fit: octocat's 24k single-line polylines took 9 times
+// longer through the pool). A pooled part's plan assumes the machine
+// starts at the part's first input point (the rule, unless --decimals
+// rounds the input): the writer plans it again when the machine is
+// elsewhere.
 class PlanPool {
  public:
   static constexpr std::size_t kPooledPoints = 32;
@@ -187,7 +190,11 @@ class PlanPool {
     plans_.resize(tasks_.size());
     ready_ = std::vector<std::atomic<bool>>(tasks_.size());
     workers_.reserve(threads);
-    for (unsigned t = 0; t < threads && !tasks_.empty(); ++t) workers_.emplace_back([this] { work(); });
+    for (unsigned t = 1; t < threads && !tasks_.empty(); ++t)  // and the writer
+      workers_.emplace_back([this] {
+        while (!stop_ && take()) {
+        }
+      });
   }
   PlanPool(const PlanPool&) = delete;
   PlanPool& operator=(const PlanPool&) = delete;
@@ -196,15 +203,17 @@ class PlanPool {
     for (std::thread& t : workers_) t.join();
   }
 
-  // Polyline p, prepared; the caller may free it once its parts are taken.
+  // Polyline p, prepared; the caller may free it once its parts are ready.
   Run& run(std::size_t p) { return runs_[p]; }
 
-  // The plan of part j of polyline p, once made, and the caller's from then;
-  // null when the part is the caller's to plan.
+  // The plan of part j of polyline p, once made (the caller plans other
+  // parts meanwhile), and the caller's from then; null when the part is the
+  // caller's to plan.
   PartPlan* wait(std::size_t p, std::size_t j) {
     const std::size_t t = task_of_[first_part_[p] + j];
     if (t == kNone) return nullptr;
-    ready_[t].wait(false, std::memory_order_acquire);
+    while (!ready_[t].load(std::memory_order_acquire))
+      if (!take()) ready_[t].wait(false, std::memory_order_acquire);  // the part is being planned
     return &plans_[t];
   }
 
@@ -214,20 +223,21 @@ class PlanPool {
     std::size_t polyline, part;
   };
 
-  void work() {
-    for (;;) {
-      const std::size_t t = next_.fetch_add(1);
-      if (t >= tasks_.size() || stop_) return;
-      const Run& r = runs_[tasks_[t].polyline];
-      try {
-        weld_detail::plan_part(r, tasks_[t].part, r.part_start(tasks_[t].part), opts_, decimals_, plans_[t]);
-      } catch (...) {
-        plans_[t].exception = std::current_exception();
-      }
-      ready_[t].store(true, std::memory_order_release);  // publishes plans_[t]
-      ready_[t].notify_one();                            // only the writer waits
+  // Plans the next part no thread has taken; false when there is none.
+  bool take() {
+    const std::size_t t = next_.fetch_add(1);
+    if (t >= tasks_.size()) return false;
+    const Run& r = runs_[tasks_[t].polyline];
+    try {
+      weld_detail::plan_part(r, tasks_[t].part, r.part_start(tasks_[t].part), opts_, decimals_, plans_[t]);
+    } catch (...) {
+      plans_[t].exception = std::current_exception();
     }
+    ready_[t].store(true, std::memory_order_release);  // publishes plans_[t]
+    ready_[t].notify_one();                            // only the writer waits
+    return true;
   }
+
 
   const WeldOptions& opts_;
   const int decimals_;
