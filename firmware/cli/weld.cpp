@@ -177,7 +177,8 @@ class PlanPool {
 
   PlanPool(const io::GcodeFile& g, const WeldOptions& opts, int decimals, unsigned threads)
       : opts_(opts), decimals_(decimals), runs_(g.polylines.size()) {
-    parallel_for(runs_.size(), threads, [&](std::size_t p) { weld_detail::prepare(g.polylines[p], opts, decimals, runs_[p]); });
+    parallel_for(runs_.size(), threads,
+                 [&](std::size_t p) { weld_detail::prepare(g.polylines[p], opts, decimals, runs_[p]); });
     first_part_.reserve(runs_.size());
     for (std::size_t p = 0; p < runs_.size(); ++p) {
       first_part_.push_back(task_of_.size());
@@ -237,7 +238,6 @@ class PlanPool {
     ready_[t].notify_one();                            // only the writer waits
     return true;
   }
-
 
   const WeldOptions& opts_;
   const int decimals_;

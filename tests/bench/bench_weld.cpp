@@ -183,7 +183,8 @@ bool whole_process(const std::string& kerf, const std::string& path, std::size_t
   std::snprintf(tol_text, sizeof tol_text, "%.10g", tol);
   std::vector<double> runs;
   for (int r = 0; r < std::max(repeat, 5); ++r) {
-    const double s = child_cpu_seconds({kerf, "weld", "--threads", "1", "--tol", tol_text, "--criterion", criterion, path, out});
+    const double s =
+        child_cpu_seconds({kerf, "weld", "--threads", "1", "--tol", tol_text, "--criterion", criterion, path, out});
     if (s < 0) {
       std::fprintf(stderr, "kerf_bench_weld: %s weld failed on %s\n", kerf.c_str(), path.c_str());
       std::filesystem::remove(out);
