@@ -1,117 +1,25 @@
 #include "cli/weld.hpp"
 
 #include <algorithm>
-#include <cmath>
-#include <cstdio>
-#include <cstdlib>
+#include <atomic>
+#include <cstring>
+#include <exception>
+#include <optional>
+#include <thread>
 #include <vector>
 
-#include "cli/fit_job.hpp"
+#include "cli/weld_plan.hpp"
 #include "io/prefault.hpp"
-#include "kerf/geom/segment.hpp"
 
 namespace kerf::cli {
 
 namespace {
 
-using P = Vec2<double>;
-
-std::string format_number(double v, int decimals) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  std::string s = buf;
-  if (s.find('.') != std::string::npos) {
-    while (s.back() == '0') s.pop_back();
-    if (s.back() == '.') s.pop_back();
-  }
-  if (s == "-0") s = "0";
-  return s;
-}
-
-double rounded(double v, int decimals) { return std::strtod(format_number(v, decimals).c_str(), nullptr); }
-
-// max(dev, distance from q to the polyline pts[a..b] + widen), exactly. The
-// scan starts at segment `near` (the last sample's nearest: the samples walk
-// along the polyline) and goes outwards; it stops once q is within dev, where
-// the rest of the minimum cannot change the maximum. `near` receives q's
-// nearest segment when the scan went through.
-double raise_to_polyline(const std::vector<P>& pts, std::size_t a, std::size_t b, P q, double widen,
-                         double dev, std::size_t& near) {
-  double best = distance(pts[a], q);
-  if (best + widen <= dev) return dev;
-  const std::size_t from = std::clamp(near, a, b - 1);
-  auto within = [&](std::size_t k) {  // true once q is known to be within dev
-    const double d = distance_to_line_segment(pts[k], pts[k + 1], q);
-    if (d < best) {
-      best = d;
-      near = k;
-    }
-    return best + widen <= dev;
-  };
-  for (std::size_t step = 0;; ++step) {
-    const bool up = from + step < b;
-    const bool down = step > 0 && from >= a + step;
-    if (!up && !down) break;
-    if ((up && within(from + step)) || (down && within(from - step))) return dev;
-  }
-  return std::max(dev, best + widen);
-}
-
-// A piece as written: its rounded end and centre, the text after the G word.
-struct Written {
-  std::string text;
-  P end{};
-  double deviation = 0;
-};
-
-// Writes piece `s` from the rounded start `from` with `decimals`, and
-// measures it against pts[a..b] (see weld.hpp).
-Written write_piece(const Segment<double>& s, P from, const std::vector<P>& pts, std::size_t a,
-                    std::size_t b, int decimals, double tol) {
-  Written w;
-  w.end = {rounded(s.end.x, decimals), rounded(s.end.y, decimals)};
-  const bool arc = s.is_arc();
-  P c{};
-  if (arc) {
-    const P off{rounded(s.centre.x - from.x, decimals), rounded(s.centre.y - from.y, decimals)};
-    c = from + off;
-    w.text = (s.dir < 0 ? "G2 X" : "G3 X") + format_number(w.end.x, decimals) + " Y" +
-             format_number(w.end.y, decimals) + " I" + format_number(off.x, decimals) + " J" +
-             format_number(off.y, decimals);
-  } else {
-    w.text = "G1 X" + format_number(w.end.x, decimals) + " Y" + format_number(w.end.y, decimals);
-  }
-  const Segment<double> drawn = arc ? Segment<double>::arc(from, w.end, c, s.dir) : Segment<double>::line(from, w.end);
-  const double widen = arc ? std::fabs((from - c).norm() - (w.end - c).norm()) : 0.0;
-  double dev = std::max(distance(w.end, pts[b]), distance(from, pts[a]));
-  for (std::size_t k = a + 1; k < b; ++k) dev = std::max(dev, distance_to_segment(drawn, pts[k]) + widen);
-  // Samples of the drawn piece against the polyline: the band side.
-  double sweep = 0, r = 0, a0 = 0;
-  double length = distance(from, w.end);
-  if (arc) {
-    r = (from - c).norm();
-    a0 = std::atan2(from.y - c.y, from.x - c.x);
-    const double a1 = std::atan2(w.end.y - c.y, w.end.x - c.x);
-    sweep = s.dir > 0 ? a1 - a0 : a0 - a1;
-    if (sweep <= 0) sweep += 2 * 3.14159265358979323846;
-    length = r * sweep;
-  }
-  const std::size_t n = std::clamp<std::size_t>(static_cast<std::size_t>(std::ceil(4 * length / tol)), 8, 512);
-  std::size_t near = a;
-  for (std::size_t k = 1; k < n; ++k) {
-    const double t = static_cast<double>(k) / static_cast<double>(n);
-    P q;
-    if (arc) {
-      const double ang = a0 + (s.dir > 0 ? 1 : -1) * sweep * t;
-      q = {c.x + r * std::cos(ang), c.y + r * std::sin(ang)};
-    } else {
-      q = from + (w.end - from) * t;
-    }
-    dev = raise_to_polyline(pts, a, b, q, widen, dev, near);
-  }
-  w.deviation = dev;
-  return w;
-}
+using weld_detail::P;
+using weld_detail::PartPlan;
+using weld_detail::Planned;
+using weld_detail::Run;
+using weld_detail::Written;
 
 // Inserts "G1 " after a leading N word (or at the start): a line that relied
 // on the modal G1 which a written arc has replaced.
@@ -157,48 +65,15 @@ class Emitter {
   bool arc_modal_ = false;  // the last move written was a G2/G3 that replaced G1 lines
 };
 
-// pts without its jitter: a point that lies, with the points skipped before
-// it (at most 32 in a row), within `e` of the chord from the last kept point
-// to the next point.
-// kept_index maps each kept point to its index in pts; `moved` is the largest
-// distance of a skipped point from its chord.
-std::vector<P> without_jitter(const std::vector<P>& pts, double e, std::vector<std::size_t>& kept_index,
-                              double& moved) {
-  kept_index.clear();
-  kept_index.push_back(0);
-  moved = 0;
-  std::size_t a = 0;
-  for (std::size_t k = 1; k + 1 < pts.size(); ++k) {
-    bool drop = e > 0 && k - a <= 32;
-    double worst = 0;
-    for (std::size_t m = a + 1; m <= k && drop; ++m) {
-      worst = std::max(worst, distance_to_line_segment(pts[a], pts[k + 1], pts[m]));
-      drop = worst <= e;
-    }
-    if (drop) {
-      moved = std::max(moved, worst);
-      continue;
-    }
-    kept_index.push_back(k);
-    a = k;
-  }
-  kept_index.push_back(pts.size() - 1);
-  std::vector<P> out;
-  out.reserve(kept_index.size());
-  for (std::size_t k : kept_index) out.push_back(pts[k]);
-  return out;
-}
-
-struct Welder {
+// Writes the input lines and the plans, in file order; keeps the stats.
+struct Writer {
   const io::GcodeFile& g;
   const WeldOptions& opts;
   WeldStats& stats;
   Emitter emit;
-  std::string error;
   // Where the machine is minus where the input says, after the moves written
   // so far: nonzero only when --decimals rounds the input's own end points.
   P offset{};
-  const io::GPolyline* current = nullptr;  // for progress
 
   // Writes an input line as it is.
   void pass(const io::GBlock& b) {
@@ -210,50 +85,18 @@ struct Welder {
     if (!b.unknown.empty()) offset = {};  // homing, offsets: the input's own coordinates again
   }
 
-  // The trouble resolve met in the run being planned: pieces refitted or
-  // kept as their input lines.
-  std::size_t trouble = 0;
-  std::size_t kept = 0;
-  bool closed_part = false;  // the part being planned ends where it starts
-
-  bool weld(const io::GPolyline& pl) {
-    current = &pl;
-    const double unit = pl.inches ? 25.4 : 1.0;
-    const double tol = opts.tol_mm / unit;
-    // Distinct consecutive points, each with the polyline index it came from.
-    std::vector<P> pts;
-    std::vector<std::size_t> from_index;
-    for (std::size_t k = 0; k < pl.points.size(); ++k) {
-      if (!pts.empty() && pts.back() == pl.points[k]) continue;
-      pts.push_back(pl.points[k]);
-      from_index.push_back(k);
-    }
-    if (pl.relative || pts.size() < 2) {  // G91 polylines are not welded (see README)
-      for (std::size_t i = pl.first_block; i <= pl.last_block; ++i) pass(g.blocks[i]);
-      return true;
-    }
-    const int d0 = stats.decimals;
-    const double budget = 2 * std::pow(10.0, -d0);
-    const double fit_tol = tol > 2 * budget ? tol - budget : tol / 2;
-    // The fit sees the run without its jitter (CAM output is full of 0.0003
-    // mm back-and-forths, each a cusp the fitters must stop at), at a tol
-    // less by how far the skipped points lie from their chords; every piece
-    // is then measured against all the input points (resolve).
-    std::vector<std::size_t> kept_index;
-    double moved = 0;
-    const std::vector<P> simple = without_jitter(pts, tol * opts.jitter, kept_index, moved);
-    std::vector<Planned> plan;
-    P from = pts.front() + offset;
-    if (!plan_parts(simple, kept_index, pts, from_index, fit_tol, moved, tol, from, plan)) return false;
+  // Writes pl, welded as `pieces` (planned from `offset`), ending at `end`.
+  void write(const io::GPolyline& pl, const Run& r, const std::vector<Planned>& pieces, P end) {
     ++stats.polylines;
-    offset = from - pts.back();
+    offset = end - r.pts.back();
     std::size_t next_block = pl.first_block;
-    for (std::size_t k = 0; k < plan.size(); ++k) {
-      const fit::Piece<double>& pc = plan[k].piece;
-      const Written& w = plan[k].written;
-      const bool last_piece = k + 1 == plan.size();
-      const std::size_t end_block = last_piece ? pl.last_block : pl.point_block[from_index[pc.last]];
-      if (plan[k].keep) {
+    for (std::size_t k = 0; k < pieces.size(); ++k) {
+      const Planned& p = pieces[k];
+      const Written& w = p.written;
+      const std::size_t block = pl.point_block[r.from_index[p.piece.last]];
+      const bool last_piece = k + 1 == pieces.size();
+      const std::size_t end_block = last_piece ? pl.last_block : block;
+      if (p.keep) {
         for (std::size_t i = next_block; i <= end_block; ++i) {
           emit.verbatim(g.blocks[i]);
           if (g.blocks[i].moves) ++stats.output_moves;
@@ -261,8 +104,8 @@ struct Welder {
         next_block = end_block + 1;
         continue;
       }
-      stats.max_deviation_mm = std::max(stats.max_deviation_mm, w.deviation * unit);
-      const io::GBlock& eb = g.blocks[pl.point_block[from_index[pc.last]]];
+      stats.max_deviation_mm = std::max(stats.max_deviation_mm, w.deviation * r.unit);
+      const io::GBlock& eb = g.blocks[block];
       std::string line;
       if (const std::string_view n = word_text(eb, 'N'); !n.empty()) {
         line = n;
@@ -278,7 +121,7 @@ struct Welder {
         line += ' ';
         line += c;
       }
-      const bool arc = pc.segment.is_arc();
+      const bool arc = p.piece.segment.is_arc();
       emit.written(line, arc, eb.end);
       ++stats.output_moves;
       if (arc) ++stats.arcs;
@@ -299,155 +142,114 @@ struct Welder {
       }
       next_block = end_block + 1;
     }
-    return true;
+  }
+};
+
+bool same_point(P a, P b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+// Runs fn(i) for i in [0, n) on `threads` threads, each taking the next i.
+template <class Fn>
+void parallel_for(std::size_t n, unsigned threads, const Fn& fn) {
+  std::atomic<std::size_t> next{0};
+  auto work = [&] {
+    for (std::size_t i = next.fetch_add(1); i < n; i = next.fetch_add(1)) fn(i);
+  };
+  std::vector<std::thread> pool;
+  for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work);
+  work();
+  for (std::thread& t : pool) t.join();
+}
+
+// Every polyline prepared (on all the threads), then the plans of the
+// parts of at least kPooledPoints points, made by `threads - 1` workers and
+// the writer, each taking the next part in file order: the writer takes one
+// while the part it is to write next is not ready (it sleeps only when
+// every part is taken), so that no more threads run than there are cores.
+// It plans the small parts itself, when it writes them (a hand-over costs
+// more than their fit: octocat's 24k single-line polylines took 9 times
+// longer through the pool). A pooled part's plan assumes the machine
+// starts at the part's first input point (the rule, unless --decimals
+// rounds the input): the writer plans it again when the machine is
+// elsewhere.
+class PlanPool {
+ public:
+  static constexpr std::size_t kPooledPoints = 32;
+
+  PlanPool(const io::GcodeFile& g, const WeldOptions& opts, int decimals, unsigned threads)
+      : opts_(opts), decimals_(decimals), runs_(g.polylines.size()) {
+    parallel_for(runs_.size(), threads,
+                 [&](std::size_t p) { weld_detail::prepare(g.polylines[p], opts, decimals, runs_[p]); });
+    first_part_.reserve(runs_.size());
+    for (std::size_t p = 0; p < runs_.size(); ++p) {
+      first_part_.push_back(task_of_.size());
+      for (std::size_t j = 0; j < runs_[p].parts(); ++j) {
+        const bool pooled = runs_[p].cuts[j + 1] - runs_[p].cuts[j] + 1 >= kPooledPoints;
+        task_of_.push_back(pooled ? tasks_.size() : kNone);
+        if (pooled) tasks_.push_back({p, j});
+      }
+    }
+    plans_.resize(tasks_.size());
+    ready_ = std::vector<std::atomic<bool>>(tasks_.size());
+    workers_.reserve(threads);
+    for (unsigned t = 1; t < threads && !tasks_.empty(); ++t)  // and the writer
+      workers_.emplace_back([this] {
+        while (!stop_ && take()) {
+        }
+      });
+  }
+  PlanPool(const PlanPool&) = delete;
+  PlanPool& operator=(const PlanPool&) = delete;
+  ~PlanPool() {
+    stop_ = true;  // the workers finish the part they plan, then take no other
+    for (std::thread& t : workers_) t.join();
   }
 
-  struct Planned {
-    fit::Piece<double> piece;
-    bool keep = false;  // write its input lines
-    Written written;
+  // Polyline p, prepared; the caller may free it once its parts are ready.
+  Run& run(std::size_t p) { return runs_[p]; }
+
+  // The plan of part j of polyline p, once made (the caller plans other
+  // parts meanwhile), and the caller's from then; null when the part is the
+  // caller's to plan.
+  PartPlan* wait(std::size_t p, std::size_t j) {
+    const std::size_t t = task_of_[first_part_[p] + j];
+    if (t == kNone) return nullptr;
+    while (!ready_[t].load(std::memory_order_acquire))
+      if (!take()) ready_[t].wait(false, std::memory_order_acquire);  // the part is being planned
+    return &plans_[t];
+  }
+
+ private:
+  static constexpr std::size_t kNone = ~std::size_t{0};
+  struct Task {
+    std::size_t polyline, part;
   };
 
-  // Plans the jitter-free run `simple` part by part: it is fitted
-  // separately at turns sharper than 90 degrees. With the band criterion each
-  // part is fitted first without the fitters' tie-break (each of its steps is
-  // a whole search): the count is the same, only the pieces' place in the
-  // band differs. When a piece then fails the rounding check (refitted or
-  // kept, or a loop closed by a single segment), the part is planned
-  // again with weld's tie-break, whose pieces hug the input, and that plan is
-  // kept unless it has more moves: never more moves than the tie-break alone.
-  bool plan_parts(const std::vector<P>& simple, const std::vector<std::size_t>& kept_index,
-                  const std::vector<P>& pts, const std::vector<std::size_t>& from_index, double fit_tol,
-                  double moved, double tol, P& from, std::vector<Planned>& plan) {
-    const double fine = opts.tie_break < 0 ? tie_break_for(opts.criterion) : opts.tie_break;
-    // The vertex criterion's fast pieces leave the band often (refits): it
-    // would plan most parts twice.
-    const bool two_pass = opts.tie_break < 0 && fine < 1 && opts.criterion == "band";
-    std::vector<Planned> first, again;
-    std::size_t begin = 0;
-    for (std::size_t k = 1; k <= simple.size() - 1; ++k) {
-      const bool last = k == simple.size() - 1;
-      const bool turn =
-          !last && opts.split_turns && (simple[k] - simple[k - 1]).dot(simple[k + 1] - simple[k]) < 0;
-      if (!last && !turn) continue;
-      first.clear();
-      P first_from = from;
-      if (!plan_part(simple, begin, k, kept_index, pts, fit_tol, moved, tol, two_pass ? 1.0 : fine, first_from,
-                     first))
-        return false;
-      std::size_t first_kept = kept;
-      // Without trouble each piece is one move (a kept single segment with
-      // no repeated points between): no plan of the same count has fewer.
-      if (two_pass && (trouble > 0 || moves_of(first, from_index) > first.size())) {
-        again.clear();
-        P again_from = from;
-        if (!plan_part(simple, begin, k, kept_index, pts, fit_tol, moved, tol, fine, again_from, again))
-          return false;
-        if (moves_of(again, from_index) <= moves_of(first, from_index)) {
-          first.swap(again);
-          first_from = again_from;
-          first_kept = kept;
-        }
-      }
-      plan.insert(plan.end(), first.begin(), first.end());
-      from = first_from;
-      stats.kept_pieces += first_kept;
-      begin = k;
-      if (opts.progress) opts.progress(current->point_block[from_index[kept_index[k]]], g.blocks.size());
+  // Plans the next part no thread has taken; false when there is none.
+  bool take() {
+    const std::size_t t = next_.fetch_add(1);
+    if (t >= tasks_.size()) return false;
+    const Run& r = runs_[tasks_[t].polyline];
+    try {
+      weld_detail::plan_part(r, tasks_[t].part, r.part_start(tasks_[t].part), opts_, decimals_, plans_[t]);
+    } catch (...) {
+      plans_[t].exception = std::current_exception();
     }
+    ready_[t].store(true, std::memory_order_release);  // publishes plans_[t]
+    ready_[t].notify_one();                            // only the writer waits
     return true;
   }
 
-  // Fits simple[begin..end] with `tie_break` and plans its pieces over pts
-  // (resolve); counts the trouble met.
-  bool plan_part(const std::vector<P>& simple, std::size_t begin, std::size_t end,
-                 const std::vector<std::size_t>& kept_index, const std::vector<P>& pts, double fit_tol,
-                 double moved, double tol, double tie_break, P& from, std::vector<Planned>& plan) {
-    const std::vector<P> part(simple.begin() + static_cast<std::ptrdiff_t>(begin),
-                              simple.begin() + static_cast<std::ptrdiff_t>(end) + 1);
-    std::vector<fit::Piece<double>> pieces;
-    Status status = Status::ok;
-    if (!fit_job(part, {}, fit_tol - moved, opts.criterion, pieces, error, status, "double", tie_break))
-      return false;
-    for (fit::Piece<double>& pc : pieces) {
-      pc.first = static_cast<std::uint32_t>(kept_index[pc.first + begin]);
-      pc.last = static_cast<std::uint32_t>(kept_index[pc.last + begin]);
-    }
-    trouble = 0;
-    kept = 0;
-    closed_part = simple[begin] == simple[end];
-    return resolve(pts, pieces, fit_tol, tol, 0, from, plan);
-  }
-
-  // The moves a plan writes for the run (input blocks from_index apart).
-  static std::size_t moves_of(const std::vector<Planned>& plan, const std::vector<std::size_t>& from_index) {
-    std::size_t moves = 0;
-    for (const Planned& p : plan) moves += p.keep ? from_index[p.piece.last] - from_index[p.piece.first] : 1;
-    return moves;
-  }
-
-  // Writes each piece from the rounded end of the one before, with more
-  // decimals when rounding costs too much; a piece still over tol (or whose
-  // drawn arc leaves the band, which the vertex criterion allows) is fitted
-  // again with the band criterion at half the tol, once, before its input
-  // lines are kept.
-  bool resolve(const std::vector<P>& pts, const std::vector<fit::Piece<double>>& pieces, double fit_tol,
-               double tol, int depth, P& from, std::vector<Planned>& plan) {
-    for (const fit::Piece<double>& pc : pieces) {
-      Planned pl{pc, false, {}};
-      if (pc.last - pc.first < 2) {  // a single segment: its input line is already the best
-        // Closing a loop beside other pieces: an unbalanced split (a full
-        // circle drawn as one arc and a line); the tie-break's is tried too.
-        if (closed_part && pieces.size() > 1) ++trouble;
-        pl.keep = true;
-        plan.push_back(pl);
-        from = pts[pc.last];
-        continue;
-      }
-      bool ok = false;
-      if (pc.segment.is_arc()) {  // a nearly straight arc (huge radius) is written as a line when one fits
-        const double r = pc.segment.radius();
-        const double half = distance(pc.segment.start, pc.segment.end) / 2;
-        if (half < r && r - std::sqrt(r * r - half * half) < tol) {
-          const Written line = write_piece(Segment<double>::line(pc.segment.start, pc.segment.end), from, pts,
-                                           pc.first, pc.last, stats.decimals, tol);
-          if (line.deviation <= tol) {
-            pl.written = line;
-            pl.piece.segment = Segment<double>::line(pc.segment.start, pc.segment.end);
-            ok = true;
-          }
-        }
-      }
-      for (int d = stats.decimals; d <= stats.decimals + 2 && !ok; ++d) {
-        pl.written = write_piece(pc.segment, from, pts, pc.first, pc.last, d, tol);
-        ok = pl.written.deviation <= tol;
-      }
-      if (ok) {
-        plan.push_back(pl);
-        from = pl.written.end;
-        continue;
-      }
-      ++trouble;
-      if (depth == 0) {
-        const std::vector<P> part(pts.begin() + pc.first, pts.begin() + pc.last + 1);
-        std::vector<fit::Piece<double>> again;
-        Status status = Status::ok;
-        // A finer tie-break than the first fit: rare, and its pieces then hug the input.
-        if (!fit_job(part, {}, fit_tol / 2, "band", again, error, status, "double", 1e-3)) return false;
-        for (fit::Piece<double>& p : again) {
-          p.first += pc.first;
-          p.last += pc.first;
-        }
-        if (!resolve(pts, again, fit_tol / 2, tol, 1, from, plan)) return false;
-        continue;
-      }
-      ++kept;
-      pl.keep = true;
-      plan.push_back(pl);
-      from = pts[pc.last];
-    }
-    return true;
-  }
+  const WeldOptions& opts_;
+  const int decimals_;
+  std::vector<Run> runs_;  // built before the workers start; runs_[p] freed by the writer after its parts
+  std::vector<std::size_t> first_part_;  // polyline p's first part in task_of_
+  std::vector<std::size_t> task_of_;     // each part's task, or kNone
+  std::vector<Task> tasks_;
+  std::vector<PartPlan> plans_;  // plans_[t]: written by the worker that took t, then the writer's
+  std::vector<std::atomic<bool>> ready_;
+  std::atomic<std::size_t> next_{0};
+  std::atomic<bool> stop_{false};
+  std::vector<std::thread> workers_;  // last: started once the rest is built
 };
 
 }  // namespace
@@ -459,6 +261,11 @@ struct Welder {
 // counts (tests/gcode WeldCounts); coarser (1e-2) wrote more moves.
 double tie_break_for(const std::string& criterion) { return criterion == "band" ? 0.1 : 1e-3; }
 
+unsigned weld_threads(int requested) {
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  return requested <= 0 ? cores : std::min(cores, static_cast<unsigned>(requested));
+}
+
 bool weld_gcode(const io::GcodeFile& g, const WeldOptions& opts, std::string& out,
                 WeldStats& stats, std::string& error) {
   stats = WeldStats{};
@@ -468,16 +275,51 @@ bool weld_gcode(const io::GcodeFile& g, const WeldOptions& opts, std::string& ou
   for (const io::GBlock& b : g.blocks) bytes += b.text.size() + b.end.size();
   out.reserve(bytes + bytes / 8);  // arcs shorten the text; a "G1 " added after one lengthens it
   io::prefault(out.data(), bytes);
-  Welder w{g, opts, stats, Emitter(out), {}};
+  Writer w{g, opts, stats, Emitter(out), {}};
+  const unsigned threads = g.polylines.empty() ? 1 : weld_threads(opts.threads);
+  std::optional<PlanPool> pool;
+  if (threads > 1) pool.emplace(g, opts, stats.decimals, threads);
+  Run local;
+  PartPlan part;
+  std::vector<Planned> pieces;
   std::size_t next = 0;
   for (std::size_t p = 0; p < g.polylines.size(); ++p) {
     const io::GPolyline& pl = g.polylines[p];
     for (; next < pl.first_block; ++next) w.pass(g.blocks[next]);
-    if (!w.weld(pl)) {
-      error = g.file + ":" + std::to_string(g.blocks[pl.first_block].line) + ": " + w.error;
-      return false;
-    }
     next = pl.last_block + 1;
+    Run& r = pool ? pool->run(p) : local;
+    if (!pool) {
+      r = Run{};
+      weld_detail::prepare(pl, opts, stats.decimals, r);
+    }
+    if (!r.welded) {
+      for (std::size_t i = pl.first_block; i <= pl.last_block; ++i) w.pass(g.blocks[i]);
+      continue;
+    }
+    P from = r.pts.front() + w.offset;
+    pieces.clear();
+    for (std::size_t j = 0; j < r.parts(); ++j) {
+      PartPlan* made = pool ? pool->wait(p, j) : nullptr;
+      if (made) {
+        if (made->exception) std::rethrow_exception(made->exception);
+        if (!same_point(made->from_in, from)) weld_detail::plan_part(r, j, from, opts, stats.decimals, *made);
+      } else {
+        made = &part;
+        weld_detail::plan_part(r, j, from, opts, stats.decimals, part);
+      }
+      if (!made->ok) {
+        error = g.file + ":" + std::to_string(g.blocks[pl.first_block].line) + ": " + made->error;
+        return false;
+      }
+      stats.kept_pieces += made->kept;
+      if (opts.progress)
+        opts.progress(pl.point_block[r.from_index[r.kept_index[r.cuts[j + 1]]]], g.blocks.size());
+      pieces.insert(pieces.end(), made->pieces.begin(), made->pieces.end());
+      from = made->from_out;
+      *made = PartPlan{};  // taken: its memory is free again
+    }
+    w.write(pl, r, pieces, from);
+    r = Run{};
   }
   for (; next < g.blocks.size(); ++next) w.pass(g.blocks[next]);
   for (const io::GBlock& b : g.blocks) stats.input_moves += b.moves ? 1 : 0;

@@ -32,7 +32,13 @@ struct WeldOptions {
   // not change the piece count, only how far under tol the pieces stay.
   // < 0: weld's choice (tie_break_for); 0: the fitters' own; >= 1: none.
   double tie_break = -1;
-  std::function<void(std::size_t line, std::size_t lines)> progress;  // as runs are fitted; may be empty
+  // Threads that plan the parts of the polylines (split at sharp turns, each
+  // planned apart): 0 one per core, else at most this many and the cores; 1
+  // plans on the calling thread. The output is the same, byte for byte, for
+  // any count.
+  int threads = 0;
+  // As runs are fitted, in file order, always from the calling thread; may be empty.
+  std::function<void(std::size_t line, std::size_t lines)> progress;
 };
 
 struct WeldStats {
@@ -47,6 +53,9 @@ struct WeldStats {
 
 // The tie-break precision weld uses for `criterion` (opts.tie_break < 0).
 double tie_break_for(const std::string& criterion);
+
+// The threads weld_gcode plans on for opts.threads == requested.
+unsigned weld_threads(int requested);
 
 // Welds g into `out`. False with `error` when a fit fails (a bug or a numeric
 // breakdown): then nothing is to be written.

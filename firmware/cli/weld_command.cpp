@@ -33,6 +33,10 @@ CLI::App* add_weld_command(CLI::App& app, WeldCommandOptions& opts) {
       ->type_name("D");
   weld->add_flag("--no-split", opts.no_split,
                  "Do not fit separately at turns sharper than 90 degrees (slower, rarely fewer moves)");
+  weld->add_option("--threads", opts.threads,
+                   "Threads that fit polylines (default 0: one per core; 1: none besides the main one); "
+                   "the output is the same for any count")
+      ->type_name("N");
   weld->add_option("in", opts.in, "G-code file; - for stdin")->type_name("IN")->required();
   weld->add_option("out", opts.out, "Output file (written whole or not at all); - for stdout")
       ->type_name("OUT")
@@ -57,6 +61,15 @@ int run_weld(const WeldCommandOptions& opts) {
     w.decimals = static_cast<int>(d);
   }
   w.split_turns = !opts.no_split;
+  if (!opts.threads.empty()) {
+    char* end = nullptr;
+    errno = 0;
+    const long n = std::strtol(opts.threads.c_str(), &end, 10);
+    if (errno != 0 || end == opts.threads.c_str() || *end != '\0' || n < 0 || n > 1024)
+      return usage_error("--threads: expected a whole number from 0 (one per core) to 1024, got " +
+                         quoted(opts.threads));
+    w.threads = static_cast<int>(n);
+  }
   const auto t0 = std::chrono::steady_clock::now();
   const io::GcodeFile g = io::read_gcode(opts.in);
   if (!g.ok) {

@@ -15,6 +15,7 @@ struct WeldCommandOptions {
   std::string criterion = "band";
   std::string decimals;
   bool no_split = false;
+  std::string threads;
   std::string in;
   std::string out;
 };

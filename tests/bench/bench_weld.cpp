@@ -15,11 +15,19 @@
 // run --repeat times as a child process on the largest file (bytes), its CPU
 // time (user + system, from wait4's rusage) from exec to exit: startup,
 // reading, welding, writing and freeing, as a user runs it. This is the
-// figure the README gives; median and best of the runs.
+// figure the README gives; median and best of the runs. It runs with
+// --threads 1: the CPU time of the sequential weld.
+//
+// Then "threads" (unless --no-threads): each file welded in this process
+// with threads = 1 and threads = 2 (WeldOptions::threads), alternately,
+// --repeat runs each (at least 5): the fastest wall time of each (the pool's
+// point is wall time; CPU time adds the threads up), its lines/s, their
+// ratio, and whether the two outputs are the same bytes (exit 1 if not).
+// The reader is not timed.
 //
 // usage: kerf_bench_weld [--criterion band|vertex|both] [--tol MM] [--no-split] [--jitter F]
 //                        [--tie-break R] [--no-greedy] [--repeat N] [--dump DIR]
-//                        [--kerf PATH | --no-process] [FILE...]
+//                        [--kerf PATH | --no-process] [--no-threads] [FILE...]
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/resource.h>
@@ -27,6 +35,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <ctime>
 #include <cmath>
 #include <cstdio>
@@ -174,7 +183,8 @@ bool whole_process(const std::string& kerf, const std::string& path, std::size_t
   std::snprintf(tol_text, sizeof tol_text, "%.10g", tol);
   std::vector<double> runs;
   for (int r = 0; r < std::max(repeat, 5); ++r) {
-    const double s = child_cpu_seconds({kerf, "weld", "--tol", tol_text, "--criterion", criterion, path, out});
+    const double s =
+        child_cpu_seconds({kerf, "weld", "--threads", "1", "--tol", tol_text, "--criterion", criterion, path, out});
     if (s < 0) {
       std::fprintf(stderr, "kerf_bench_weld: %s weld failed on %s\n", kerf.c_str(), path.c_str());
       std::filesystem::remove(out);
@@ -193,6 +203,33 @@ bool whole_process(const std::string& kerf, const std::string& path, std::size_t
   return true;
 }
 
+// One line of the "threads" figures (see the top of this file); false when
+// a weld failed or the two outputs differ.
+bool threads_figure(const kerf::io::GcodeFile& g, kerf::cli::WeldOptions o, int repeat) {
+  double best[2] = {1e300, 1e300};
+  std::string out[2];
+  for (int r = 0; r < std::max(repeat, 5); ++r) {
+    for (int k = 0; k < 2; ++k) {
+      o.threads = k + 1;
+      std::string once, error;
+      kerf::cli::WeldStats st;
+      const auto t0 = std::chrono::steady_clock::now();
+      if (!kerf::cli::weld_gcode(g, o, once, st, error)) {
+        std::fprintf(stderr, "%s\n", error.c_str());
+        return false;
+      }
+      best[k] = std::min(best[k], std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+      if (r == 0) out[k].swap(once);
+    }
+  }
+  const double lines = static_cast<double>(g.blocks.size());
+  const std::string name = g.file.substr(g.file.find_last_of('/') + 1);
+  std::printf("%-46s %-7s %8.1f %12.0f %8.1f %12.0f %6.2fx %5s\n", name.c_str(), o.criterion.c_str(),
+              1e3 * best[0], lines / best[0], 1e3 * best[1], lines / best[1], best[0] / best[1],
+              out[0] == out[1] ? "yes" : "NO");
+  return out[0] == out[1];
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -205,6 +242,7 @@ int main(int argc, char** argv) {
   bool with_greedy = true;
   int repeat = 3;
   std::string kerf = KERF_BIN;  // empty: no whole-process figure
+  bool with_threads = true;
   std::vector<std::string> files;
   for (int k = 1; k < argc; ++k) {
     if (std::strcmp(argv[k], "--tol") == 0 && k + 1 < argc) tol = std::atof(argv[++k]);
@@ -218,6 +256,7 @@ int main(int argc, char** argv) {
     else if (std::strcmp(argv[k], "--no-greedy") == 0) with_greedy = false;
     else if (std::strcmp(argv[k], "--kerf") == 0 && k + 1 < argc) kerf = argv[++k];
     else if (std::strcmp(argv[k], "--no-process") == 0) kerf.clear();
+    else if (std::strcmp(argv[k], "--no-threads") == 0) with_threads = false;
     else if (std::strcmp(argv[k], "--repeat") == 0 && k + 1 < argc) repeat = std::max(1, std::atoi(argv[++k]));
     else files.emplace_back(argv[k]);
   }
@@ -259,6 +298,7 @@ int main(int argc, char** argv) {
     const std::size_t greedy = with_greedy ? greedy_file(g, tol) : 0;
     for (const std::string& c : criteria) {
       kerf::cli::WeldOptions o;
+      o.threads = 1;  // CPU time below: one thread's
       o.tol_mm = tol;
       o.criterion = c;
       o.split_turns = split;
@@ -298,5 +338,26 @@ int main(int argc, char** argv) {
   if (!kerf.empty() && !largest.empty() &&
       !whole_process(kerf, largest, largest_lines, tol, criteria.front(), repeat))
     return 1;
+  if (with_threads) {
+    std::printf("\nthreads: weld wall time, fastest of %d runs each, threads=1 and threads=2 (%u cores)\n",
+                std::max(repeat, 5), kerf::cli::weld_threads(0));
+    std::printf("%-46s %-7s %8s %12s %8s %12s %7s %5s\n", "file", "crit", "1: ms", "1: lines/s", "2: ms",
+                "2: lines/s", "2 / 1", "same");
+    for (const std::string& path : files) {
+      std::ifstream in(path, std::ios::binary);
+      std::stringstream ss;
+      ss << in.rdbuf();
+      const kerf::io::GcodeFile g = kerf::io::parse_gcode(ss.str(), path);
+      for (const std::string& c : criteria) {
+        kerf::cli::WeldOptions o;
+        o.tol_mm = tol;
+        o.criterion = c;
+        o.split_turns = split;
+        o.jitter = jitter;
+        o.tie_break = tie_break;
+        if (!g.ok || !threads_figure(g, o, repeat)) return 1;
+      }
+    }
+  }
   return 0;
 }
