@@ -53,7 +53,6 @@ double raise_to_polyline(const std::vector<P>& pts, std::size_t a, std::size_t b
   return std::max(dev, best + widen);
 }
 
-
 // Writes piece `s` from the rounded start `from` with `decimals`, and
 // measures it against pts[a..b] (see weld.hpp).
 Written write_piece(const Segment<double>& s, P from, const std::vector<P>& pts, std::size_t a,
@@ -174,17 +173,14 @@ struct Planner {
     const std::size_t begin = r.cuts[j], k = r.cuts[j + 1];
     std::vector<Planned>& first = out.pieces;
     P first_from = from;
-    if (!plan_part(r.simple, begin, k, r.kept_index, r.pts, r.fit_tol, r.moved, r.tol, two_pass ? 1.0 : fine,
-                   first_from, first))
-      return false;
+    if (!fit_part(r, begin, k, two_pass ? 1.0 : fine, first_from, first)) return false;
     std::size_t first_kept = kept;
     // Without trouble each piece is one move (a kept single segment with
     // no repeated points between): no plan of the same count has fewer.
     if (two_pass && (trouble > 0 || moves_of(first, r.from_index) > first.size())) {
       std::vector<Planned> again;
       P again_from = from;
-      if (!plan_part(r.simple, begin, k, r.kept_index, r.pts, r.fit_tol, r.moved, r.tol, fine, again_from, again))
-        return false;
+      if (!fit_part(r, begin, k, fine, again_from, again)) return false;
       if (moves_of(again, r.from_index) <= moves_of(first, r.from_index)) {
         first.swap(again);
         first_from = again_from;
@@ -196,25 +192,24 @@ struct Planner {
     return true;
   }
 
-  // Fits simple[begin..end] with `tie_break` and plans its pieces over pts
-  // (resolve); counts the trouble met.
-  bool plan_part(const std::vector<P>& simple, std::size_t begin, std::size_t end,
-                 const std::vector<std::size_t>& kept_index, const std::vector<P>& pts, double fit_tol,
-                 double moved, double tol, double tie_break, P& from, std::vector<Planned>& plan) {
-    const std::vector<P> part(simple.begin() + static_cast<std::ptrdiff_t>(begin),
-                              simple.begin() + static_cast<std::ptrdiff_t>(end) + 1);
+  // Fits r.simple[begin..end] with `tie_break` and plans its pieces over
+  // r.pts (resolve); counts the trouble met.
+  bool fit_part(const Run& r, std::size_t begin, std::size_t end, double tie_break, P& from,
+                std::vector<Planned>& plan) {
+    const std::vector<P> part(r.simple.begin() + static_cast<std::ptrdiff_t>(begin),
+                              r.simple.begin() + static_cast<std::ptrdiff_t>(end) + 1);
     std::vector<fit::Piece<double>> pieces;
     Status status = Status::ok;
-    if (!fit_job(part, {}, fit_tol - moved, opts.criterion, pieces, error, status, "double", tie_break))
+    if (!fit_job(part, {}, r.fit_tol - r.moved, opts.criterion, pieces, error, status, "double", tie_break))
       return false;
     for (fit::Piece<double>& pc : pieces) {
-      pc.first = static_cast<std::uint32_t>(kept_index[pc.first + begin]);
-      pc.last = static_cast<std::uint32_t>(kept_index[pc.last + begin]);
+      pc.first = static_cast<std::uint32_t>(r.kept_index[pc.first + begin]);
+      pc.last = static_cast<std::uint32_t>(r.kept_index[pc.last + begin]);
     }
     trouble = 0;
     kept = 0;
-    closed_part = simple[begin] == simple[end];
-    return resolve(pts, pieces, fit_tol, tol, 0, from, plan);
+    closed_part = r.simple[begin] == r.simple[end];
+    return resolve(r.pts, pieces, r.fit_tol, r.tol, 0, from, plan);
   }
 
   // The moves a plan writes for the run (input blocks from_index apart).
