@@ -344,10 +344,11 @@ int main(int argc, char** argv) {
     std::printf("%-46s %-7s %8s %12s %8s %12s %7s %5s\n", "file", "crit", "1: ms", "1: lines/s", "2: ms",
                 "2: lines/s", "2 / 1", "same");
     for (const std::string& path : files) {
-      std::ifstream in(path, std::ios::binary);
-      std::stringstream ss;
-      ss << in.rdbuf();
-      const kerf::io::GcodeFile g = kerf::io::parse_gcode(ss.str(), path);
+      const kerf::io::GcodeFile g = kerf::io::read_gcode(path);  // not timed here
+      if (!g.ok) {
+        std::fprintf(stderr, "%s\n", kerf::io::describe_error(g).c_str());
+        return 1;
+      }
       for (const std::string& c : criteria) {
         kerf::cli::WeldOptions o;
         o.tol_mm = tol;
@@ -355,7 +356,7 @@ int main(int argc, char** argv) {
         o.split_turns = split;
         o.jitter = jitter;
         o.tie_break = tie_break;
-        if (!g.ok || !threads_figure(g, o, repeat)) return 1;
+        if (!threads_figure(g, o, repeat)) return 1;
       }
     }
   }
