@@ -44,6 +44,12 @@ bool fail(GcodeFile& f, std::size_t line, std::string reason) {
   return false;
 }
 
+// ASCII only, inline: <cctype>'s calls (and their locale) were a tenth of
+// the read.
+bool is_blank(char c) { return c == ' ' || c == '\t'; }
+bool is_digit(char c) { return static_cast<unsigned char>(c - '0') < 10; }
+bool is_alpha(char c) { return static_cast<unsigned char>((c | 0x20) - 'a') < 26; }
+
 // The number of a word (sign, digits, at most one point): from_chars is
 // correctly rounded like strtod and several times faster; strtod takes what
 // it refuses (a '+', or a magnitude out of double's range).
@@ -56,19 +62,41 @@ double parse_number(const std::string& number) {
   return std::strtod(number.c_str(), nullptr);
 }
 
+// A word's number as scanned: its digits as an integer while they fit.
+struct Number {
+  std::uint64_t mantissa = 0;
+  std::size_t digits = 0;       // all of them, leading zeros included
+  std::size_t after_point = 0;  // digits after the point
+  bool negative = false;
+};
+
+// The value of a scanned number, correctly rounded without a parse when the
+// digits fit in 53 bits and at most 22 follow the point: both the integer
+// and the power of ten are then exact doubles, and one division rounds
+// once (the usual fast path of decimal conversion). False otherwise.
+bool exact_value(const Number& n, double& v) {
+  static constexpr double kPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                      1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+                                      1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+  if (n.digits > 19 || n.mantissa > (std::uint64_t{1} << 53) || n.after_point > 22) return false;
+  v = static_cast<double>(n.mantissa) / kPow10[n.after_point];
+  if (n.negative) v = -v;
+  return true;
+}
+
 // Splits the words and comments of one line; false with a reason on a form
 // kerf refuses to guess at.
 bool split_words(GBlock& b, Scratch& sc, std::string& reason) {
   const std::string_view s = b.text;
   std::size_t i = 0;
-  while (i < s.size() && (s[i] == ' ' || s[i] == '\t')) ++i;
+  while (i < s.size() && is_blank(s[i])) ++i;
   if (i < s.size() && s[i] == '/') return reason = "block delete (/) is not supported", false;
   if (s.find_first_not_of(" \t", i) != std::string::npos && s[i] == '%' &&
       s.find_first_not_of(" \t", i + 1) == std::string::npos)
     return true;  // the tape mark
   while (i < s.size()) {
     const char c = s[i];
-    if (c == ' ' || c == '\t') {
+    if (is_blank(c)) {
       ++i;
     } else if (c == ';') {
       sc.comments.push_back(s.substr(i));
@@ -82,29 +110,34 @@ bool split_words(GBlock& b, Scratch& sc, std::string& reason) {
       return reason = "parameters (#n) are not supported", false;
     } else if (c == '[') {
       return reason = "expressions ([...]) are not supported", false;
-    } else if (std::isalpha(static_cast<unsigned char>(c)) != 0) {
-      const char letter = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    } else if (is_alpha(c)) {
+      const char letter = static_cast<char>(c & ~0x20);
       if (letter == 'O') return reason = "O-words (subroutines, program numbers) are not supported", false;
       std::size_t j = i + 1;
-      std::string number;
-      while (j < s.size() && (s[j] == ' ' || s[j] == '\t')) ++j;
-      if (j < s.size() && (s[j] == '+' || s[j] == '-')) number += s[j++];
-      std::size_t digits = 0, after_point = 0;
+      while (j < s.size() && is_blank(s[j])) ++j;
+      const std::size_t number_at = j;
+      Number num;
+      bool plus = false;
+      if (j < s.size() && (s[j] == '+' || s[j] == '-')) {
+        num.negative = s[j] == '-';
+        plus = !num.negative;
+        ++j;
+      }
       bool point = false;
       while (j < s.size()) {
-        if (std::isdigit(static_cast<unsigned char>(s[j])) != 0) {
-          number += s[j];
-          ++digits;
-          if (point) ++after_point;
-        } else if (s[j] == '.' && !point) {
-          number += '.';
+        const char d = s[j];
+        if (is_digit(d)) {
+          if (num.digits < 19) num.mantissa = num.mantissa * 10 + static_cast<unsigned>(d - '0');
+          ++num.digits;
+          if (point) ++num.after_point;
+        } else if (d == '.' && !point) {
           point = true;
-        } else if (s[j] != ' ' && s[j] != '\t') {
+        } else if (!is_blank(d)) {
           break;
         }
         ++j;
       }
-      if (digits == 0) {
+      if (num.digits == 0) {
         const std::size_t next = s.find_first_not_of(" \t", i + 1);
         if (next != std::string::npos && s[next] == '#') return reason = "parameters (#n) are not supported", false;
         if (next != std::string::npos && s[next] == '[')
@@ -112,21 +145,26 @@ bool split_words(GBlock& b, Scratch& sc, std::string& reason) {
         std::string word(1, c);
         // Letters run together ("ATAN", "XYZ") are a name; a letter, blanks and
         // the next word ("G1 X Y1") is a word whose number is missing.
-        if (i + 1 < s.size() && std::isalpha(static_cast<unsigned char>(s[i + 1])) != 0)
+        if (i + 1 < s.size() && is_alpha(s[i + 1]))
           return reason = "not a word: \"" + std::string(s.substr(i, s.find_first_of(" \t;(", i) - i)) +
                           "\" (macros and named functions are not supported)", false;
         return reason = "word " + word + " has no number", false;
       }
       std::size_t end = j;
-      while (end > i && (s[end - 1] == ' ' || s[end - 1] == '\t')) --end;
+      while (end > i && is_blank(s[end - 1])) --end;
       GWord w;
       w.letter = letter;
-      w.value = parse_number(number);
+      if (plus || !exact_value(num, w.value)) {
+        std::string number;  // sign, digits and point, without the blanks between
+        for (std::size_t k = number_at; k < end; ++k)
+          if (!is_blank(s[k])) number += s[k];
+        w.value = parse_number(number);
+      }
       w.pos = static_cast<std::uint32_t>(i);
       w.len = static_cast<std::uint32_t>(end - i);
       if (!std::isfinite(w.value) || std::fabs(w.value) > kMaxCoordinate)
         return reason = "number out of range: \"" + std::string(s.substr(i, end - i)) + "\"", false;
-      if ((letter == 'X' || letter == 'Y') && after_point > b.decimals) b.decimals = after_point;
+      if ((letter == 'X' || letter == 'Y') && num.after_point > b.decimals) b.decimals = num.after_point;
       sc.words.push_back(w);
       i = j;
     } else {
@@ -336,6 +374,29 @@ void bind_spans(GcodeFile& f, const GcodeFile::Source& src) {
   }
 }
 
+// Finds where each line ends: the first '\n' or '\r', or the end of the
+// text. memchr for the '\n' (every line but a CR file's ends there), kept
+// until passed so that a CR file is not searched to its end per line, then
+// for a '\r' before it.
+class LineEnds {
+ public:
+  explicit LineEnds(std::string_view text) : text_(text) {}
+  std::size_t from(std::size_t at) {
+    if (!started_ || next_nl_ < at) {
+      started_ = true;
+      const void* nl = std::memchr(text_.data() + at, '\n', text_.size() - at);
+      next_nl_ = nl != nullptr ? static_cast<std::size_t>(static_cast<const char*>(nl) - text_.data()) : text_.size();
+    }
+    const void* cr = std::memchr(text_.data() + at, '\r', next_nl_ - at);
+    return cr != nullptr ? static_cast<std::size_t>(static_cast<const char*>(cr) - text_.data()) : next_nl_;
+  }
+
+ private:
+  std::string_view text_;
+  std::size_t next_nl_ = 0;  // the first '\n' at or after the last `at` (or the text's size)
+  bool started_ = false;     // next_nl_ is set
+};
+
 GcodeFile parse_source(std::string text_in, std::string display_name) {
   GcodeFile f;
   f.file = std::move(display_name);
@@ -345,18 +406,18 @@ GcodeFile parse_source(std::string text_in, std::string display_name) {
   State st;
   // One block per line and at most a word per letter, reserved at once:
   // growing them moved and faulted in megabytes.
+  // (Counted apart, so that each loop is vectorised; a CRLF file counts
+  // its lines twice, which only reserves more address space.)
   std::size_t lines = 1, letters = 0;
-  for (std::size_t k = 0; k < text.size(); ++k) {
-    const char c = text[k];
-    lines += c == '\n' || (c == '\r' && (k + 1 == text.size() || text[k + 1] != '\n'));
-    letters += static_cast<unsigned char>((c | 0x20) - 'a') < 26;
-  }
+  for (const char c : text) lines += c == '\n' || c == '\r';
+  for (const char c : text) letters += is_alpha(c);
   f.blocks.reserve(lines);
   src->words.reserve(std::min(letters, 8 * lines));
   src->pieces.reserve(lines);  // a comment or an unknown word per line is common; more grows
   std::size_t blocks_mapped = 0, words_mapped = 0, pieces_mapped = 0;
   Scratch sc;
   std::size_t i = 0, line = 0;
+  LineEnds ends(text);
   auto refuse = [&](std::string why) {
     fail(f, line, std::move(why));
     bind_spans(f, *src);
@@ -364,8 +425,7 @@ GcodeFile parse_source(std::string text_in, std::string display_name) {
   };
   while (i < text.size()) {
     ++line;
-    std::size_t j = i;
-    while (j < text.size() && text[j] != '\n' && text[j] != '\r') ++j;
+    const std::size_t j = ends.from(i);
     if (j - i > kMaxLineBytes) {
       refuse("line longer than 65536 bytes (not a G-code file?)");
       return f;
@@ -373,12 +433,12 @@ GcodeFile parse_source(std::string text_in, std::string display_name) {
     GBlock b;
     b.line = line;
     b.text = text.substr(i, j - i);
+    i = j;
     if (j < text.size()) {
       const bool crlf = text[j] == '\r' && j + 1 < text.size() && text[j + 1] == '\n';
       b.end = crlf ? "\r\n" : text[j] == '\r' ? "\r" : "\n";
-      j += crlf ? 2 : 1;
+      i += crlf ? 2 : 1;
     }
-    i = j;
     std::string reason;
     sc.words.clear();
     sc.comments.clear();
@@ -428,8 +488,9 @@ GcodeFile read_gcode(const std::string& path) {
     std::rewind(in);
   }
   // Read in chunks straight into the text, each chunk's pages mapped at once.
-  // Reading stops inside a line longer than kMaxLineBytes (parse_gcode then
-  // reports it, or an earlier error), so a runaway line is not read whole.
+  // Reading stops after a chunk that ends inside a line longer than
+  // kMaxLineBytes (parse_gcode then reports it, or an earlier error), so a
+  // runaway line is not read whole.
   constexpr std::size_t kChunk = 1u << 20;
   std::size_t line_bytes = 0;
   bool too_long = false;
@@ -441,14 +502,12 @@ GcodeFile read_gcode(const std::string& path) {
     text.resize(have + chunk);
     const std::size_t n = std::fread(text.data() + have, 1, chunk, in);
     text.resize(have + n);
-    for (std::size_t k = have; k < have + n; ++k) {
-      if (text[k] == '\n' || text[k] == '\r') {
-        line_bytes = 0;
-      } else if (++line_bytes > kMaxLineBytes) {
-        too_long = true;
-        break;
-      }
-    }
+    // The chunk's last line end, looked for from its end (a byte or twenty
+    // back in a G-code file, the whole chunk once in a file without any).
+    std::size_t k = have + n;
+    while (k > have && text[k - 1] != '\n' && text[k - 1] != '\r') --k;
+    line_bytes = k > have ? have + n - k : line_bytes + n;
+    too_long = line_bytes > kMaxLineBytes;
     if (n < chunk) break;
   }
   const bool bad = std::ferror(in) != 0;

@@ -2,10 +2,15 @@
 // (weld_checker), and the round trip through kerf's own output.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "cli/weld.hpp"
 #include "kerf/geom/segment.hpp"
@@ -99,6 +104,68 @@ TEST(GcodeReader, RefusesWhatItCannotFollow) {
   EXPECT_EQ(error_of("G1 X\n"), "bad.nc:1: word X has no number");
   EXPECT_EQ(error_of("/G1 X1\n"), "bad.nc:1: block delete (/) is not supported");
   EXPECT_NE(error_of("IF [1 GT 0]\n").find("bad.nc:1: "), std::string::npos);
+}
+
+// The reader converts most numbers without a parse (an exact integer over
+// an exact power of ten, gcode_reader.cpp exact_value); every value must be
+// the correctly rounded one strtod gives for the same digits, bit for bit,
+// whichever path it took: short and long, signed, zero-padded, digits past
+// 2^53 or past 19, more than 22 decimals, blanks inside.
+TEST(GcodeReader, NumbersAreCorrectlyRounded) {
+  std::uint64_t state = 42;
+  auto next = [&] {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return state >> 33;
+  };
+  std::vector<std::string> numbers = {"0", "-0", "+1.5", "0.1", "1.", ".5", "-.25", "007.0700",
+                                      "900719925474.0992", "900719925474.0993", "900719925474.0995",
+                                      "0.9007199254740993", "0.1234567890123456789", "1.2345678901234567890",
+                                      "0.0000000000000000000001", "0.00000000000000000000001",
+                                      "1 2 . 5", "- 3.25", "123456789.123456789"};
+  for (int k = 0; k < 4000; ++k) {
+    std::string s = next() % 5 == 0 ? "-" : "";
+    const std::uint64_t whole = next() % 14, frac = next() % 16;
+    for (std::uint64_t d = 0; d < whole; ++d) s += static_cast<char>('0' + next() % 10);
+    if (frac > 0 || whole == 0) {
+      s += '.';
+      for (std::uint64_t d = 0; d < std::max<std::uint64_t>(frac, 1); ++d) s += static_cast<char>('0' + next() % 10);
+    }
+    numbers.push_back(s);
+  }
+  std::string text = "G0 X0 Y0\n";
+  for (const std::string& n : numbers) text += "G1 X" + n + " Y0\n";
+  const GcodeFile g = parse_gcode(text, "n.nc");
+  ASSERT_TRUE(g.ok) << g.line << ": " << g.reason;
+  ASSERT_EQ(g.blocks.size(), numbers.size() + 1);
+  for (std::size_t k = 0; k < numbers.size(); ++k) {
+    std::string digits;
+    for (char c : numbers[k])
+      if (c != ' ') digits += c;
+    const double want = std::strtod(digits.c_str(), nullptr);
+    const kerf::io::GBlock& b = g.blocks[k + 1];
+    ASSERT_EQ(b.words.size(), 3u) << numbers[k];
+    const double got = b.words[1].value;
+    EXPECT_EQ(std::memcmp(&got, &want, sizeof got), 0) << "X" << numbers[k] << ": " << got << " != " << want;
+  }
+}
+
+// Lines end at LF, CRLF or CR, mixed in one file, and a CR file's lines
+// are found one by one (the reader keeps the next LF between lines).
+TEST(GcodeReader, LineEndsOfEveryKind) {
+  std::string cr_only;
+  for (int k = 0; k < 2000; ++k) cr_only += "G1 X" + std::to_string(k) + " Y1\r";
+  const GcodeFile g = parse_gcode("G0 X0 Y0\n" + cr_only + "G1 X1 Y2\r\nG1 X3 Y3", "e.nc");
+  ASSERT_TRUE(g.ok) << kerf::io::describe_error(g);
+  ASSERT_EQ(g.blocks.size(), 2003u);
+  EXPECT_EQ(g.blocks[0].end, "\n");
+  for (std::size_t k = 1; k <= 2000; ++k) {
+    ASSERT_EQ(g.blocks[k].end, "\r") << k;
+    ASSERT_EQ(g.blocks[k].text, "G1 X" + std::to_string(k - 1) + " Y1") << k;
+  }
+  EXPECT_EQ(g.blocks[2001].end, "\r\n");
+  EXPECT_EQ(g.blocks[2002].end, "");
+  EXPECT_EQ(g.blocks[2002].text, "G1 X3 Y3");
+  EXPECT_EQ(g.blocks[2002].line, 2003u);
 }
 
 TEST(GcodeReader, UnknownWordsPassWeldButNotRun) {

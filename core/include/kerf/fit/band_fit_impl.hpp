@@ -25,6 +25,9 @@ struct Oracle {
   const BandRegion<S>* region;
   const std::uint32_t* next_barrier;  // the first barrier after each vertex
   S guard_eps;                        // the longest half gate
+  // Per orientation, the cells that bound the last successful test
+  // (BandPair::run): one search's memory, so each search has its own.
+  mutable std::uint32_t binding[2][2] = {{0, 0}, {0, 0}};
 
   static constexpr std::uint32_t kMarkBits = 15;
   static constexpr std::uint32_t kMarkMask = (1u << kMarkBits) - 1;
@@ -58,7 +61,7 @@ struct Oracle {
       const BandPair<S> pair(*region, i, j, o == 0 ? 1 : -1);
       PsiRange<S> range;
       std::uint32_t cell = i;
-      if (pair.run(range, cell)) {
+      if (pair.run(range, cell, binding[o])) {
         hint = with_mark(hint, o, 0);
         hint = o == 1 ? (hint | kPreferCw) : (hint & ~kPreferCw);
         return true;

@@ -42,6 +42,7 @@
 #include "kerf/fit/angle_set.hpp"
 #include "kerf/fit/band_numeric.hpp"
 #include "kerf/fit/band_region.hpp"
+#include "kerf/fit/band_slab.hpp"
 
 namespace kerf::fit {
 
@@ -65,6 +66,7 @@ class BandPair {
     u_ = u * f_;
     n_ = u_.perp() * S(orient);
     reach_ = band_detail::rounding_reach(a_, b_);
+    if constexpr (band_detail::kFloating<S>) chord_ = Scalar<S>::sqrt(u.norm2());
   }
 
   // The end conditions alone.
@@ -86,7 +88,7 @@ class BandPair {
     // The cached chain is read in place (a BandChain is 40 points, zeroed
     // on construction: a copy per cell test cost more than the test).
     if (const BandChainSlot<S>* cached = r_.cached_slot(k, -orient_)) {
-      const bool ok = apart(*cached) ? chain_conditions<false>(cached->chain, range)
+      const bool ok = apart(*cached) ? slab_clear(*cached, range) || chain_conditions<false>(cached->chain, range)
                                      : chain_conditions<true>(cached->chain, range);
       if (!ok) return false;
     } else {
@@ -114,11 +116,39 @@ class BandPair {
   // (middle, ends, quarters, ...): a piece too long for the band usually
   // fails on a few far-apart gates together, long before a scan in order
   // would bring them together.
-  bool run(PsiRange<S>& range, std::uint32_t& fail) const {
+  //
+  // `binding`, if given, names two cells (any values; those outside the
+  // piece are ignored) visited first, and receives after a success the
+  // cells that last raised lo and lowered hi. The search passes the cells
+  // that bound the previous test of the same start and orientation: the
+  // next end point is usually bound by the same cells, and with the range
+  // narrowed at once the other cells pass the quick slab test
+  // (slab_clear) instead of narrowing it a little at a time.
+  bool run(PsiRange<S>& range, std::uint32_t& fail, std::uint32_t* binding = nullptr) const {
     range = PsiRange<S>{};
     if (!ends(range)) {
       fail = i_;
       return false;
+    }
+    std::uint32_t first[2] = {j_, j_};  // j_: none
+    std::uint32_t bound[2] = {j_, j_};  // the last cell that moved lo, hi
+    auto visit = [&](std::uint32_t k) {
+      const PsiRange<S> before = range;
+      if (!cell(k, range)) {
+        fail = k;
+        return false;
+      }
+      if (range.lo != before.lo) bound[0] = k;
+      if (range.hi != before.hi) bound[1] = k;
+      return true;
+    };
+    if (binding != nullptr) {
+      for (int e = 0; e < 2; ++e) {
+        const std::uint32_t k = binding[e];
+        if (k < i_ || k >= j_ || (e == 1 && k == first[0])) continue;
+        first[e] = k;
+        if (!visit(k)) return false;
+      }
     }
     const std::uint32_t len = j_ - i_;
     std::uint32_t top = 1;  // 2^bits, the first power of two >= len
@@ -128,16 +158,18 @@ class BandPair {
     // tenth of the search).
     std::uint32_t rev = 0;
     for (std::uint32_t t = 0; t < top; ++t) {
-      if (rev < len && !cell(i_ + rev, range)) {
-        fail = i_ + rev;
-        return false;
-      }
+      const std::uint32_t k = i_ + rev;
+      if (rev < len && k != first[0] && k != first[1] && !visit(k)) return false;
       std::uint32_t bit = top / 2;
       while (bit != 0 && (rev & bit) != 0) {
         rev ^= bit;
         bit /= 2;
       }
       rev |= bit;
+    }
+    if (binding != nullptr) {
+      binding[0] = bound[0];
+      binding[1] = bound[1];
     }
     return true;
   }
@@ -200,6 +232,23 @@ class BandPair {
     for (int t = 0; t + 1 < c.size && !range.empty(); ++t)
       segment<kSnap>(range, lo, hi, snap(c.pt[t]), snap(c.pt[t + 1]));
     return true;
+  }
+
+  // Does the slot's chain cut nothing from the range? True when the slab
+  // around it (fit/band_slab.hpp) is clear of the disc at both ends of the
+  // range, so clear inside it. Floating point, no point near a or b
+  // (apart()).
+  bool slab_clear(const BandChainSlot<S>& slot, const PsiRange<S>& range) const {
+    if constexpr (!band_detail::kFloating<S>) {
+      (void)slot;
+      (void)range;
+      return false;
+    } else {
+      const BandChain<S>& c = slot.chain;
+      if (c.size == 0) return false;
+      const band_detail::SlabTest<S> slab(a_, b_, n_, chord_, c.pt[0], c.pt[c.size - 1], slot.thickness);
+      return slab.clear_at(direction_of(range.lo)) && slab.clear_at(direction_of(range.hi));
+    }
   }
 
   // Intersects the range with the half-plane d.w >= 0.
@@ -324,6 +373,7 @@ class BandPair {
   Vec2<S> n_{};
   S f_{};  // the frame's scale: lengths in u_, n_, area and offset are times f_
   S reach_{};  // rounding's reach around a and b (band_numeric.hpp)
+  S chord_{};  // |b - a| (floating point only)
 };
 
 }  // namespace kerf::fit

@@ -85,6 +85,10 @@ struct BandChainSlot {
   BandChain<S> chain{};
   Vec2<S> box_lo{};  // the chain's bounding box (the pair test's snapping
   Vec2<S> box_hi{};  // skips a chain whose box is far from both ends)
+  // (Floating point.) How far the chain strays from the segment between its
+  // ends: the chain lies in that segment thickened by this much, which the
+  // pair test checks in one go before the chain's own conditions.
+  S thickness{};
 };
 
 template <class S>

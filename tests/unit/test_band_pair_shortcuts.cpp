@@ -1,0 +1,139 @@
+// The band pair test takes two shortcuts when the region caches its chains
+// (band_pair.hpp): the slab test, which passes a cell whose chain lies
+// clear of the arc's disc at both ends of the range, and the cells that
+// bound the last test of a start, visited first. Both only skip work, so
+// every pair must get the verdict that the full conditions give without a
+// cache, and the same range: bit for bit with the slab test; with the cells
+// visited in another order, to rounding (a segment's condition is skipped
+// when clear at the range's ends, and where a root's cut lands within
+// rounding of an end, whether it is applied depends on the range then).
+// Checked pair by pair, both ways round, on the test curves, a jittered and
+// a zigzag path and corpus polylines, with symmetric and one-sided widths.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "io/band_storage.hpp"
+#include "io/gcode_reader.hpp"
+#include "kerf/fit/band_fit.hpp"
+#include "kerf/fit/band_pair.hpp"
+#include "typed_core_helpers.hpp"
+
+namespace {
+
+using VD = kerf::Vec2<double>;
+using kerf::fit::BandPair;
+using kerf::fit::BandRegion;
+using kerf::fit::BandWidth;
+using kerf::fit::PsiRange;
+
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+// Pseudo-angles lie in [0, 2]: a few ulps of 2.
+constexpr double kRounding = 1e-13;
+
+struct Tally {
+  std::size_t pairs = 0;
+  std::size_t valid = 0;
+};
+
+// Every pair i -> j with j - i <= span, in the order a search asks them.
+void expect_same_verdicts(const std::vector<VD>& p, BandWidth<double> width, const std::string& what,
+                          Tally& tally) {
+  const std::size_t n = p.size();
+  const std::vector<BandWidth<double>> w(n, width);
+  kerf::io::BandStorage storage(n);
+  const kerf::fit::BandWorkspace<double> ws = storage.workspace();
+  const auto built = kerf::fit::band_region<double>({p.data(), n}, {w.data(), n}, ws);
+  ASSERT_TRUE(built.ok()) << what;
+  const BandRegion<double> plain = built.value();
+  BandRegion<double> cached = plain;
+  cached.cache_chains(ws.chains);
+  ASSERT_FALSE(ws.chains.empty()) << what;
+  constexpr std::uint32_t kSpan = 48;
+  const auto last = static_cast<std::uint32_t>(n - 1);
+  for (std::uint32_t i = 0; i < last; ++i) {
+    for (const int orient : {1, -1}) {
+      std::uint32_t binding[2] = {0, 0};  // as the search keeps it for one start
+      for (std::uint32_t j = i + 1; j <= last && j - i <= kSpan; ++j) {
+        PsiRange<double> full, slab, bound;
+        std::uint32_t fail_full = 0, fail_slab = 0, fail_bound = 0;
+        const bool ok_full = BandPair<double>(plain, i, j, orient).run(full, fail_full);
+        const bool ok_slab = BandPair<double>(cached, i, j, orient).run(slab, fail_slab);
+        const bool ok_bound = BandPair<double>(cached, i, j, orient).run(bound, fail_bound, binding);
+        const std::string at = what + " pair " + std::to_string(i) + "->" + std::to_string(j) +
+                               (orient > 0 ? " ccw" : " cw");
+        ++tally.pairs;
+        ASSERT_EQ(ok_full, ok_slab) << at;
+        ASSERT_EQ(ok_full, ok_bound) << at;
+        if (!ok_full) continue;
+        ++tally.valid;
+        EXPECT_TRUE(same_bits(full.lo, slab.lo) && same_bits(full.hi, slab.hi))
+            << at << ": [" << full.lo << ", " << full.hi << "] vs slab [" << slab.lo << ", " << slab.hi << "]";
+        EXPECT_NEAR(full.lo, bound.lo, kRounding) << at;
+        EXPECT_NEAR(full.hi, bound.hi, kRounding) << at;
+      }
+    }
+  }
+}
+
+void check_widths(const std::vector<VD>& p, double tol, const std::string& what, Tally& tally) {
+  const BandWidth<double> widths[] = {{tol, tol}, {0.0, tol}, {tol, 0.0}, {tol / 3, tol}};
+  for (const BandWidth<double>& w : widths)
+    expect_same_verdicts(p, w, what + " widths " + std::to_string(w.left) + "/" + std::to_string(w.right),
+                         tally);
+}
+
+TEST(BandPairShortcuts, SameVerdictsAndRangesOnTheTestCurves) {
+  Tally tally;
+  for (const char* curve : {"parabola.txt", "circle.txt", "ellipse.txt", "sine.txt", "spiral.txt"}) {
+    const std::vector<VD> p = kerf::test::load_curve(curve);
+    ASSERT_GT(p.size(), 2u) << curve;
+    for (double tol : {0.01, 0.05}) check_widths(p, tol, std::string(curve) + " tol " + std::to_string(tol), tally);
+  }
+  // Many pairs fit: the shortcuts had work to skip.
+  EXPECT_GT(tally.valid, tally.pairs / 10) << tally.valid << " of " << tally.pairs;
+}
+
+TEST(BandPairShortcuts, SameVerdictsAndRangesOnJitterAndZigzags) {
+  Tally tally;
+  std::vector<VD> jitter, zigzag;
+  std::uint32_t seed = 12345;
+  auto noise = [&] {
+    seed = seed * 1664525u + 1013904223u;
+    return static_cast<double>(seed >> 8) / 16777216.0 - 0.5;
+  };
+  for (int k = 0; k < 300; ++k) {
+    const double t = 0.02 * k;
+    jitter.push_back({10 * std::cos(t) + 0.004 * noise(), 10 * std::sin(t) + 0.004 * noise()});
+    zigzag.push_back({0.3 * k, (k % 4 < 2 ? 0.05 : -0.05) * (1 + (k % 7))});
+  }
+  check_widths(jitter, 0.01, "jittered circle", tally);
+  check_widths(zigzag, 0.1, "zigzag", tally);
+  EXPECT_GT(tally.valid, 0u);
+}
+
+TEST(BandPairShortcuts, SameVerdictsAndRangesOnCorpusPolylines) {
+  Tally tally;
+  const kerf::io::GcodeFile g =
+      kerf::io::read_gcode(std::string(KERF_TEST_DATA_DIR) + "/gcode/cncjs_tball-pocket.gcode");
+  ASSERT_TRUE(g.ok) << g.line << ": " << g.reason;
+  std::size_t taken = 0;
+  for (std::size_t k = 0; k < g.polylines.size() && taken < 4; ++k) {
+    std::vector<VD> p;
+    for (const VD& v : g.polylines[k].points)
+      if (p.empty() || !(p.back() == v)) p.push_back(v);
+    if (p.size() < 40) continue;
+    if (p.size() > 400) p.resize(400);
+    ++taken;
+    expect_same_verdicts(p, {0.025, 0.025}, "tball-pocket polyline " + std::to_string(k + 1), tally);
+  }
+  EXPECT_EQ(taken, 4u);
+  EXPECT_GT(tally.valid, tally.pairs / 10) << tally.valid << " of " << tally.pairs;
+}
+
+}  // namespace
