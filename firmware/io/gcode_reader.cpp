@@ -555,9 +555,11 @@ void sample_arc(Vec2<double> from, Vec2<double> to, Vec2<double> c, bool ccw, do
   double sweep = ccw ? a1 - a0 : a0 - a1;
   while (sweep <= 1e-12) sweep += two_pi;  // equal ends: a full circle
   const double step = r > chord ? 2 * std::acos(1 - chord / r) : sweep;
-  std::size_t n = static_cast<std::size_t>(std::ceil(sweep / step));
-  if (n < 1) n = 1;
-  if (n > 100000) n = 100000;
+  // At most 100000 points; a radius past ~1e13 chords makes the step 0
+  // (1 - chord / r rounds to 1), and the quotient inf.
+  constexpr double kMostPoints = 100000;
+  const double parts = step > 0 ? std::ceil(sweep / step) : kMostPoints;
+  const std::size_t n = static_cast<std::size_t>(std::clamp(parts, 1.0, kMostPoints));
   for (std::size_t k = 1; k < n; ++k) {
     const double a = a0 + (ccw ? 1 : -1) * sweep * static_cast<double>(k) / static_cast<double>(n);
     out.push_back({c.x + r * std::cos(a), c.y + r * std::sin(a)});

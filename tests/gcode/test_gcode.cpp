@@ -219,6 +219,20 @@ TEST(GcodeJob, SplitsAtRapidsAndTorchOff) {
   EXPECT_EQ(job.point_lines.back(), 15u);
 }
 
+// An arc of a radius so large that its sampling step rounds to 0 (found by
+// fuzz_gcode; UBSan: inf converted to a count) is sampled with the
+// largest count, its points finite.
+TEST(GcodeJob, AnArcOfHugeRadiusIsSampledWithinTheLimit) {
+  const std::string text = "G21 G90\nG0 X0 Y0\nG1 X0 Y1\nG3 X1 Y1 I0.5 J-100000000000000\n";
+  kerf::io::PointFile job;
+  std::string error;
+  ASSERT_TRUE(kerf::io::gcode_job_from(parse_gcode(text, "huge.nc"), job, error)) << error;
+  ASSERT_GE(job.points.size(), 3u);
+  EXPECT_LE(job.points.size(), 2u + 100000u);
+  for (const auto& p : job.points) ASSERT_TRUE(std::isfinite(p.x) && std::isfinite(p.y));
+  EXPECT_EQ(job.points.back().x, 1.0);
+}
+
 TEST(Weld, CorpusFilesPassTheChecker) {
   struct Case {
     const char* file;

@@ -1,9 +1,11 @@
 // The band pair test skips snapping chain points to the piece's ends when a
-// cached chain's bounding box is far from both (band_pair.hpp, apart());
-// without a chain cache every point is snapped as before. The two must make
+// cached chain's bounding box is far from both (band_pair.hpp, apart()), and
+// then tries the chain's slab first (band_slab.hpp); without a chain cache
+// every point is snapped and every chain condition taken. The two must make
 // the same decisions: the same pieces, bit for bit, on the test curves and
 // the G-code corpus, with symmetric and one-sided widths (a side of width 0
-// or below the coordinates' resolution is where snapping matters).
+// or below the coordinates' resolution is where snapping matters). Pair by
+// pair, and the cells visited in another order: test_band_pair_shortcuts.cpp.
 #include <gtest/gtest.h>
 
 #include <cstring>

@@ -34,7 +34,11 @@
 // interval [lo, hi], kept as pseudo-angles (fit/angle_set.hpp): no
 // trigonometry and no square roots, and the line is simply psi = 0. This is
 // the paper's test restricted to the bisector, done per pair instead of
-// keeping the 2-D regions: the search's hints make failing pairs O(1).
+// keeping the 2-D regions: the search's hints make failing pairs O(1). In
+// floating point a cached chain is first tried whole, as a slab clear of the
+// disc at both ends of the range (fit/band_slab.hpp): most cells of a piece
+// that fits pass there, and the cells that bound a start's last test are
+// visited first (run()), so that the range is narrow from the start.
 #pragma once
 
 #include <cstdint>
