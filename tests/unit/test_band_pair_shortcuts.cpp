@@ -58,7 +58,8 @@ void expect_same_verdicts(const std::vector<VD>& p, BandWidth<double> width, con
   const auto last = static_cast<std::uint32_t>(n - 1);
   for (std::uint32_t i = 0; i < last; ++i) {
     for (const int orient : {1, -1}) {
-      std::uint32_t binding[2] = {0, 0};  // as the search keeps it for one start
+      // As the search keeps it for one start.
+      std::uint32_t binding[2] = {BandPair<double>::kNoCell, BandPair<double>::kNoCell};
       for (std::uint32_t j = i + 1; j <= last && j - i <= kSpan; ++j) {
         PsiRange<double> full, slab, bound;
         std::uint32_t fail_full = 0, fail_slab = 0, fail_bound = 0;

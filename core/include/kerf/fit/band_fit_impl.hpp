@@ -27,7 +27,8 @@ struct Oracle {
   S guard_eps;                        // the longest half gate
   // Per orientation, the cells that bound the last successful test
   // (BandPair::run): one search's memory, so each search has its own.
-  mutable std::uint32_t binding[2][2] = {{0, 0}, {0, 0}};
+  mutable std::uint32_t binding[2][2] = {{BandPair<S>::kNoCell, BandPair<S>::kNoCell},
+                                         {BandPair<S>::kNoCell, BandPair<S>::kNoCell}};
 
   static constexpr std::uint32_t kMarkBits = 15;
   static constexpr std::uint32_t kMarkMask = (1u << kMarkBits) - 1;

@@ -62,6 +62,8 @@ struct PsiRange {
 template <class S>
 class BandPair {
  public:
+  static constexpr std::uint32_t kNoCell = 0xFFFFFFFFu;
+
   BandPair(const BandRegion<S>& r, std::uint32_t i, std::uint32_t j, int orient)
       : r_(r), i_(i), j_(j), orient_(orient), a_(r.point(i)), b_(r.point(j)) {
     const Vec2<S> u = b_ - a_;
@@ -122,8 +124,9 @@ class BandPair {
   // would bring them together.
   //
   // `binding`, if given, names two cells (any values; those outside the
-  // piece are ignored) visited first, and receives after a success the
-  // cells that last raised lo and lowered hi. The search passes the cells
+  // piece, kNoCell for one, are ignored) visited first, and receives after
+  // a success the cells that last raised lo and lowered hi (kNoCell: none
+  // did, the ends bound it). The search passes the cells
   // that bound the previous test of the same start and orientation: the
   // next end point is usually bound by the same cells, and with the range
   // narrowed at once the other cells pass the quick slab test
@@ -134,8 +137,8 @@ class BandPair {
       fail = i_;
       return false;
     }
-    std::uint32_t first[2] = {j_, j_};  // j_: none
-    std::uint32_t bound[2] = {j_, j_};  // the last cell that moved lo, hi
+    std::uint32_t first[2] = {kNoCell, kNoCell};
+    std::uint32_t bound[2] = {kNoCell, kNoCell};  // the last cell that moved lo, hi
     auto visit = [&](std::uint32_t k) {
       const PsiRange<S> before = range;
       if (!cell(k, range)) {
