@@ -117,12 +117,7 @@ bool split_words(GBlock& b, Scratch& sc, std::string& reason) {
       while (j < s.size() && is_blank(s[j])) ++j;
       const std::size_t number_at = j;
       Number num;
-      bool plus = false;
-      if (j < s.size() && (s[j] == '+' || s[j] == '-')) {
-        num.negative = s[j] == '-';
-        plus = !num.negative;
-        ++j;
-      }
+      if (j < s.size() && (s[j] == '+' || s[j] == '-')) num.negative = s[j++] == '-';
       bool point = false;
       while (j < s.size()) {
         const char d = s[j];
@@ -154,7 +149,7 @@ bool split_words(GBlock& b, Scratch& sc, std::string& reason) {
       while (end > i && is_blank(s[end - 1])) --end;
       GWord w;
       w.letter = letter;
-      if (plus || !exact_value(num, w.value)) {
+      if (!exact_value(num, w.value)) {
         std::string number;  // sign, digits and point, without the blanks between
         for (std::size_t k = number_at; k < end; ++k)
           if (!is_blank(s[k])) number += s[k];
@@ -380,21 +375,21 @@ void bind_spans(GcodeFile& f, const GcodeFile::Source& src) {
 // for a '\r' before it.
 class LineEnds {
  public:
-  explicit LineEnds(std::string_view text) : text_(text) {}
+  explicit LineEnds(std::string_view text) : text_(text), next_nl_(find('\n', 0, text.size())) {}
   std::size_t from(std::size_t at) {
-    if (!started_ || next_nl_ < at) {
-      started_ = true;
-      const void* nl = std::memchr(text_.data() + at, '\n', text_.size() - at);
-      next_nl_ = nl != nullptr ? static_cast<std::size_t>(static_cast<const char*>(nl) - text_.data()) : text_.size();
-    }
-    const void* cr = std::memchr(text_.data() + at, '\r', next_nl_ - at);
-    return cr != nullptr ? static_cast<std::size_t>(static_cast<const char*>(cr) - text_.data()) : next_nl_;
+    if (next_nl_ < at) next_nl_ = find('\n', at, text_.size());
+    return find('\r', at, next_nl_);
   }
 
  private:
+  // The first c in [at, end), or end.
+  std::size_t find(char c, std::size_t at, std::size_t end) const {
+    const void* p = std::memchr(text_.data() + at, c, end - at);
+    return p != nullptr ? static_cast<std::size_t>(static_cast<const char*>(p) - text_.data()) : end;
+  }
+
   std::string_view text_;
-  std::size_t next_nl_ = 0;  // the first '\n' at or after the last `at` (or the text's size)
-  bool started_ = false;     // next_nl_ is set
+  std::size_t next_nl_;  // the first '\n' at or after the last `at` (or the text's size)
 };
 
 GcodeFile parse_source(std::string text_in, std::string display_name) {

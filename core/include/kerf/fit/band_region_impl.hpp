@@ -158,9 +158,8 @@ __attribute__((noinline)) void BandRegion<S>::fill_slot(std::uint32_t k, int sid
   slot.box_hi = hi;
   if constexpr (band_detail::kFloating<S>) {
     S thickness = S(0);
-    if (c.size > 0)
-      for (int t = 1; t + 1 < c.size; ++t)
-        thickness = max_of(thickness, distance_to_line_segment(c.pt[0], c.pt[c.size - 1], c.pt[t]));
+    for (int t = 1; t + 1 < c.size; ++t)
+      thickness = max_of(thickness, distance_to_line_segment(c.pt[0], c.pt[c.size - 1], c.pt[t]));
     slot.thickness = thickness;
   }
 }

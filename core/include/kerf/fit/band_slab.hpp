@@ -16,7 +16,6 @@
 // of which |b - a| t + d.y t^2 is an upper bound. Floating point only.
 #pragma once
 
-#include "kerf/core/scalar.hpp"
 #include "kerf/geom/vec2.hpp"
 
 namespace kerf::fit::band_detail {
