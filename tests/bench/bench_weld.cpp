@@ -48,8 +48,8 @@
 #include <string>
 #include <vector>
 
-#include "cli/weld.hpp"
-#include "io/gcode_reader.hpp"
+#include "weld/weld.hpp"
+#include "job/gcode_reader.hpp"
 
 namespace {
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/fit_job.hpp"
+#include "job/fit_job.hpp"
 #include "kerf/geom/segment.hpp"
 #include "kerf/hal/segment_link.hpp"
 

@@ -3,8 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "can_jobs.hpp"
-#include "control/can_plant.hpp"
-#include "control/sim_machine.hpp"
+#include "simulated/can_plant.hpp"
+#include "simulated/sim_machine.hpp"
 
 namespace kerf::test {
 namespace {

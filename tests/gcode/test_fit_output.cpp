@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
-#include "cli/biarc_job.hpp"
-#include "cli/fit_job.hpp"
+#include "job/biarc_job.hpp"
+#include "job/fit_job.hpp"
 #include "io/fit_gcode.hpp"
 #include "io/fit_svg.hpp"
-#include "io/gcode_reader.hpp"
+#include "job/gcode_reader.hpp"
 #include "weld_checker.hpp"
 
 namespace {

@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "cli/weld.hpp"
+#include "weld/weld.hpp"
 #include "kerf/geom/segment.hpp"
-#include "io/gcode_reader.hpp"
+#include "job/gcode_reader.hpp"
 #include "weld_checker.hpp"
 
 namespace {

@@ -10,8 +10,8 @@
 #include <utility>
 #include <vector>
 
-#include "cli/weld.hpp"
-#include "io/gcode_reader.hpp"
+#include "weld/weld.hpp"
+#include "job/gcode_reader.hpp"
 
 namespace {
 

@@ -1,0 +1,116 @@
+#include "app/weld_command.hpp"
+
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <cerrno>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+
+#include "app/fit_command.hpp"
+#include "job/fit_job.hpp"
+#include "io/options.hpp"
+#include "weld/weld.hpp"
+#include "job/gcode_reader.hpp"
+#include "io/output_file.hpp"
+
+namespace kerf::cli {
+
+CLI::App* add_weld_command(CLI::App& app, WeldCommandOptions& opts) {
+  CLI::App* weld = app.add_subcommand(
+      "weld", "Replace the G1 polylines of a G-code file with G2/G3 arcs within --tol (mm)");
+  weld->add_option("--tol", opts.tol, "Largest deviation from the input path, in mm (> 0)")
+      ->type_name("EPS")
+      ->required();
+  weld->add_option("--criterion", opts.criterion,
+                   "band (the arcs stay within tol of the polyline) or vertex (the points within "
+                   "tol of their arc; the arcs are checked against the band too)")
+      ->type_name("NAME")
+      ->capture_default_str();
+  weld->add_option("--decimals", opts.decimals,
+                   "Digits after the point in the output (default: as many as the input's X/Y)")
+      ->type_name("D");
+  weld->add_flag("--no-split", opts.no_split,
+                 "Do not fit separately at turns sharper than 90 degrees (slower, rarely fewer moves)");
+  weld->add_option("--threads", opts.threads,
+                   "Threads that fit polylines (default 0: one per core; 1: none besides the main one); "
+                   "the output is the same for any count")
+      ->type_name("N");
+  weld->add_option("in", opts.in, "G-code file; - for stdin")->type_name("IN")->required();
+  weld->add_option("out", opts.out, "Output file (written whole or not at all); - for stdout")
+      ->type_name("OUT")
+      ->required();
+  return weld;
+}
+
+int run_weld(const WeldCommandOptions& opts) {
+  WeldOptions w;
+  std::string error;
+  if (!parse_length("--tol", opts.tol, false, w.tol_mm, error)) return usage_error(error);
+  if (!criterion_supported(opts.criterion))
+    return usage_error("--criterion: unknown criterion " + quoted(opts.criterion) +
+                       " (expected vertex or band)");
+  w.criterion = opts.criterion;
+  if (!opts.decimals.empty()) {
+    char* end = nullptr;
+    errno = 0;
+    const long d = std::strtol(opts.decimals.c_str(), &end, 10);
+    if (errno != 0 || *end != '\0' || d < 0 || d > 9)
+      return usage_error("--decimals: expected a whole number from 0 to 9, got " + quoted(opts.decimals));
+    w.decimals = static_cast<int>(d);
+  }
+  w.split_turns = !opts.no_split;
+  if (!opts.threads.empty()) {
+    char* end = nullptr;
+    errno = 0;
+    const long n = std::strtol(opts.threads.c_str(), &end, 10);
+    if (errno != 0 || end == opts.threads.c_str() || *end != '\0' || n < 0 || n > 1024)
+      return usage_error("--threads: expected a whole number from 0 (one per core) to 1024, got " +
+                         quoted(opts.threads));
+    w.threads = static_cast<int>(n);
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  const io::GcodeFile g = io::read_gcode(opts.in);
+  if (!g.ok) {
+    std::fprintf(stderr, "kerf: %s\n", io::describe_error(g).c_str());
+    return kExitUsage;
+  }
+  // Progress on a terminal only, at most five times a second.
+  bool shown = false;
+  auto last = std::chrono::steady_clock::now();
+  if (::isatty(STDERR_FILENO) == 1 && g.blocks.size() > 20000) {
+    w.progress = [&](std::size_t line, std::size_t lines) {
+      const auto now = std::chrono::steady_clock::now();
+      if (now - last < std::chrono::milliseconds(200)) return;
+      last = now;
+      shown = true;
+      std::fprintf(stderr, "\rkerf weld: line %zu of %zu (%.0f%%)", line, lines,
+                   100.0 * static_cast<double>(line) / static_cast<double>(lines));
+    };
+  }
+  std::string text;
+  WeldStats stats;
+  const bool welded = weld_gcode(g, w, text, stats, error);
+  if (shown) std::fprintf(stderr, "\r\033[K");  // clear the progress line
+  if (!welded) {
+    std::fprintf(stderr, "kerf: %s\n", error.c_str());
+    return kExitFailure;
+  }
+  if (!io::write_output(opts.out, text)) {
+    std::fprintf(stderr, "kerf: %s: %s\n", opts.out.c_str(), std::strerror(errno));
+    return kExitFailure;
+  }
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  // The summary goes to stdout, unless the G-code does.
+  std::FILE* report = opts.out == "-" ? stderr : stdout;
+  std::fprintf(report,
+               "input moves: %zu\noutput moves: %zu\narcs: %zu\nmax deviation: %.6f mm\n"
+               "kept for rounding: %zu pieces\ntime: %.3f s (%.0f lines/s)\n",
+               stats.input_moves, stats.output_moves, stats.arcs, stats.max_deviation_mm,
+               stats.kept_pieces, seconds, seconds > 0 ? static_cast<double>(g.blocks.size()) / seconds : 0.0);
+  return kExitOk;
+}
+
+}  // namespace kerf::cli
