@@ -9,6 +9,7 @@
 
 #include "job/biarc_job.hpp"
 #include "app/fit_command.hpp"
+#include "job/fit_fixed.hpp"
 #include "job/fit_job.hpp"
 #include "job/fit_write.hpp"
 #include "io/options.hpp"

@@ -8,7 +8,7 @@
 #include "app/fit_command.hpp"
 #include "app/plan_command.hpp"
 #include "app/run_options.hpp"
-#include "simulated/sim_options.hpp"
+#include "app/sim_options.hpp"
 #include "app/weld_command.hpp"
 #if KERF_HAVE_MODBUS
 #include "app/run_command.hpp"

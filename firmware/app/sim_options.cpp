@@ -2,7 +2,7 @@
 // same everywhere; running it needs libmodbus (sim_command.cpp).
 #include <CLI/CLI.hpp>
 
-#include "simulated/sim_options.hpp"
+#include "app/sim_options.hpp"
 
 namespace kerf::cli {
 

@@ -5,8 +5,6 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "app/fit_command.hpp"
-
 namespace kerf::cli {
 
 std::string quoted(const std::string& s) { return "\"" + s + "\""; }

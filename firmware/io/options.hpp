@@ -7,6 +7,11 @@
 
 namespace kerf::cli {
 
+// Exit codes of the kerf command.
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitFailure = 1;  // the fit or the output failed
+inline constexpr int kExitUsage = 2;    // bad options or bad input
+
 std::string quoted(const std::string& s);
 
 // Prints "kerf: message" on stderr; returns kExitUsage (2).

@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
 #include <vector>
 
+#include "io/options.hpp"
 #include "kerf/core/fixed_convert.hpp"
 #include "kerf/fit/band_fit.hpp"
 
@@ -84,6 +87,34 @@ Result<fit::Fit<double>> fit_band_fixed(Span<const Vec2<double>> pts,
   for (const fit::BandWidth<double>& b : widths) widest = std::max({widest, b.left, b.right});
   return fit::Fit<double>{r.value().pieces, to_double(r.value().max_error),
                           pieces > 0 ? to_double(r.value().tol) : widest};
+}
+
+// --numeric fixed: every coordinate inside Q31.32's range (else FILE:LINE),
+// and a tol (0: none given) the grid resolves at the points' magnitude.
+bool fixed_fits(const io::PointFile& in, double tol) {
+  for (std::size_t k = 0; k < in.points.size(); ++k) {
+    const Vec2<double> p = in.points[k];
+    if (std::fabs(p.x) < kFixedLimit && std::fabs(p.y) < kFixedLimit) continue;
+    std::fprintf(stderr,
+                 "%s:%zu: coordinate out of the fixed-point fit's range (|x|, |y| < 2^30 = "
+                 "1073741824) for --numeric fixed: \"%.17g\"\n",
+                 in.file.c_str(), in.point_lines[k], std::fabs(p.x) < kFixedLimit ? p.y : p.x);
+    return false;
+  }
+  if (tol == 0.0) return true;
+  const double finest = fixed_min_tol(Span<const Vec2<double>>(in.points.data(), in.points.size()));
+  char buf[200];
+  if (tol >= kFixedLimit)
+    std::snprintf(buf, sizeof buf, "%.6g is out of the fixed-point fit's range (< 2^30 = 1073741824)", tol);
+  else if (tol < finest)
+    std::snprintf(buf, sizeof buf,
+                  "%.6g is finer than the fixed-point fit resolves for these points (at least "
+                  "%.3g; or use --numeric double)",
+                  tol, finest);
+  else
+    return true;
+  usage_error(std::string("--tol: ") + buf);
+  return false;
 }
 
 }  // namespace kerf::cli

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 
+#include "io/point_file.hpp"
 #include "kerf/fit/band_region.hpp"
 #include "kerf/fit/fit.hpp"
 
@@ -27,6 +28,11 @@ inline constexpr double kFixedLimit = 1073741824.0;
 // The finest tol a fixed-point fit of these points honours: 16 times
 // fixed_fit_slack, so that the grid's slack stays a small part of the tol.
 double fixed_min_tol(Span<const Vec2<double>> pts);
+
+// --numeric fixed: every coordinate of `in` inside the fixed-point fit's
+// range (else FILE:LINE on stderr), and a tol (0: none given) the grid
+// resolves at the points' magnitude (else a usage error).
+bool fixed_fits(const io::PointFile& in, double tol);
 
 // fit_min_count (pieces == 0) or fit_min_error (pieces > 0) in Fixed; out
 // holds the pieces in double.

@@ -38,12 +38,6 @@ bool read_job(const std::string& file, const std::string& criterion, io::PointFi
 // criterion, else the reason, e.g. "--numeric: unknown type".
 std::string numeric_problem(const std::string& numeric, const std::string& criterion);
 
-// --numeric fixed: every coordinate of `in` inside the fixed-point fit's
-// range (else FILE:LINE on stderr), and a tol (0: none given) the grid
-// resolves at the points' magnitude (else a usage error). Defined in
-// app/fit_command.cpp.
-bool fixed_fits(const io::PointFile& in, double tol);
-
 // Fits pts (tols: one per point, or empty) at tol, in the scalar type
 // `numeric` (checked with numeric_problem first). On failure returns false
 // with `error` (no "kerf: " prefix) and `status` set. tie_break > 0 sets the

@@ -14,8 +14,9 @@
 #include <type_traits>
 #include <vector>
 
+#include "job/fit_stream.hpp"
+
 #include "job/check_fit.hpp"
-#include "app/fit_command.hpp"
 #include "job/fit_fixed.hpp"
 #include "io/options.hpp"
 #include "job/point_stream.hpp"

@@ -5,7 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "app/fit_command.hpp"
+#include "io/options.hpp"
+#include "job/fit_options.hpp"
 #include "io/fit_output.hpp"
 #include "io/point_file.hpp"
 

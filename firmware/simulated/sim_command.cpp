@@ -8,7 +8,6 @@
 #include <memory>
 #include <set>
 
-#include "app/fit_command.hpp"
 #include "job/fit_job.hpp"
 #include "control/fit_paths.hpp"
 #include "io/options.hpp"

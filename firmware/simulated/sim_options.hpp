@@ -6,10 +6,6 @@
 #include <string>
 #include <vector>
 
-namespace CLI {
-class App;
-}
-
 namespace kerf::cli {
 
 struct SimOptions {
@@ -33,7 +29,5 @@ struct SimOptions {
   std::string iface;                // can: a SocketCAN interface (vcan0); empty: the in-process bus
   std::string file;                 // empty: the built-in demo job
 };
-
-CLI::App* add_sim_command(CLI::App& app, SimOptions& opts);
 
 }  // namespace kerf::cli

@@ -1,5 +1,5 @@
 // A CanPlant through the lead's run_sim_machine (needs the Modbus build's
-// kerf_simjob, which holds run_sim_machine): the same controller, the CAN drives.
+// kerf_simulated, which holds run_sim_machine): the same controller, the CAN drives.
 #include <gtest/gtest.h>
 
 #include "can_jobs.hpp"
