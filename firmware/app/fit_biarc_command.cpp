@@ -24,11 +24,11 @@ std::string count(std::size_t n, const char* one, const char* many) {
   return std::to_string(n) + ' ' + (n == 1 ? one : many);
 }
 
-int check_biarc_options(const FitOptions& opts, double& tol, bool& estimate) {
+int check_biarc_options(const FitOptions& opts, Numeric numeric, double& tol, bool& estimate) {
   std::string error;
   if (!opts.biarc_method.empty() && opts.biarc_method != "sets" && opts.biarc_method != "paper")
     return usage_error("--biarc-method: expected sets or paper, got " + quoted(opts.biarc_method));
-  if (opts.biarc_method == "paper" && opts.numeric == "fixed")
+  if (opts.biarc_method == "paper" && numeric == Numeric::fixed)
     return usage_error("--biarc-method paper runs in double only (--numeric fixed fits with the exact sets)");
   if (opts.method != "optimal")
     return usage_error("--method: " + quoted(opts.method) +
@@ -48,21 +48,21 @@ int check_biarc_options(const FitOptions& opts, double& tol, bool& estimate) {
 
 }  // namespace
 
-int run_fit_biarc(const FitOptions& opts) {
+int run_fit_biarc(const FitOptions& opts, Numeric numeric) {
   double tol = 0.0;
   bool estimate = false;
-  if (const int rc = check_biarc_options(opts, tol, estimate); rc != kExitOk) return rc;
+  if (const int rc = check_biarc_options(opts, numeric, tol, estimate); rc != kExitOk) return rc;
   double feed = 1000.0;
   if (const int rc = check_output_options(opts, feed); rc != kExitOk) return rc;
   io::PointFile in;
-  if (!read_job(opts.file, "biarc", in, {true, opts.tangent_format == "angle"})) return kExitUsage;
+  if (!read_job(opts.file, Criterion::biarc, in, {true, opts.tangent_format == "angle"})) return kExitUsage;
   if (opts.tangents == "given" && in.tangents.empty())
     return usage_error("--tangents given: " + in.file +
                        " has no tangent columns (x y tx ty, or x y angle with --tangent-format angle)");
   if (opts.tangent_format == "angle" && in.tangents.empty())
     return usage_error("--tangent-format angle: " + in.file + " has no third column");
   const bool given = !estimate && !in.tangents.empty();
-  const bool fixed = opts.numeric == "fixed";
+  const bool fixed = numeric == Numeric::fixed;
   if (fixed && !fixed_fits(in, tol)) return kExitUsage;
 
   const std::size_t n = in.points.size();
@@ -104,7 +104,7 @@ int run_fit_biarc(const FitOptions& opts) {
   total.tol = tol;
 
   io::FitReport report;
-  report.criterion = "biarc";
+  report.criterion = to_string(Criterion::biarc);
   report.method = opts.method.c_str();
   report.fit = total;
   report.pieces = {arcs.data(), arcs.size()};

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -46,7 +47,6 @@ bool parse_method(const std::string& text, fit::Method& method) {
   else return false;
   return true;
 }
-
 
 }  // namespace
 
@@ -123,12 +123,11 @@ CLI::App* add_fit_command(CLI::App& app, FitOptions& opts) {
 namespace {
 
 // Checks the options that do not depend on the input; 0 when they are fine.
-int check_options(const FitOptions& opts, bool band, fit::Method& method, std::uint32_t& pieces,
-                  double& tol) {
+int check_options(const FitOptions& opts, std::optional<Criterion> criterion, std::optional<Numeric> numeric,
+                  fit::Method& method, std::uint32_t& pieces, double& tol) {
   std::string error;
-  if (!band && opts.criterion != "vertex")
-    return usage_error("--criterion: unknown criterion " + quoted(opts.criterion) +
-                       " (expected vertex, band or biarc)");
+  const bool band = criterion == Criterion::band;
+  if (!band && criterion != Criterion::vertex) return usage_error(unknown_criterion(opts.criterion));
   if (!parse_method(opts.method, method))
     return usage_error("--method: unknown method " + quoted(opts.method) +
                        " (expected optimal, esgi-max or esgi-mean)");
@@ -137,8 +136,7 @@ int check_options(const FitOptions& opts, bool band, fit::Method& method, std::u
                        " is a vertex-criterion rule; --criterion band is always optimal");
   if (!band && (!opts.tol_left.empty() || !opts.tol_right.empty()))
     return usage_error("--tol-left and --tol-right need --criterion band");
-  if (const std::string bad = numeric_problem(opts.numeric, opts.criterion); !bad.empty())
-    return usage_error(bad);
+  if (!numeric) return usage_error(unknown_numeric(opts.numeric));
   if (!opts.tie_break.empty() && opts.tie_break != "smallest" && opts.tie_break != "none") {
     std::string msg = "--tie-break: expected smallest or none, got ";  // += (armhf -Wrestrict)
     msg += quoted(opts.tie_break);
@@ -165,29 +163,32 @@ int check_options(const FitOptions& opts, bool band, fit::Method& method, std::u
 }  // namespace
 
 int run_fit(const FitOptions& opts) {
-  if (opts.stream || !opts.window.empty()) return run_fit_stream(opts);
+  // Unknown names stay empty here; each check below refuses them in its own words.
+  const std::optional<Criterion> criterion = parse_criterion(opts.criterion);
+  const std::optional<Numeric> numeric = parse_numeric(opts.numeric);
+  if (opts.stream || !opts.window.empty()) return run_fit_stream(opts, criterion, numeric);
   if (!opts.extent.empty()) return usage_error("--extent needs --stream");
-  if (opts.criterion == "biarc") {
-    if (const std::string bad = numeric_problem(opts.numeric, opts.criterion); !bad.empty())
-      return usage_error(bad);
+  if (criterion == Criterion::biarc) {
+    if (!numeric) return usage_error(unknown_numeric(opts.numeric));
     if (!opts.tie_break.empty()) return usage_error("--tie-break: for the vertex and band criteria");
-    return run_fit_biarc(opts);
+    return run_fit_biarc(opts, *numeric);
   }
   if (!opts.tangents.empty() || opts.tangent_format != "vector")
     return usage_error("--tangents and --tangent-format need --criterion biarc");
   if (!opts.biarc_method.empty()) return usage_error("--biarc-method needs --criterion biarc");
-  const bool band = opts.criterion == "band";
+  const bool band = criterion == Criterion::band;
   const bool by_pieces = !opts.pieces.empty();
   const bool tie_break = opts.tie_break != "none";
   fit::Method method{};
   std::uint32_t pieces = 0;
   double tol = 0.0;
-  if (const int rc = check_options(opts, band, method, pieces, tol); rc != kExitOk) return rc;
+  if (const int rc = check_options(opts, criterion, numeric, method, pieces, tol); rc != kExitOk) return rc;
+  const bool fixed = numeric == Numeric::fixed;
   double feed = 1000.0;
   if (const int rc = check_output_options(opts, feed); rc != kExitOk) return rc;
 
   io::PointFile in;
-  if (!read_job(opts.file, opts.criterion, in)) return kExitUsage;
+  if (!read_job(opts.file, *criterion, in)) return kExitUsage;
   std::vector<fit::BandWidth<double>> widths;
   if (band) {
     std::string error;
@@ -197,7 +198,7 @@ int run_fit(const FitOptions& opts) {
 
   const std::size_t n = in.points.size();
   const Span<const Vec2<double>> pts(in.points.data(), n);
-  if (opts.numeric == "fixed" && !fixed_fits(in, by_pieces ? 0.0 : tol)) return kExitUsage;
+  if (fixed && !fixed_fits(in, by_pieces ? 0.0 : tol)) return kExitUsage;
   // A job of several paths (blank-line separated) is fitted path by path.
   std::vector<std::size_t> begins = in.path_begin;
   if (begins.empty()) begins.push_back(0);
@@ -219,14 +220,14 @@ int run_fit(const FitOptions& opts) {
     if (band) {
       io::BandStorage storage(m);
       const Span<const fit::BandWidth<double>> ws_widths(widths.data() + b, m);
-      if (opts.numeric == "fixed")
+      if (fixed)
         r = fit_band_fixed(path, ws_widths, by_pieces ? pieces : 0, dst, tie_break);
       else if (by_pieces)
         r = fit::fit_band_min_error(path, ws_widths, pieces, storage.workspace(), dst);
       else
         r = tie_break ? fit::fit_band_min_count(path, ws_widths, storage.workspace(), dst)
                       : fit::fit_band_min_count(path, ws_widths, storage.workspace(), dst, 1.0);
-    } else if (opts.numeric == "fixed") {
+    } else if (fixed) {
       r = fit_vertex_fixed(path, tol, by_pieces ? pieces : 0, method, dst, tie_break);
     } else {
       io::FitStorage storage(m);
@@ -257,7 +258,7 @@ int run_fit(const FitOptions& opts) {
     // A band piece crosses each inner point's gate, so it passes within the
     // widest width of every inner point: the vertex check applies to it too.
     // Fixed-point pieces may exceed tol by the documented quantization.
-    const double allowance = opts.numeric == "fixed" ? fixed_fit_slack(path) : 0.0;
+    const double allowance = fixed ? fixed_fit_slack(path) : 0.0;
     if (const std::string bad = check_fit(path, fitted, r.value().tol + allowance); !bad.empty()) {
       std::fprintf(stderr,
                    "kerf: %s%s: internal error: the fit fails its own check (%s); nothing written\n",
@@ -283,7 +284,7 @@ int run_fit(const FitOptions& opts) {
   const Span<const fit::Piece<double>> fitted(piece_store.data(), used);
 
   io::FitReport report;
-  report.criterion = band ? "band" : "vertex";
+  report.criterion = to_string(*criterion);
   report.method = opts.method.c_str();
   report.fit = total;
   report.pieces = fitted;

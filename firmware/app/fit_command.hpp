@@ -3,6 +3,7 @@
 #pragma once
 
 #include "io/options.hpp"
+#include "job/criterion.hpp"
 #include "job/fit_options.hpp"
 
 namespace CLI {
@@ -12,7 +13,7 @@ class App;
 namespace kerf::cli {
 
 // `kerf fit --criterion biarc` (app/fit_biarc_command.cpp).
-int run_fit_biarc(const FitOptions& opts);
+int run_fit_biarc(const FitOptions& opts, Numeric numeric);
 
 // Adds the `fit` subcommand to app, storing into opts.
 CLI::App* add_fit_command(CLI::App& app, FitOptions& opts);

@@ -6,10 +6,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <optional>
 
 #include "app/fit_command.hpp"
 #include "job/fit_job.hpp"
-#include "io/options.hpp"
 #include "io/options.hpp"
 #include "job/plan_path.hpp"
 #include "io/output_file.hpp"
@@ -61,11 +61,10 @@ int run_plan(const PlanOptions& opts) {
   std::string error;
   double tol = 0, feed = 0, period = 0, accel = 0, corner = 0, cpm = 0;
   if (!parse_length("--tol", opts.tol, false, tol, error)) return usage_error(error);
-  if (!criterion_supported(opts.criterion))
-    return usage_error("--criterion: unknown criterion \"" + opts.criterion +
-                       "\" (expected vertex, band or biarc)");
-  if (const std::string bad = numeric_problem(opts.numeric, opts.criterion); !bad.empty())
-    return usage_error(bad);
+  const std::optional<Criterion> criterion = parse_criterion(opts.criterion);
+  if (!criterion) return usage_error(unknown_criterion(opts.criterion));
+  const std::optional<Numeric> numeric = parse_numeric(opts.numeric);
+  if (!numeric) return usage_error(unknown_numeric(opts.numeric));
   if (!parse_length("--feed", opts.feed, false, feed, error) ||
       !parse_length("--period", opts.period, false, period, error) ||
       !parse_length("--accel", opts.accel, false, accel, error) ||
@@ -79,7 +78,7 @@ int run_plan(const PlanOptions& opts) {
   if (opts.trace.empty()) return usage_error("--trace: required");
 
   io::PointFile in;
-  if (!read_job(opts.file, opts.criterion, in)) return kExitUsage;
+  if (!read_job(opts.file, *criterion, in)) return kExitUsage;
   if (in.path_begin.size() > 1) {  // the interpolator runs one continuous path
     std::fprintf(stderr,
                  "kerf: %s: holds %zu paths; kerf plan runs one continuous path (kerf sim runs a job of "
@@ -88,7 +87,7 @@ int run_plan(const PlanOptions& opts) {
     return kExitUsage;
   }
   std::vector<Segment<double>> path;
-  if (!fit_path(in.points, in.tols, tol, opts.criterion, path, error, opts.numeric)) {
+  if (!fit_path(in.points, in.tols, tol, *criterion, path, error, *numeric)) {
     std::fprintf(stderr, "kerf: %s: %s\n", in.file.c_str(), error.c_str());
     return kExitFailure;
   }

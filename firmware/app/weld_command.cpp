@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <optional>
 
 #include "app/fit_command.hpp"
 #include "job/fit_job.hpp"
@@ -48,10 +49,11 @@ int run_weld(const WeldCommandOptions& opts) {
   WeldOptions w;
   std::string error;
   if (!parse_length("--tol", opts.tol, false, w.tol_mm, error)) return usage_error(error);
-  if (!criterion_supported(opts.criterion))
+  const std::optional<Criterion> criterion = parse_criterion(opts.criterion);
+  if (!criterion)
     return usage_error("--criterion: unknown criterion " + quoted(opts.criterion) +
                        " (expected vertex or band)");
-  w.criterion = opts.criterion;
+  w.criterion = *criterion;
   if (!opts.decimals.empty()) {
     char* end = nullptr;
     errno = 0;

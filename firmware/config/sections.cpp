@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <optional>
 #include <string_view>
 
 namespace kerf::config {
@@ -218,17 +219,17 @@ const char* to_string(Link::Kind k) {
 void read_fit(TableReader& r, Fit& fit) {
   std::string criterion;
   if (r.string("criterion", criterion)) {
-    if (criterion == "vertex" || criterion == "band" || criterion == "biarc")
-      fit.criterion = criterion;
+    if (const std::optional<cli::Criterion> c = cli::parse_criterion(criterion))
+      fit.criterion = *c;
     else
       r.problem("criterion", "unknown criterion " + quote(criterion) + " (expected vertex, band or biarc)");
   }
   std::string numeric;
   if (r.string("numeric", numeric)) {
-    if (numeric != "double" && numeric != "fixed")
-      r.problem("numeric", "unknown type " + quote(numeric) + " (expected double or fixed)");
+    if (const std::optional<cli::Numeric> n = cli::parse_numeric(numeric))
+      fit.numeric = *n;
     else
-      fit.numeric = numeric;
+      r.problem("numeric", "unknown type " + quote(numeric) + " (expected double or fixed)");
   }
   r.positive("tol", fit.tol);
   r.finish();

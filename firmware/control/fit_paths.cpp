@@ -6,8 +6,8 @@
 
 namespace kerf::cli {
 
-bool fit_paths(const io::PointFile& in, const std::string& criterion, double tol, double feed_mm_s,
-               FittedJob& out, std::string& error, Status& status, const std::string& numeric) {
+bool fit_paths(const io::PointFile& in, Criterion criterion, double tol, double feed_mm_s,
+               FittedJob& out, std::string& error, Status& status, Numeric numeric) {
   out = FittedJob{};
   std::vector<std::size_t> begins = in.path_begin;
   if (begins.empty()) begins.push_back(0);
@@ -46,8 +46,8 @@ bool fit_paths(const io::PointFile& in, const std::string& criterion, double tol
   return true;
 }
 
-int fit_paths_or_say(const io::PointFile& in, const std::string& criterion, double tol, double feed_mm_s,
-                     FittedJob& out, const std::string& numeric) {
+int fit_paths_or_say(const io::PointFile& in, Criterion criterion, double tol, double feed_mm_s,
+                     FittedJob& out, Numeric numeric) {
   std::string error;
   Status status = Status::ok;
   if (fit_paths(in, criterion, tol, feed_mm_s, out, error, status, numeric)) return 0;

@@ -10,6 +10,7 @@
 #include "control/job.hpp"
 #include "control/journal.hpp"
 #include "io/point_file.hpp"
+#include "job/criterion.hpp"
 #include "kerf/core/status.hpp"
 #include "kerf/fit/fit.hpp"
 
@@ -22,15 +23,15 @@ struct FittedJob {
 };
 
 // On failure returns false with `error` ("path N (line L): reason") and `status`.
-// numeric: the fit's scalar type, "double" or "fixed" (job/fit_job.hpp).
-bool fit_paths(const io::PointFile& in, const std::string& criterion, double tol, double feed_mm_s,
+// numeric: the fit's scalar type (job/criterion.hpp).
+bool fit_paths(const io::PointFile& in, Criterion criterion, double tol, double feed_mm_s,
                FittedJob& out, std::string& error, Status& status,
-               const std::string& numeric = "double");
+               Numeric numeric = Numeric::floating);
 
 // fit_paths for a command: on failure prints "kerf: FILE: reason" and
 // returns the exit code (2 for bad input, 1 otherwise); 0 on success.
-int fit_paths_or_say(const io::PointFile& in, const std::string& criterion, double tol, double feed_mm_s,
-                     FittedJob& out, const std::string& numeric = "double");
+int fit_paths_or_say(const io::PointFile& in, Criterion criterion, double tol, double feed_mm_s,
+                     FittedJob& out, Numeric numeric = Numeric::floating);
 
 // The job's journal for a run: none (empty path; the run starts at the
 // job's beginning), a new one, or with `resume` the one a previous run left,

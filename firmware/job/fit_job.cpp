@@ -12,11 +12,7 @@
 
 namespace kerf::cli {
 
-bool criterion_supported(const std::string& criterion) {
-  return criterion == "vertex" || criterion == "band" || criterion == "biarc";
-}
-
-bool read_job(const std::string& file, const std::string& criterion, io::PointFile& out,
+bool read_job(const std::string& file, Criterion criterion, io::PointFile& out,
               const JobColumns& columns) {
   if (io::is_gcode_path(file)) {  // a G-code job: its cut paths, arcs sampled
     std::string error;
@@ -25,14 +21,14 @@ bool read_job(const std::string& file, const std::string& criterion, io::PointFi
     return false;
   }
   out = io::read_points(file, columns.angles);
-  if (out.ok && !out.tols.empty() && criterion != "band") {
+  if (out.ok && !out.tols.empty() && criterion != Criterion::band) {
     out.line = out.point_lines.empty() ? 0 : out.point_lines[0];
     out.reason = "a third column (per-point tol) needs --criterion band";
     out.ok = false;
   }
-  if (out.ok && !out.tangents.empty() && (criterion != "biarc" || !columns.tangents)) {
+  if (out.ok && !out.tangents.empty() && (criterion != Criterion::biarc || !columns.tangents)) {
     out.line = out.point_lines.empty() ? 0 : out.point_lines[0];
-    out.reason = criterion != "biarc"
+    out.reason = criterion != Criterion::biarc
                      ? "tangent columns (x y tx ty) need --criterion biarc"
                      : "tangent columns are read by kerf fit only (this command estimates them)";
     out.ok = false;
@@ -41,27 +37,12 @@ bool read_job(const std::string& file, const std::string& criterion, io::PointFi
   return out.ok;
 }
 
-std::string numeric_problem(const std::string& numeric, const std::string& criterion) {
-  (void)criterion;  // every criterion has both types now
-  if (numeric != "double" && numeric != "fixed")
-    return "--numeric: unknown type \"" + numeric + "\" (expected double or fixed)";
-  return "";
-}
-
 bool fit_job(const std::vector<Vec2<double>>& pts, const std::vector<double>& tols, double tol,
-             const std::string& criterion, std::vector<fit::Piece<double>>& out,
-             std::string& error, Status& status, const std::string& numeric, double tie_break) {
+             Criterion criterion, std::vector<fit::Piece<double>>& out,
+             std::string& error, Status& status, Numeric numeric, double tie_break) {
   status = Status::invalid_argument;
-  if (!criterion_supported(criterion)) {
-    error = "--criterion: unknown criterion \"" + criterion + "\" (expected vertex, band or biarc)";
-    return false;
-  }
-  if (const std::string bad = numeric_problem(numeric, criterion); !bad.empty()) {
-    error = bad;
-    return false;
-  }
-  const bool fixed = numeric == "fixed";
-  if (criterion == "biarc") {
+  const bool fixed = numeric == Numeric::fixed;
+  if (criterion == Criterion::biarc) {
     if (!tols.empty()) {
       error = "a third column (per-point tol) needs --criterion band";
       return false;
@@ -76,7 +57,7 @@ bool fit_job(const std::vector<Vec2<double>>& pts, const std::vector<double>& to
       for (const Segment<double>& g : b.arc) out.push_back({b.first, b.last, g, b.error});
     return true;
   }
-  const bool band = criterion == "band";
+  const bool band = criterion == Criterion::band;
   if (!band && !tols.empty()) {
     error = "a third column (per-point tol) needs --criterion band";
     return false;

@@ -9,13 +9,11 @@
 #include <vector>
 
 #include "io/point_file.hpp"
+#include "job/criterion.hpp"
 #include "kerf/core/status.hpp"
 #include "kerf/fit/fit.hpp"
 
 namespace kerf::cli {
-
-// The criteria fit_job knows. Checked before the input is read.
-bool criterion_supported(const std::string& criterion);
 
 // Which extra columns the caller reads: tangents (x y tx ty, or x y angle
 // with `angles`) only `kerf fit --criterion biarc` does.
@@ -29,23 +27,17 @@ struct JobColumns {
 // torch-off). When it cannot be used (unreadable,
 // bad points, or a per-point tol or tangent column the criterion or command
 // cannot use) prints "FILE:LINE: reason" on stderr and returns false.
-bool read_job(const std::string& file, const std::string& criterion, io::PointFile& out,
+bool read_job(const std::string& file, Criterion criterion, io::PointFile& out,
               const JobColumns& columns = {});
 
-// The scalar types a fit runs in (`--numeric`, the config's fit.numeric):
-// "double", or "fixed" (kerf::Fixed, Q31.32: what a core without an FPU runs;
-// vertex, band and biarc criteria). Empty when `numeric` suits the
-// criterion, else the reason, e.g. "--numeric: unknown type".
-std::string numeric_problem(const std::string& numeric, const std::string& criterion);
-
 // Fits pts (tols: one per point, or empty) at tol, in the scalar type
-// `numeric` (checked with numeric_problem first). On failure returns false
+// `numeric`. On failure returns false
 // with `error` (no "kerf: " prefix) and `status` set. tie_break > 0 sets the
 // double vertex and band fitters' tie-break precision (fit/fit.hpp; >= 1
 // skips it); 0 keeps their own.
 bool fit_job(const std::vector<Vec2<double>>& pts, const std::vector<double>& tols, double tol,
-             const std::string& criterion, std::vector<fit::Piece<double>>& out,
-             std::string& error, Status& status, const std::string& numeric = "double",
+             Criterion criterion, std::vector<fit::Piece<double>>& out,
+             std::string& error, Status& status, Numeric numeric = Numeric::floating,
              double tie_break = 0);
 
 }  // namespace kerf::cli

@@ -22,7 +22,7 @@ struct FitOptions {
                                          // the file has them)
   std::string tangent_format = "vector";  // biarc: vector (x y tx ty) | angle (x y deg)
   std::string biarc_method;  // biarc: sets (default, fit/biarc_joints.hpp) | paper (biarc_visibility.hpp)
-  std::string numeric = "double";  // vertex and band criteria: double or fixed (kerf::Fixed)
+  std::string numeric = "double";  // double or fixed (kerf::Fixed), every criterion
   std::string tie_break;  // smallest (whole-input default) | none (--stream's only)
   bool stream = false;   // --stream: read and write piece by piece (job/fit_stream.cpp)
   std::string window;    // --stream: the points held at most

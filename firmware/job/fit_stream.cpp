@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -152,20 +153,19 @@ int check_band_sides(const FitOptions& opts, StreamSetup& st) {
   return kExitOk;
 }
 
-int check_stream_options(const FitOptions& opts, StreamSetup& st) {
+int check_stream_options(const FitOptions& opts, std::optional<Criterion> criterion, std::optional<Numeric> numeric,
+                         StreamSetup& st) {
   std::string error;
   if (!opts.stream) return usage_error("--window needs --stream");
   if (!parse_window(opts.window, st.window, error)) return usage_error(error);
-  if (opts.criterion != "vertex" && opts.criterion != "band")
+  if (criterion != Criterion::vertex && criterion != Criterion::band)
     return usage_error("--stream: fits by the vertex or band criterion, not " +
                        quoted(opts.criterion));
-  st.band = opts.criterion == "band";
+  st.band = criterion == Criterion::band;
   if (!opts.pieces.empty())
     return usage_error("--stream: needs --tol; a piece budget (--pieces) needs the whole input");
-  if (opts.numeric != "double" && opts.numeric != "fixed")
-    return usage_error(join("--numeric: unknown type ", quoted(opts.numeric)) +
-                       " (expected double or fixed)");
-  st.fixed = opts.numeric == "fixed";
+  if (!numeric) return usage_error(unknown_numeric(opts.numeric));
+  st.fixed = numeric == Numeric::fixed;
   if (!opts.extent.empty() && !parse_length("--extent", opts.extent, false, st.extent, error))
     return usage_error(error);
   if (st.fixed && opts.extent.empty())
@@ -329,9 +329,9 @@ bool fixed_tol_ok(const StreamSetup& st) {
 
 }  // namespace
 
-int run_fit_stream(const FitOptions& opts) {
+int run_fit_stream(const FitOptions& opts, std::optional<Criterion> criterion, std::optional<Numeric> numeric) {
   StreamSetup st;
-  if (const int rc = check_stream_options(opts, st); rc != kExitOk) return rc;
+  if (const int rc = check_stream_options(opts, criterion, numeric, st); rc != kExitOk) return rc;
   if (st.fixed && !fixed_tol_ok(st)) return kExitUsage;
 
   PointStream in;

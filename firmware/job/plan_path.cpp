@@ -21,8 +21,8 @@ void append_mm(std::string& out, double v) {
 }  // namespace
 
 bool fit_path(const std::vector<Vec2<double>>& pts, const std::vector<double>& tols, double tol,
-              const std::string& criterion, std::vector<Segment<double>>& out, std::string& error,
-              const std::string& numeric) {
+              Criterion criterion, std::vector<Segment<double>>& out, std::string& error,
+              Numeric numeric) {
   std::vector<fit::Piece<double>> pieces;
   Status status = Status::ok;
   if (!fit_job(pts, tols, tol, criterion, pieces, error, status, numeric)) return false;

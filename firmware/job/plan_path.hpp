@@ -15,10 +15,10 @@ namespace kerf::cli {
 // Fits the points (tols: the file's per-point column, or empty) into
 // segments with the named criterion (job/fit_job.hpp). On failure, returns
 // false and sets error to a message without the "kerf: " prefix. numeric:
-// the fit's scalar type, "double" or "fixed".
+// the fit's scalar type.
 bool fit_path(const std::vector<Vec2<double>>& pts, const std::vector<double>& tols, double tol,
-              const std::string& criterion, std::vector<Segment<double>>& out, std::string& error,
-              const std::string& numeric = "double");
+              Criterion criterion, std::vector<Segment<double>>& out, std::string& error,
+              Numeric numeric = Numeric::floating);
 
 // What the run measured from its own setpoints.
 struct PlanSummary {

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstring>
 #include <memory>
+#include <optional>
 #include <set>
 
 #include "job/fit_job.hpp"
@@ -133,11 +134,11 @@ int run_sim(const SimOptions& given) {
   if (!can && (!opts.axes.empty() || !opts.sync_ms.empty() || !opts.iface.empty()))
     return usage_error(std::string(!opts.axes.empty() ? "--axes" : !opts.sync_ms.empty() ? "--sync-ms" : "--iface") +
                        ": only with --link can");
-  const std::string criterion = opts.criterion.empty() ? cfg.fit.criterion : opts.criterion;
-  if (!criterion_supported(criterion))
-    return usage_error("--criterion: unknown criterion " + quoted(criterion) + " (expected vertex, band or biarc)");
-  const std::string numeric = opts.numeric.empty() ? cfg.fit.numeric : opts.numeric;
-  if (const std::string bad = numeric_problem(numeric, criterion); !bad.empty()) return usage_error(bad);
+  const std::optional<Criterion> criterion =
+      opts.criterion.empty() ? cfg.fit.criterion : parse_criterion(opts.criterion);
+  if (!criterion) return usage_error(unknown_criterion(opts.criterion));
+  const std::optional<Numeric> numeric = opts.numeric.empty() ? cfg.fit.numeric : parse_numeric(opts.numeric);
+  if (!numeric) return usage_error(unknown_numeric(opts.numeric));
   double tol = cfg.fit.tol, feed = cfg.cut.feed, speed = 0.0, link_timeout = cfg.link.timeout;
   if ((!opts.tol.empty() && !parse_length("--tol", opts.tol, false, tol, error)) ||
       (!opts.feed.empty() && !parse_length("--feed", opts.feed, false, feed, error)) ||
@@ -187,11 +188,11 @@ int run_sim(const SimOptions& given) {
       std::fprintf(stderr, "%s\n", io::describe_error(in).c_str());
       return kExitFailure;
     }
-  } else if (!read_job(opts.file, criterion, in)) {
+  } else if (!read_job(opts.file, *criterion, in)) {
     return kExitUsage;
   }
   FittedJob fitted;
-  if (const int rc = fit_paths_or_say(in, criterion, tol, feed / 60.0, fitted, numeric); rc != 0) return rc;
+  if (const int rc = fit_paths_or_say(in, *criterion, tol, feed / 60.0, fitted, *numeric); rc != 0) return rc;
 
   std::unique_ptr<control::Journal> journal;
   control::ResumePoint from;

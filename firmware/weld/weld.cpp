@@ -259,7 +259,7 @@ class PlanPool {
 // without it. The vertex criterion's pieces pass the band check after
 // rounding more often when they hug the points, and 1e-3 keeps the corpus's
 // counts (tests/gcode WeldCounts); coarser (1e-2) wrote more moves.
-double tie_break_for(const std::string& criterion) { return criterion == "band" ? 0.1 : 1e-3; }
+double tie_break_for(Criterion criterion) { return criterion == Criterion::band ? 0.1 : 1e-3; }
 
 unsigned weld_threads(int requested) {
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());

@@ -18,13 +18,14 @@
 #include <functional>
 #include <string>
 
+#include "job/criterion.hpp"
 #include "job/gcode_reader.hpp"
 
 namespace kerf::cli {
 
 struct WeldOptions {
   double tol_mm = 0.025;
-  std::string criterion = "band";  // "vertex" or "band"
+  Criterion criterion = Criterion::band;  // vertex or band
   int decimals = -1;               // < 0: as many as the file's X/Y words use (at least 3)
   bool split_turns = true;         // fit separately at turns sharper than 90 degrees
   double jitter = 0.02;            // fit without points within jitter * tol of their chord (0: keep all)
@@ -52,7 +53,7 @@ struct WeldStats {
 };
 
 // The tie-break precision weld uses for `criterion` (opts.tie_break < 0).
-double tie_break_for(const std::string& criterion);
+double tie_break_for(Criterion criterion);
 
 // The threads weld_gcode plans on for opts.threads == requested.
 unsigned weld_threads(int requested);
