@@ -20,10 +20,6 @@ namespace kerf::cli {
 
 namespace {
 
-std::string count(std::size_t n, const char* one, const char* many) {
-  return std::to_string(n) + ' ' + (n == 1 ? one : many);
-}
-
 int check_biarc_options(const FitOptions& opts, Numeric numeric, double& tol, bool& estimate) {
   std::string error;
   if (!opts.biarc_method.empty() && opts.biarc_method != "sets" && opts.biarc_method != "paper")
@@ -120,20 +116,12 @@ int run_fit_biarc(const FitOptions& opts, Numeric numeric) {
   if (const int rc = write_fit(opts, w, note); rc != kExitOk) return rc;
   std::size_t lines = 0;
   for (const fit::Piece<double>& a : arcs) lines += a.segment.is_arc() ? 0 : 1;
-  std::string summary = "kerf: " + in.file + ": " + count(n, "point", "points") + ", " +
-                        (begins.size() > 1 ? count(begins.size(), "path", "paths") + ", " : "") +
-                        count(arcs.size() / 2, "biarc", "biarcs") + " (" +
-                        count(arcs.size() - lines, "arc", "arcs") +
-                        (lines > 0 ? ", " + count(lines, "line", "lines") : std::string()) +
-                        "), tangents " + (given ? "given" : "estimated") + ", max error " +
-                        io::format_number(total.max_error, report.zero_below);
-  char time[64];
-  std::snprintf(time, sizeof time, ", %.3f ms", ms);
-  summary += time;
-  summary += note;
-  if (in.duplicates_dropped > 0)
-    summary += ", dropped " + count(in.duplicates_dropped, "duplicate point", "duplicate points");
-  std::fprintf(stderr, "%s\n", summary.c_str());
+  const std::string what = count(arcs.size() / 2, "biarc", "biarcs") + " (" +
+                           count(arcs.size() - lines, "arc", "arcs") +
+                           (lines > 0 ? ", " + count(lines, "line", "lines") : std::string()) +
+                           "), tangents " + (given ? "given" : "estimated") + ", max error " +
+                           io::format_number(total.max_error, report.zero_below);
+  print_fit_summary(in, begins.size(), what, ms, note);
   return kExitOk;
 }
 

@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "app/fit_options.hpp"
 #include "job/band_widths.hpp"
 #include "job/check_fit.hpp"
 #include "job/fit_fixed.hpp"
@@ -32,14 +33,6 @@ namespace kerf::cli {
 
 namespace {
 
-// "1 piece", "5 pieces".
-std::string count(std::size_t n, const char* one, const char* many) {
-  std::string s = std::to_string(n);
-  s += ' ';
-  s += n == 1 ? one : many;
-  return s;
-}
-
 bool parse_method(const std::string& text, fit::Method& method) {
   if (text == "optimal") method = fit::Method::optimal;
   else if (text == "esgi-max") method = fit::Method::esgi_max;
@@ -51,10 +44,9 @@ bool parse_method(const std::string& text, fit::Method& method) {
 }  // namespace
 
 CLI::App* add_fit_command(CLI::App& app, FitOptions& opts) {
-  CLI::App* fit = app.add_subcommand(
-      "fit", "Fit the fewest arcs within --tol of the points, or the smallest tol for --pieces K");
-  fit->add_option("--tol", opts.tol, "Largest distance of a point from its piece (> 0)")
-      ->type_name("EPS");
+  CLI::App* fit = add_fitting_command(
+      app, "fit", "Fit the fewest arcs within --tol of the points, or the smallest tol for --pieces K",
+      opts.tol);
   fit->add_option("--pieces", opts.pieces,
                   "Number of pieces: find the smallest tol instead of giving --tol")
       ->type_name("K");
@@ -95,11 +87,7 @@ CLI::App* add_fit_command(CLI::App& app, FitOptions& opts) {
                   "biarc: how a pair's valid joints are found: sets (kerf's exact joint sets, "
                   "default) or paper (the visibility regions of Drysdale-Rote-Sturm section 3)")
       ->type_name("sets|paper");
-  fit->add_option("--numeric", opts.numeric,
-                  "Scalar type of the fit: double, or fixed (Q31.32, what a core without an FPU "
-                  "runs; vertex and band criteria)")
-      ->type_name("TYPE")
-      ->capture_default_str();
+  add_numeric_option(fit, opts.numeric);
   fit->add_option("--tie-break", opts.tie_break,
                   "vertex, band: among the fewest-pieces fits, smallest (default: the one at the "
                   "smallest tol) or none (the fit at --tol itself, what --stream writes)")
@@ -114,9 +102,7 @@ CLI::App* add_fit_command(CLI::App& app, FitOptions& opts) {
                   "required with --numeric fixed, which then computes what the whole-input fit does "
                   "for inputs whose largest coordinate lies in the same power-of-two octave")
       ->type_name("E");
-  fit->add_option("file", opts.file, "Point file, one \"x y\" per line; - for stdin")
-      ->type_name("FILE|-")
-      ->required();
+  add_points_file(fit, opts.file);
   return fit;
 }
 
@@ -306,18 +292,10 @@ int run_fit(const FitOptions& opts) {
   std::string note;
   if (const int rc = write_fit(opts, w, note); rc != kExitOk) return rc;
 
-  std::string summary = "kerf: " + in.file + ": " + count(n, "point", "points") + ", " +
-                        (begins.size() > 1 ? count(begins.size(), "path", "paths") + ", " : "") +
-                        count(total.pieces, "piece", "pieces") + ", max error " +
-                        io::format_number(total.max_error, report.zero_below);
-  if (by_pieces) summary += ", tol found " + io::format_number(total.tol);
-  char time[64];
-  std::snprintf(time, sizeof time, ", %.3f ms", ms);
-  summary += time;
-  summary += note;
-  if (in.duplicates_dropped > 0)
-    summary += ", dropped " + count(in.duplicates_dropped, "duplicate point", "duplicate points");
-  std::fprintf(stderr, "%s\n", summary.c_str());
+  std::string what = count(total.pieces, "piece", "pieces") + ", max error " +
+                     io::format_number(total.max_error, report.zero_below);
+  if (by_pieces) what += ", tol found " + io::format_number(total.tol);
+  print_fit_summary(in, begins.size(), what, ms, note);
   return kExitOk;
 }
 

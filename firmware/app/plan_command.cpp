@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "app/fit_command.hpp"
+#include "app/fit_options.hpp"
 #include "job/fit_job.hpp"
 #include "io/options.hpp"
 #include "job/plan_path.hpp"
@@ -24,19 +25,13 @@ constexpr double kPi = 3.14159265358979323846;
 }  // namespace
 
 CLI::App* add_plan_command(CLI::App& app, PlanOptions& opts) {
-  CLI::App* plan = app.add_subcommand(
-      "plan", "Fit the points, then run the constant-feed interpolator and write its trace");
-  plan->add_option("--tol", opts.tol, "Largest distance of a point from its piece (> 0)")
-      ->type_name("EPS");
+  CLI::App* plan = add_fitting_command(
+      app, "plan", "Fit the points, then run the constant-feed interpolator and write its trace", opts.tol);
   plan->add_option("--criterion", opts.criterion,
                    "vertex (points within tol of their arc) or band (the whole arc within tol)")
       ->type_name("NAME")
       ->capture_default_str();
-  plan->add_option("--numeric", opts.numeric,
-                   "Scalar type of the fit: double, or fixed (Q31.32, what a core without an FPU "
-                   "runs; vertex and band criteria)")
-      ->type_name("TYPE")
-      ->capture_default_str();
+  add_numeric_option(plan, opts.numeric);
   plan->add_option("--feed", opts.feed, "Programmed feed, mm/min")->type_name("MM_PER_MIN");
   plan->add_option("--period", opts.period, "Servo period, s")->type_name("S");
   plan->add_option("--accel", opts.accel, "Acceleration limit along the path, mm/s^2")
@@ -51,9 +46,7 @@ CLI::App* add_plan_command(CLI::App& app, PlanOptions& opts) {
       ->type_name("N");
   plan->add_option("--trace", opts.trace, "Setpoint trace (CSV) to write; - for stdout")
       ->type_name("OUT.csv");
-  plan->add_option("file", opts.file, "Point file, one \"x y\" per line; - for stdin")
-      ->type_name("FILE|-")
-      ->required();
+  add_points_file(plan, opts.file);
   return plan;
 }
 

@@ -10,15 +10,25 @@ CLI::App* add_run_command(CLI::App& app, RunOptions& o) {
   CLI::App* r = app.add_subcommand(
       "run", "Cut a job on the machine: the motion board over Modbus, the torch and safety inputs on GPIO");
   r->add_option("--config", o.config, "Machine configuration (TOML)")->type_name("FILE")->required();
-  r->add_option("--journal", o.journal, "Progress journal: every completed segment, synced")->type_name("FILE");
-  r->add_flag("--resume", o.resume, "Finish the job the journal belongs to, from where it stopped");
+  add_journal_options(r, o.journal, o.resume);
   r->add_flag("--sim-gpio", o.sim_gpio,
               "Bench mode: simulate the torch and inputs (arc-OK follows the torch). Never on a machine with a torch");
-  r->add_option("--report", o.report, "Write the JSON report here")->type_name("R.json");
-  r->add_option("job", o.job, "Point file (paths separated by blank lines); - for stdin")
-      ->type_name("JOB")
-      ->required();
+  add_report_option(r, o.report);
+  add_job_file(r, "job", o.job)->type_name("JOB")->required();
   return r;
+}
+
+void add_journal_options(CLI::App* command, std::string& journal, bool& resume) {
+  command->add_option("--journal", journal, "Progress journal: every completed segment, synced")->type_name("FILE");
+  command->add_flag("--resume", resume, "Finish the job the journal belongs to, from where it stopped");
+}
+
+void add_report_option(CLI::App* command, std::string& report) {
+  command->add_option("--report", report, "Write the JSON report here")->type_name("R.json");
+}
+
+CLI::Option* add_job_file(CLI::App* command, const std::string& name, std::string& file) {
+  return command->add_option(name, file, "Point file (paths separated by blank lines); - for stdin");
 }
 
 }  // namespace kerf::cli

@@ -5,6 +5,7 @@
 
 namespace CLI {
 class App;
+class Option;
 }
 
 namespace kerf::cli {
@@ -19,5 +20,11 @@ struct RunOptions {
 };
 
 CLI::App* add_run_command(CLI::App& app, RunOptions& opts);
+
+// The options `kerf run` and `kerf sim` share, with the same help.
+void add_journal_options(CLI::App* command, std::string& journal, bool& resume);
+void add_report_option(CLI::App* command, std::string& report);
+// The job, positional `name`; the caller gives its type name.
+CLI::Option* add_job_file(CLI::App* command, const std::string& name, std::string& file);
 
 }  // namespace kerf::cli

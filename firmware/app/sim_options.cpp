@@ -2,6 +2,7 @@
 // same everywhere; running it needs libmodbus (sim_command.cpp).
 #include <CLI/CLI.hpp>
 
+#include "app/run_options.hpp"
 #include "app/sim_options.hpp"
 
 namespace kerf::cli {
@@ -30,9 +31,8 @@ CLI::App* add_sim_command(CLI::App& app, SimOptions& o) {
                 "enable-refused")
       ->type_name("FAULT");
   s->add_option("--gpio-script", o.gpio_script, "Timed GPIO events (see sim/README.md)")->type_name("FILE");
-  s->add_option("--journal", o.journal, "Progress journal: every completed segment, synced")->type_name("FILE");
-  s->add_flag("--resume", o.resume, "Finish the job the journal belongs to, from where it stopped");
-  s->add_option("--report", o.report, "Write the JSON report here")->type_name("R.json");
+  add_journal_options(s, o.journal, o.resume);
+  add_report_option(s, o.report);
   s->add_option("--trace", o.trace, "Write the executed trace (CSV) here")->type_name("T.csv");
   s->add_option("--plot", o.plot, "Write an SVG plot of the run here")->type_name("P.svg");
   s->add_option("--speed", o.speed, "Simulated s per wall s; 0 = as fast as possible")
@@ -40,8 +40,7 @@ CLI::App* add_sim_command(CLI::App& app, SimOptions& o) {
       ->capture_default_str();
   s->add_option("--link-timeout", o.link_timeout, "Give up when the link is down this long (s)")
       ->type_name("S");
-  s->add_option("file", o.file, "Point file (paths separated by blank lines); - for stdin")
-      ->type_name("FILE|-");
+  add_job_file(s, "file", o.file)->type_name("FILE|-");
   return s;
 }
 

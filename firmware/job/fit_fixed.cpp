@@ -20,6 +20,22 @@ double fixed_fit_slack(Span<const Vec2<double>> pts) {
 
 double fixed_min_tol(Span<const Vec2<double>> pts) { return 16.0 * fixed_fit_slack(pts); }
 
+namespace {
+
+// The fixed-point pieces in double: their ends are the input's own points
+// (as read), their centres converted.
+void pieces_to_double(Span<const Vec2<double>> pts, Span<const fit::Piece<Fixed>> fixed,
+                      Span<fit::Piece<double>> out) {
+  const auto back = [](Vec2<Fixed> v) { return Vec2<double>{to_double(v.x), to_double(v.y)}; };
+  for (std::size_t k = 0; k < fixed.size(); ++k) {
+    const fit::Piece<Fixed>& f = fixed[k];
+    const Segment<double> s{f.segment.kind, pts[f.first], pts[f.last], back(f.segment.centre), f.segment.dir};
+    out[k] = {f.first, f.last, s, to_double(f.error)};
+  }
+}
+
+}  // namespace
+
 Result<fit::Fit<double>> fit_vertex_fixed(Span<const Vec2<double>> pts, double tol,
                                           std::uint32_t pieces, fit::Method method,
                                           Span<fit::Piece<double>> out, bool tie_break) {
@@ -40,12 +56,7 @@ Result<fit::Fit<double>> fit_vertex_fixed(Span<const Vec2<double>> pts, double t
       : tie_break ? fit::fit_min_count(in, fixed_from_double(tol), method, ws, dst)
                   : fit::fit_min_count(in, fixed_from_double(tol), method, ws, dst, Fixed(1));
   if (!r.ok()) return r.status();
-  auto back = [](Vec2<Fixed> v) { return Vec2<double>{to_double(v.x), to_double(v.y)}; };
-  for (std::uint32_t k = 0; k < r.value().pieces; ++k) {
-    const fit::Piece<Fixed>& f = fixed_out[k];
-    Segment<double> s{f.segment.kind, pts[f.first], pts[f.last], back(f.segment.centre), f.segment.dir};
-    out[k] = {f.first, f.last, s, to_double(f.error)};
-  }
+  pieces_to_double(pts, {fixed_out.data(), r.value().pieces}, out);
   // The tol asked for stays exact in the report; a found tol is converted.
   return fit::Fit<double>{r.value().pieces, to_double(r.value().max_error),
                           pieces > 0 ? to_double(r.value().tol) : tol};
@@ -76,12 +87,7 @@ Result<fit::Fit<double>> fit_band_fixed(Span<const Vec2<double>> pts,
                                      : tie_break ? fit::fit_band_min_count(in, win, ws, dst)
                                                  : fit::fit_band_min_count(in, win, ws, dst, Fixed(1));
   if (!r.ok()) return r.status();
-  auto back = [](Vec2<Fixed> v) { return Vec2<double>{to_double(v.x), to_double(v.y)}; };
-  for (std::uint32_t k = 0; k < r.value().pieces; ++k) {
-    const fit::Piece<Fixed>& f = fixed_out[k];
-    Segment<double> s{f.segment.kind, pts[f.first], pts[f.last], back(f.segment.centre), f.segment.dir};
-    out[k] = {f.first, f.last, s, to_double(f.error)};
-  }
+  pieces_to_double(pts, {fixed_out.data(), r.value().pieces}, out);
   // The widest width asked for stays exact in the report; a found tol is converted.
   double widest = 0.0;
   for (const fit::BandWidth<double>& b : widths) widest = std::max({widest, b.left, b.right});

@@ -12,6 +12,26 @@
 
 namespace kerf::cli {
 
+std::string count(std::size_t n, const char* one, const char* many) {
+  std::string s = std::to_string(n);
+  s += ' ';
+  s += n == 1 ? one : many;
+  return s;
+}
+
+void print_fit_summary(const io::PointFile& in, std::size_t paths, const std::string& what, double ms,
+                       const std::string& note) {
+  std::string summary = "kerf: " + in.file + ": " + count(in.points.size(), "point", "points") + ", " +
+                        (paths > 1 ? count(paths, "path", "paths") + ", " : "") + what;
+  char time[64];
+  std::snprintf(time, sizeof time, ", %.3f ms", ms);
+  summary += time;
+  summary += note;
+  if (in.duplicates_dropped > 0)
+    summary += ", dropped " + count(in.duplicates_dropped, "duplicate point", "duplicate points");
+  std::fprintf(stderr, "%s\n", summary.c_str());
+}
+
 namespace {
 
 // The pieces with first/last indexing the whole job.

@@ -28,6 +28,14 @@ struct FitToWrite {
   double feed = 1000.0;
 };
 
+// "1 piece", "5 pieces".
+std::string count(std::size_t n, const char* one, const char* many);
+
+// The line `kerf fit` ends with, on stderr: "kerf: FILE: N points, [P paths, ]"
+// then `what`, the fit's time, `note` (write_fit's) and the duplicates dropped.
+void print_fit_summary(const io::PointFile& in, std::size_t paths, const std::string& what, double ms,
+                       const std::string& note);
+
 // Formats and writes it; kExitOk, or kExitFailure with a message printed.
 // `note` gets what the summary line should add (gcode: decimals and the
 // measured deviation after rounding).
