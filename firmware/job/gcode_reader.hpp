@@ -14,6 +14,7 @@
 // that `kerf weld` passes the line through and `kerf run` refuses it.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -26,6 +27,11 @@
 #include "io/point_file.hpp"
 
 namespace kerf::io {
+
+inline constexpr double kMmPerInch = 25.4;
+
+// A G or M word's code in tenths (M3: 30, G38.2: 382), compared exactly.
+inline int code10(double v) { return static_cast<int>(std::lround(v * 10.0)); }
 
 enum class Motion : std::uint8_t { none, rapid, linear, cw, ccw };
 
@@ -107,7 +113,7 @@ std::string describe_error(const GcodeFile& f);
 // moves made with the torch on (every feed move when the file never uses M3/M4),
 // split into paths at rapids and at torch-off; arcs are sampled into points
 // (chord error below 0.001 mm). Coordinates in mm. Unknown words are refused.
-// False with "FILE:LINE: reason" in error.
+// False with "FILE:LINE: reason" in error. (job/gcode_job.cpp)
 bool read_gcode_job(const std::string& path, PointFile& out, std::string& error);
 
 // True for the usual G-code extensions (.nc .ngc .gcode .gco .gc .tap .cnc),
