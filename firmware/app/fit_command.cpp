@@ -1,32 +1,15 @@
 #include "app/fit_command.hpp"
 
 #include <CLI/CLI.hpp>
-#include <cctype>
-#include <cerrno>
-#include <algorithm>
-#include <chrono>
-#include <cmath>
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
-#include <cstring>
 #include <optional>
-#include <utility>
-#include <vector>
+#include <string>
 
 #include "app/fit_options.hpp"
-#include "job/band_widths.hpp"
-#include "job/check_fit.hpp"
-#include "job/fit_fixed.hpp"
-#include "job/fit_job.hpp"
+#include "io/options.hpp"
+#include "job/fit_file.hpp"
 #include "job/fit_stream.hpp"
 #include "job/fit_write.hpp"
-#include "io/options.hpp"
-#include "io/band_storage.hpp"
-#include "io/fit_output.hpp"
-#include "io/fit_storage.hpp"
-#include "io/point_file.hpp"
-#include "kerf/fit/band_fit.hpp"
 #include "kerf/fit/fit.hpp"
 
 namespace kerf::cli {
@@ -162,141 +145,22 @@ int run_fit(const FitOptions& opts) {
   if (!opts.tangents.empty() || opts.tangent_format != "vector")
     return usage_error("--tangents and --tangent-format need --criterion biarc");
   if (!opts.biarc_method.empty()) return usage_error("--biarc-method needs --criterion biarc");
-  const bool band = criterion == Criterion::band;
-  const bool by_pieces = !opts.pieces.empty();
-  const bool tie_break = opts.tie_break != "none";
   fit::Method method{};
   std::uint32_t pieces = 0;
   double tol = 0.0;
   if (const int rc = check_options(opts, criterion, numeric, method, pieces, tol); rc != kExitOk) return rc;
-  const bool fixed = numeric == Numeric::fixed;
   double feed = 1000.0;
   if (const int rc = check_output_options(opts, feed); rc != kExitOk) return rc;
 
-  io::PointFile in;
-  if (!read_job(opts.file, *criterion, in)) return kExitUsage;
-  std::vector<fit::BandWidth<double>> widths;
-  if (band) {
-    std::string error;
-    const WidthOptions w{opts.tol, opts.tol_left, opts.tol_right, by_pieces};
-    if (!band_widths(w, in, widths, error)) return usage_error(error);
-  }
-
-  const std::size_t n = in.points.size();
-  const Span<const Vec2<double>> pts(in.points.data(), n);
-  if (fixed && !fixed_fits(in, by_pieces ? 0.0 : tol)) return kExitUsage;
-  // A job of several paths (blank-line separated) is fitted path by path.
-  std::vector<std::size_t> begins = in.path_begin;
-  if (begins.empty()) begins.push_back(0);
-  if (by_pieces && begins.size() > 1)
-    return usage_error("--pieces: " + in.file + " holds " + std::to_string(begins.size()) +
-                       " paths; a piece budget is for one path (use --tol)");
-  std::vector<fit::Piece<double>> piece_store(n - 1);
-  fit::Fit<double> total{};
-  std::size_t used = 0;
-  std::vector<std::uint32_t> piece_offset;  // each piece's path's first point
-  double ms = 0.0;
-  for (std::size_t p = 0; p < begins.size(); ++p) {
-    const std::size_t b = begins[p];
-    const std::size_t m = (p + 1 < begins.size() ? begins[p + 1] : n) - b;
-    const Span<const Vec2<double>> path(in.points.data() + b, m);
-    const Span<fit::Piece<double>> dst(piece_store.data() + used, m - 1);
-    const auto t0 = std::chrono::steady_clock::now();
-    Result<fit::Fit<double>> r = Status::invalid_argument;
-    if (band) {
-      io::BandStorage storage(m);
-      const Span<const fit::BandWidth<double>> ws_widths(widths.data() + b, m);
-      if (fixed)
-        r = fit_band_fixed(path, ws_widths, by_pieces ? pieces : 0, dst, tie_break);
-      else if (by_pieces)
-        r = fit::fit_band_min_error(path, ws_widths, pieces, storage.workspace(), dst);
-      else
-        r = tie_break ? fit::fit_band_min_count(path, ws_widths, storage.workspace(), dst)
-                      : fit::fit_band_min_count(path, ws_widths, storage.workspace(), dst, 1.0);
-    } else if (fixed) {
-      r = fit_vertex_fixed(path, tol, by_pieces ? pieces : 0, method, dst, tie_break);
-    } else {
-      io::FitStorage storage(m);
-      if (by_pieces)
-        r = fit::fit_min_error(path, pieces, method, storage.workspace(), dst);
-      else
-        r = tie_break ? fit::fit_min_count(path, tol, method, storage.workspace(), dst)
-                      : fit::fit_min_count(path, tol, method, storage.workspace(), dst, 1.0);
-    }
-    ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    const std::string where = begins.size() > 1 ? " (path " + std::to_string(p + 1) + ")" : "";
-    if (!r.ok()) {
-      std::size_t at = 0;
-      if (fit::validate_points(path, at) != Status::ok) {  // the reader should have caught it
-        const std::size_t line = at < m ? in.point_lines[b + at] : 0;
-        std::fprintf(stderr, "%s:%zu: %s\n", in.file.c_str(), line, to_string(r.status()));
-        return kExitUsage;
-      }
-      if (by_pieces && r.status() == Status::infeasible) {
-        std::fprintf(stderr, "kerf: %s: no fit with %s\n", in.file.c_str(),
-                     count(pieces, "piece", "pieces").c_str());
-        return kExitFailure;
-      }
-      std::fprintf(stderr, "kerf: %s%s: fit failed: %s\n", in.file.c_str(), where.c_str(), to_string(r.status()));
-      return kExitFailure;
-    }
-    const Span<const fit::Piece<double>> fitted(dst.data(), r.value().pieces);
-    // A band piece crosses each inner point's gate, so it passes within the
-    // widest width of every inner point: the vertex check applies to it too.
-    // Fixed-point pieces may exceed tol by the documented quantization.
-    const double allowance = fixed ? fixed_fit_slack(path) : 0.0;
-    if (const std::string bad = check_fit(path, fitted, r.value().tol + allowance); !bad.empty()) {
-      std::fprintf(stderr,
-                   "kerf: %s%s: internal error: the fit fails its own check (%s); nothing written\n",
-                   in.file.c_str(), where.c_str(), bad.c_str());
-      return kExitFailure;
-    }
-    // Inside the band, an arc is never farther from its polyline than the
-    // widest width. A larger max error is a band fitter bug (fuzz_fit_band
-    // found arcs at sharp turns thousands of mm out): never written.
-    if (band && !(r.value().max_error <= r.value().tol * (1 + 1e-6))) {
-      std::fprintf(stderr,
-                   "kerf: %s%s: internal error: the fit leaves the band (max error %.9g > tol %.9g); "
-                   "nothing written\n",
-                   in.file.c_str(), where.c_str(), r.value().max_error, r.value().tol);
-      return kExitFailure;
-    }
-    used += r.value().pieces;
-    piece_offset.insert(piece_offset.end(), r.value().pieces, static_cast<std::uint32_t>(b));
-    total.pieces += r.value().pieces;
-    total.max_error = std::max(total.max_error, r.value().max_error);
-    total.tol = std::max(total.tol, r.value().tol);
-  }
-  const Span<const fit::Piece<double>> fitted(piece_store.data(), used);
-
-  io::FitReport report;
-  report.criterion = to_string(*criterion);
-  report.method = opts.method.c_str();
-  report.fit = total;
-  report.pieces = fitted;
-  report.zero_below = io::resolution(pts);
-  report.digits = io::coordinate_digits(fitted, total.tol);
-  FitToWrite w;
-  w.report = &report;
-  w.in = &in;
-  w.piece_offset = std::move(piece_offset);
-  w.feed = feed;
-  w.tol_left = w.tol_right = total.tol;
-  if (band && !by_pieces) {  // the widths as given (a shaped band: its widest)
-    w.tol_left = w.tol_right = 0.0;
-    for (const fit::BandWidth<double>& bw : widths) {
-      w.tol_left = std::max(w.tol_left, bw.left);
-      w.tol_right = std::max(w.tol_right, bw.right);
-    }
-  }
-  std::string note;
-  if (const int rc = write_fit(opts, w, note); rc != kExitOk) return rc;
-
-  std::string what = count(total.pieces, "piece", "pieces") + ", max error " +
-                     io::format_number(total.max_error, report.zero_below);
-  if (by_pieces) what += ", tol found " + io::format_number(total.tol);
-  print_fit_summary(in, begins.size(), what, ms, note);
-  return kExitOk;
+  FileFit f;
+  f.criterion = *criterion;
+  f.fixed = numeric == Numeric::fixed;
+  f.method = method;
+  f.pieces = pieces;
+  f.tol = tol;
+  f.tie_break = opts.tie_break != "none";
+  f.feed = feed;
+  return fit_file(opts, f);
 }
 
 }  // namespace kerf::cli

@@ -1,20 +1,13 @@
 #include "app/plan_command.hpp"
 
 #include <CLI/CLI.hpp>
-#include <cerrno>
-#include <cmath>
-#include <cstdio>
-#include <cstdlib>
-#include <cstring>
 #include <optional>
+#include <string>
 
 #include "app/fit_command.hpp"
 #include "app/fit_options.hpp"
-#include "job/fit_job.hpp"
 #include "io/options.hpp"
 #include "job/plan_path.hpp"
-#include "io/output_file.hpp"
-#include "io/point_file.hpp"
 
 namespace kerf::cli {
 
@@ -70,65 +63,19 @@ int run_plan(const PlanOptions& opts) {
   if (corner > 180) return usage_error("--corner: must be at most 180, got " + opts.corner);
   if (opts.trace.empty()) return usage_error("--trace: required");
 
-  io::PointFile in;
-  if (!read_job(opts.file, *criterion, in)) return kExitUsage;
-  if (in.path_begin.size() > 1) {  // the interpolator runs one continuous path
-    std::fprintf(stderr,
-                 "kerf: %s: holds %zu paths; kerf plan runs one continuous path (kerf sim runs a job of "
-                 "several, with rapids and pierces)\n",
-                 in.file.c_str(), in.path_begin.size());
-    return kExitUsage;
-  }
-  std::vector<Segment<double>> path;
-  if (!fit_path(in.points, in.tols, tol, *criterion, path, error, *numeric)) {
-    std::fprintf(stderr, "kerf: %s: %s\n", in.file.c_str(), error.c_str());
-    return kExitFailure;
-  }
-
-  motion::MotionConfig<double> config;
-  config.period = period;
-  config.accel = accel;
-  config.jerk = jerk;
-  config.corner_angle = corner * kPi / 180;
-  config.counts_per_mm = {cpm, cpm};
-  // Refused before running: runs whose trace would not fit in memory.
-  if (motion::Interpolator<double>::jerk_window_size(config) > kMaxJerkWindow)
-    return usage_error("--jerk: too small for --accel and --period (the S-curve would span more "
-                       "than " + std::to_string(kMaxJerkWindow) + " periods)");
-  if (fitted_length(path) / (feed / 60 * period) > static_cast<double>(kMaxSetpoints))
-    return usage_error("--period: the run would take more than " +
-                       std::to_string(kMaxSetpoints) + " periods");
-  std::string trace = "t_s,s_mm,x_mm,y_mm,x_counts,y_counts,segment\n";
-  PlanSummary sum;
-  if (!run_plan_path(path, feed / 60, config, trace, sum, error)) {
-    std::fprintf(stderr, "kerf: %s: %s\n", in.file.c_str(), error.c_str());
-    return kExitFailure;
-  }
-  if (!io::write_output(opts.trace, trace)) {
-    std::fprintf(stderr, "kerf: --trace: cannot write %s: %s\n", opts.trace.c_str(),
-                 std::strerror(errno));
-    return kExitFailure;
-  }
-
-  char jerk_line[128] = "";
-  if (jerk > 0)
-    std::snprintf(jerk_line, sizeof jerk_line,
-                  "max jerk: %.6g mm/s^3 along the path (limit %.6g)\n", sum.max_jerk_path, jerk);
-  char text[512];
-  std::snprintf(text, sizeof text,
-                "path: %zu %s, %.6f mm\n"
-                "time: %.6f s, %zu setpoints\n"
-                "cruise: %.1f %% of the periods at the programmed feed\n"
-                "max acceleration: %.6g mm/s^2 along the path (limit %.6g), %.6g mm/s^2 in "
-                "the plane\n",
-                path.size(), path.size() == 1 ? "piece" : "pieces", sum.length_mm, sum.time_s,
-                sum.setpoints, 100.0 * sum.cruise_fraction, sum.max_accel_path, accel,
-                sum.max_accel_plane);
-  // the summary goes where the trace does not
-  std::FILE* to = opts.trace == "-" ? stderr : stdout;
-  std::fputs(text, to);
-  std::fputs(jerk_line, to);
-  return std::fflush(to) == 0 ? kExitOk : kExitFailure;
+  PlanRun run;
+  run.file = opts.file;
+  run.criterion = *criterion;
+  run.numeric = *numeric;
+  run.tol = tol;
+  run.feed = feed;
+  run.config.period = period;
+  run.config.accel = accel;
+  run.config.jerk = jerk;
+  run.config.corner_angle = corner * kPi / 180;
+  run.config.counts_per_mm = {cpm, cpm};
+  run.trace = opts.trace;
+  return plan_file(run);
 }
 
 }  // namespace kerf::cli

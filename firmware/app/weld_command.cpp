@@ -1,20 +1,13 @@
 #include "app/weld_command.hpp"
 
-#include <unistd.h>
-
 #include <CLI/CLI.hpp>
 #include <cerrno>
-#include <chrono>
-#include <cstdio>
-#include <cstring>
+#include <cstdlib>
 #include <optional>
+#include <string>
 
-#include "app/fit_command.hpp"
-#include "job/fit_job.hpp"
 #include "io/options.hpp"
 #include "weld/weld.hpp"
-#include "job/gcode_reader.hpp"
-#include "io/output_file.hpp"
 
 namespace kerf::cli {
 
@@ -72,47 +65,7 @@ int run_weld(const WeldCommandOptions& opts) {
                          quoted(opts.threads));
     w.threads = static_cast<int>(n);
   }
-  const auto t0 = std::chrono::steady_clock::now();
-  const io::GcodeFile g = io::read_gcode(opts.in);
-  if (!g.ok) {
-    std::fprintf(stderr, "kerf: %s\n", io::describe_error(g).c_str());
-    return kExitUsage;
-  }
-  // Progress on a terminal only, at most five times a second.
-  bool shown = false;
-  auto last = std::chrono::steady_clock::now();
-  if (::isatty(STDERR_FILENO) == 1 && g.blocks.size() > 20000) {
-    w.progress = [&](std::size_t line, std::size_t lines) {
-      const auto now = std::chrono::steady_clock::now();
-      if (now - last < std::chrono::milliseconds(200)) return;
-      last = now;
-      shown = true;
-      std::fprintf(stderr, "\rkerf weld: line %zu of %zu (%.0f%%)", line, lines,
-                   100.0 * static_cast<double>(line) / static_cast<double>(lines));
-    };
-  }
-  std::string text;
-  WeldStats stats;
-  const bool welded = weld_gcode(g, w, text, stats, error);
-  if (shown) std::fprintf(stderr, "\r\033[K");  // clear the progress line
-  if (!welded) {
-    std::fprintf(stderr, "kerf: %s\n", error.c_str());
-    return kExitFailure;
-  }
-  if (!io::write_output(opts.out, text)) {
-    std::fprintf(stderr, "kerf: %s: %s\n", opts.out.c_str(), std::strerror(errno));
-    return kExitFailure;
-  }
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  // The summary goes to stdout, unless the G-code does.
-  std::FILE* report = opts.out == "-" ? stderr : stdout;
-  std::fprintf(report,
-               "input moves: %zu\noutput moves: %zu\narcs: %zu\nmax deviation: %.6f mm\n"
-               "kept for rounding: %zu pieces\ntime: %.3f s (%.0f lines/s)\n",
-               stats.input_moves, stats.output_moves, stats.arcs, stats.max_deviation_mm,
-               stats.kept_pieces, seconds, seconds > 0 ? static_cast<double>(g.blocks.size()) / seconds : 0.0);
-  return kExitOk;
+  return weld_file(opts.in, opts.out, w);
 }
 
 }  // namespace kerf::cli

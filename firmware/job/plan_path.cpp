@@ -1,10 +1,15 @@
 #include "job/plan_path.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <cinttypes>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 
+#include "io/options.hpp"
+#include "io/output_file.hpp"
+#include "io/point_file.hpp"
 #include "job/fit_job.hpp"
 
 namespace kerf::cli {
@@ -115,6 +120,63 @@ bool run_plan_path(const std::vector<Segment<double>>& path, double feed,
   summary.cruise_fraction =
       static_cast<double>(cruise) / static_cast<double>(summary.setpoints);
   return true;
+}
+
+int plan_file(const PlanRun& run) {
+  std::string error;
+  io::PointFile in;
+  if (!read_job(run.file, run.criterion, in)) return kExitUsage;
+  if (in.path_begin.size() > 1) {  // the interpolator runs one continuous path
+    std::fprintf(stderr,
+                 "kerf: %s: holds %zu paths; kerf plan runs one continuous path (kerf sim runs a job of "
+                 "several, with rapids and pierces)\n",
+                 in.file.c_str(), in.path_begin.size());
+    return kExitUsage;
+  }
+  std::vector<Segment<double>> path;
+  if (!fit_path(in.points, in.tols, run.tol, run.criterion, path, error, run.numeric)) {
+    std::fprintf(stderr, "kerf: %s: %s\n", in.file.c_str(), error.c_str());
+    return kExitFailure;
+  }
+
+  // Refused before running: runs whose trace would not fit in memory.
+  if (motion::Interpolator<double>::jerk_window_size(run.config) > kMaxJerkWindow)
+    return usage_error("--jerk: too small for --accel and --period (the S-curve would span more "
+                       "than " + std::to_string(kMaxJerkWindow) + " periods)");
+  if (fitted_length(path) / (run.feed / 60 * run.config.period) > static_cast<double>(kMaxSetpoints))
+    return usage_error("--period: the run would take more than " +
+                       std::to_string(kMaxSetpoints) + " periods");
+  std::string trace = "t_s,s_mm,x_mm,y_mm,x_counts,y_counts,segment\n";
+  PlanSummary sum;
+  if (!run_plan_path(path, run.feed / 60, run.config, trace, sum, error)) {
+    std::fprintf(stderr, "kerf: %s: %s\n", in.file.c_str(), error.c_str());
+    return kExitFailure;
+  }
+  if (!io::write_output(run.trace, trace)) {
+    std::fprintf(stderr, "kerf: --trace: cannot write %s: %s\n", run.trace.c_str(),
+                 std::strerror(errno));
+    return kExitFailure;
+  }
+
+  char jerk_line[128] = "";
+  if (run.config.jerk > 0)
+    std::snprintf(jerk_line, sizeof jerk_line,
+                  "max jerk: %.6g mm/s^3 along the path (limit %.6g)\n", sum.max_jerk_path, run.config.jerk);
+  char text[512];
+  std::snprintf(text, sizeof text,
+                "path: %zu %s, %.6f mm\n"
+                "time: %.6f s, %zu setpoints\n"
+                "cruise: %.1f %% of the periods at the programmed feed\n"
+                "max acceleration: %.6g mm/s^2 along the path (limit %.6g), %.6g mm/s^2 in "
+                "the plane\n",
+                path.size(), path.size() == 1 ? "piece" : "pieces", sum.length_mm, sum.time_s,
+                sum.setpoints, 100.0 * sum.cruise_fraction, sum.max_accel_path, run.config.accel,
+                sum.max_accel_plane);
+  // the summary goes where the trace does not
+  std::FILE* to = run.trace == "-" ? stderr : stdout;
+  std::fputs(text, to);
+  std::fputs(jerk_line, to);
+  return std::fflush(to) == 0 ? kExitOk : kExitFailure;
 }
 
 }  // namespace kerf::cli

@@ -48,4 +48,20 @@ bool run_plan_path(const std::vector<Segment<double>>& path, double feed,
                    const motion::MotionConfig<double>& config, std::string& trace,
                    PlanSummary& summary, std::string& error);
 
+// `kerf plan` once its options are checked (app/plan_command.cpp): the
+// file's one path fitted, run at `feed`, the trace written, the summary
+// printed (on stderr when the trace goes to stdout).
+struct PlanRun {
+  std::string file;  // a point or G-code file; "-": stdin
+  Criterion criterion = Criterion::vertex;
+  Numeric numeric = Numeric::floating;
+  double tol = 0.0;
+  double feed = 0.0;  // mm/min
+  motion::MotionConfig<double> config;
+  std::string trace;  // OUT.csv, or "-" for stdout
+};
+
+// Returns the exit code (io/options.hpp).
+int plan_file(const PlanRun& run);
+
 }  // namespace kerf::cli

@@ -63,4 +63,10 @@ unsigned weld_threads(int requested);
 bool weld_gcode(const io::GcodeFile& g, const WeldOptions& opts, std::string& out,
                 WeldStats& stats, std::string& error);
 
+// `kerf weld` once its options are checked (app/weld_command.cpp): reads
+// `in` ("-": stdin), welds it, writes `out` ("-": stdout) and the summary
+// (on stderr when the G-code goes to stdout), with progress on a terminal.
+// Returns the exit code (io/options.hpp).
+int weld_file(const std::string& in, const std::string& out, WeldOptions w);
+
 }  // namespace kerf::cli
