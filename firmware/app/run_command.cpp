@@ -1,23 +1,17 @@
 #include "app/run_command.hpp"
 
-#include <csignal>
 #include <cstdio>
-#include <cstring>
 #include <memory>
+#include <string>
 
-#include "app/fit_command.hpp"
-#include "job/fit_job.hpp"
-#include "control/fit_paths.hpp"
-#include "io/options.hpp"
 #include "config/config.hpp"
-#include "simulated/can_sim_link.hpp"
-#include "control/controller.hpp"
-#include "control/machine_config.hpp"
-#include "io/output_file.hpp"
-#include "simulated/sim_output.hpp"
+#include "control/fit_paths.hpp"
+#include "control/machine_run.hpp"
+#include "io/options.hpp"
+#include "job/fit_job.hpp"
 #include "kerf/hal/modbus/modbus_link.hpp"
-#include "kerf/hal/rt_loop.hpp"
 #include "kerf/sim/scripted_gpio.hpp"
+#include "simulated/can_sim_link.hpp"
 #if KERF_HAVE_GPIOD
 #include "kerf/hal/gpio/gpiod_gpio.hpp"
 #endif
@@ -25,9 +19,6 @@
 namespace kerf::cli {
 
 namespace {
-
-volatile std::sig_atomic_t g_signal = 0;
-extern "C" void on_signal(int sig) { g_signal = sig; }
 
 std::unique_ptr<hal::Gpio> open_gpio(const config::Config& cfg, bool simulated, std::string& error) {
   if (simulated) {
@@ -104,50 +95,7 @@ int run_run(const RunOptions& opts) {
   std::unique_ptr<control::Journal> journal;
   control::ResumePoint from;
   if (!open_journal(opts.journal, opts.resume, fitted.job, journal, from)) return kExitUsage;
-  const hal::RtSetup rt = hal::rt_setup(cfg.rt.priority, cfg.rt.lock_memory);
-  if (!rt.warning.empty()) std::fprintf(stderr, "kerf: run: %s\n", rt.warning.c_str());
-  struct sigaction sa {};
-  sa.sa_handler = on_signal;
-  sigaction(SIGINT, &sa, nullptr);
-  sigaction(SIGTERM, &sa, nullptr);
-
-  control::Controller ctl(fitted.job, control::controller_config(cfg), *link, *gpio, journal.get());
-  ctl.start(from);
-  hal::RtLoop loop(cfg.machine.cycle);
-  double t0 = -1.0, next_status = 1.0, now = 0.0;
-  while (!ctl.finished()) {
-    const double due = loop.wait_next();
-    if (t0 < 0.0) t0 = due;
-    if (g_signal != 0) ctl.request_stop(g_signal == SIGINT ? "stopped by SIGINT" : "stopped by SIGTERM");
-    now = due - t0;
-    ctl.cycle(now);
-    if (now >= next_status) {  // the operator's status line, once a second
-      next_status += 1.0;
-      std::fprintf(stderr, "kerf: run: t %.0f s, %s, segment %lld of %zu; %s\n", now,
-                   control::to_string(ctl.state()), static_cast<long long>(ctl.report().last_completed + 1),
-                   ctl.report().planned, loop.stats().describe().c_str());
-    }
-  }
-  const control::RunReport& r = ctl.report();
-  io::SimSummary sum =
-      io::summarise_run(r, fitted.job.paths.size(), config::to_string(cfg.link.kind), opts.resume, journal.get());
-  sum.simulated = false;
-  sum.torch_on = ctl.torch();
-  sum.duration_s = now;  // on the loop's clock: overrun cycles are skipped, not counted
-  sum.rt = loop.stats().describe();
-  sum.rt_histogram = loop.stats().histogram();
-  if (!opts.report.empty() && !io::write_output(opts.report, io::format_sim_json(sum))) {
-    std::fprintf(stderr, "kerf: --report: cannot write %s: %s\n", opts.report.c_str(), std::strerror(errno));
-    return kExitFailure;
-  }
-  std::fputs(io::format_sim_summary(sum).c_str(), stdout);
-  std::fprintf(stdout, "kerf run: %s; wake-up lateness:\n%s", sum.rt.c_str(), sum.rt_histogram.c_str());
-  if (r.state != control::State::done) {
-    std::fprintf(stderr, "kerf: run: stopped after segment %lld: %s\n", static_cast<long long>(sum.last_executed),
-                 r.reason.c_str());
-    return kExitFailure;
-  }
-  return kExitOk;
+  return control::run_on_machine(fitted.job, cfg, *link, *gpio, journal.get(), from, opts.resume, opts.report);
 }
 
 }  // namespace kerf::cli

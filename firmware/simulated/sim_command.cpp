@@ -15,6 +15,7 @@
 #include "config/config.hpp"
 #include "simulated/can_sim_machine.hpp"
 #include "control/machine_config.hpp"
+#include "control/run_report.hpp"
 #include "simulated/sim_machine.hpp"
 #include "io/output_file.hpp"
 #include "io/point_file.hpp"
@@ -240,7 +241,7 @@ int run_sim(const SimOptions& given) {
     return kExitFailure;
   }
 
-  io::SimSummary sum = io::summarise_run(res.run, fitted.job.paths.size(), link, opts.resume, journal.get());
+  control::RunSummary sum = control::summarise_run(res.run, fitted.job.paths.size(), link, opts.resume, journal.get());
   // The board's truth: what it executed (with the link down it may run on
   // past what the controller saw and journaled).
   sum.executed = res.executed.size();
@@ -272,10 +273,10 @@ int run_sim(const SimOptions& given) {
     plot.title = "kerf sim: " + in.file + " (" + sum.state + ")";
   }
   if (!write_or_say("--trace", opts.trace, io::format_trace_csv(res.trace)) ||
-      !write_or_say("--report", opts.report, io::format_sim_json(sum)) ||
+      !write_or_say("--report", opts.report, control::format_run_json(sum)) ||
       (!opts.plot.empty() && !write_or_say("--plot", opts.plot, io::format_run_svg(plot))))
     return kExitFailure;
-  std::fputs(io::format_sim_summary(sum).c_str(), stdout);
+  std::fputs(control::format_run_summary(sum).c_str(), stdout);
   if (demo)
     std::printf("kerf sim: wrote %s, %s and %s\n", opts.trace.c_str(), opts.plot.c_str(), opts.report.c_str());
   if (res.run.state != control::State::done) {
