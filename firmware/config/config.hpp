@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "job/criterion.hpp"
 #include "kerf/hal/gpio.hpp"
 
 namespace kerf::config {
@@ -43,8 +44,8 @@ struct Link {
 };
 
 struct Fit {
-  std::string criterion = "band";  // vertex | band | biarc
-  std::string numeric = "double";  // the fit's scalar type: double | fixed (not with biarc)
+  cli::Criterion criterion = cli::Criterion::band;
+  cli::Numeric numeric = cli::Numeric::floating;  // the fit's scalar type, for every criterion
   double tol = 0.025;              // mm, > 0
 };
 

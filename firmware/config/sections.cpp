@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <optional>
 #include <string_view>
 
 namespace kerf::config {
@@ -215,21 +216,26 @@ const char* to_string(Link::Kind k) {
 
 // ---- fit, cut, rt -----------------------------------------------------------
 
+namespace {
+
+// A value named by a string: `parse` gives it, or nothing for a name it does
+// not know (the problem "unknown <what> "NAME" (expected <names>)").
+template <class T>
+void read_name(TableReader& r, const char* key, std::optional<T> (*parse)(std::string_view), T& out,
+               const char* what, const char* names) {
+  std::string text;
+  if (!r.string(key, text)) return;
+  if (const std::optional<T> v = parse(text))
+    out = *v;
+  else
+    r.problem(key, std::string("unknown ") + what + " " + quote(text) + " (expected " + names + ")");
+}
+
+}  // namespace
+
 void read_fit(TableReader& r, Fit& fit) {
-  std::string criterion;
-  if (r.string("criterion", criterion)) {
-    if (criterion == "vertex" || criterion == "band" || criterion == "biarc")
-      fit.criterion = criterion;
-    else
-      r.problem("criterion", "unknown criterion " + quote(criterion) + " (expected vertex, band or biarc)");
-  }
-  std::string numeric;
-  if (r.string("numeric", numeric)) {
-    if (numeric != "double" && numeric != "fixed")
-      r.problem("numeric", "unknown type " + quote(numeric) + " (expected double or fixed)");
-    else
-      fit.numeric = numeric;
-  }
+  read_name(r, "criterion", cli::parse_criterion, fit.criterion, "criterion", "vertex, band or biarc");
+  read_name(r, "numeric", cli::parse_numeric, fit.numeric, "type", "double or fixed");
   r.positive("tol", fit.tol);
   r.finish();
 }

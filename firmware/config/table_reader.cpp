@@ -101,59 +101,45 @@ bool TableReader::number(std::string_view key, double& out) {
   return true;
 }
 
-bool TableReader::positive(std::string_view key, double& out) {
+bool TableReader::number_within(std::string_view key, double& out, double lo, bool lo_open, double hi,
+                                const std::string& must) {
   double v = 0;
   if (!number(key, v)) return false;
-  if (!(v > 0)) {
-    problem(key, "must be > 0, got " + format_number(v));
+  if (!((lo_open ? v > lo : v >= lo) && v <= hi)) {
+    problem(key, "must be " + must + ", got " + format_number(v));
     return false;
   }
   out = v;
   return true;
+}
+
+bool TableReader::positive(std::string_view key, double& out) {
+  return number_within(key, out, 0, true, HUGE_VAL, "> 0");
 }
 
 bool TableReader::non_negative(std::string_view key, double& out) {
-  double v = 0;
-  if (!number(key, v)) return false;
-  if (!(v >= 0)) {
-    problem(key, "must be >= 0, got " + format_number(v));
-    return false;
-  }
-  out = v;
-  return true;
+  return number_within(key, out, 0, false, HUGE_VAL, ">= 0");
 }
 
 bool TableReader::positive_at_most(std::string_view key, double& out, double max) {
-  double v = 0;
-  if (!number(key, v)) return false;
-  if (!(v > 0 && v <= max)) {
-    problem(key, "must be in (0, " + format_number(max) + "], got " + format_number(v));
-    return false;
-  }
-  out = v;
-  return true;
+  return number_within(key, out, 0, true, max, "in (0, " + format_number(max) + "]");
 }
 
 bool TableReader::number_in(std::string_view key, double& out, double lo, double hi) {
-  double v = 0;
-  if (!number(key, v)) return false;
-  if (!(v >= lo && v <= hi)) {
-    problem(key, "must be in [" + format_number(lo) + ", " + format_number(hi) + "], got " +
-                     format_number(v));
-    return false;
-  }
-  out = v;
-  return true;
+  return number_within(key, out, lo, false, hi, "in [" + format_number(lo) + ", " + format_number(hi) + "]");
+}
+
+template <class T>
+auto TableReader::typed(std::string_view key, std::string_view expected) {
+  const toml::node* n = get(key, true);
+  const auto* v = n ? n->as<T>() : nullptr;
+  if (n && !v) wrong_type(key, *n, expected);
+  return v;
 }
 
 bool TableReader::integer(std::string_view key, int& out, int lo, int hi) {
-  const toml::node* n = get(key, true);
-  if (!n) return false;
-  const auto* i = n->as_integer();
-  if (!i) {
-    wrong_type(key, *n, "an integer");
-    return false;
-  }
+  const auto* i = typed<std::int64_t>(key, "an integer");
+  if (!i) return false;
   const std::int64_t v = i->get();
   if (v < lo || v > hi) {
     problem(key, "must be in " + std::to_string(lo) + ".." + std::to_string(hi) + ", got " +
@@ -165,13 +151,8 @@ bool TableReader::integer(std::string_view key, int& out, int lo, int hi) {
 }
 
 bool TableReader::string(std::string_view key, std::string& out) {
-  const toml::node* n = get(key, true);
-  if (!n) return false;
-  const auto* s = n->as_string();
-  if (!s) {
-    wrong_type(key, *n, "a string");
-    return false;
-  }
+  const auto* s = typed<std::string>(key, "a string");
+  if (!s) return false;
   if (s->get().empty()) {
     problem(key, "must not be empty");
     return false;
@@ -181,24 +162,13 @@ bool TableReader::string(std::string_view key, std::string& out) {
 }
 
 bool TableReader::boolean(std::string_view key, bool& out) {
-  const toml::node* n = get(key, true);
-  if (!n) return false;
-  const auto* b = n->as_boolean();
-  if (!b) {
-    wrong_type(key, *n, "a boolean (true or false)");
-    return false;
-  }
+  const auto* b = typed<bool>(key, "a boolean (true or false)");
+  if (!b) return false;
   out = b->get();
   return true;
 }
 
-const toml::table* TableReader::table(std::string_view key) {
-  const toml::node* n = get(key, true);
-  if (!n) return nullptr;
-  const auto* t = n->as_table();
-  if (!t) wrong_type(key, *n, "a table");
-  return t;
-}
+const toml::table* TableReader::table(std::string_view key) { return typed<toml::table>(key, "a table"); }
 
 const toml::array* TableReader::array(std::string_view key, std::string_view expected) {
   const toml::node* n = get(key, true);

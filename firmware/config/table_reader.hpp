@@ -77,6 +77,15 @@ class TableReader {
  private:
   const toml::node* get(std::string_view key, bool mark);
   void wrong_type(std::string_view key, const toml::node& n, std::string_view expected);
+  // The value at `key` as a T (std::int64_t, std::string, bool, toml::table),
+  // marked as read; null when missing, or of another type (then the problem
+  // "must be <expected>").
+  template <class T>
+  auto typed(std::string_view key, std::string_view expected);
+  // number(key) inside lo..hi (lo itself only if !lo_open); else the problem
+  // "must be <must>, got V".
+  bool number_within(std::string_view key, double& out, double lo, bool lo_open, double hi,
+                     const std::string& must);
 
   const toml::table& table_;
   std::string path_;

@@ -1,25 +1,20 @@
-// Heap-backed storage for core's band fitter, for host programs (the CLI,
-// tests, benchmarks). core itself never allocates: it takes these spans.
+// Heap-backed storage for core's band fitter (core itself never allocates:
+// it takes these spans), for host programs: the CLI, tests, benchmarks.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
+#include "io/piece_storage.hpp"
 #include "kerf/fit/band_fit.hpp"
 
 namespace kerf::io {
 
-class BandStorage {
+class BandStorage : public PieceStorage {
  public:
-  explicit BandStorage(std::size_t n)
-      : words_(fit::band_workspace_words(n)),
-        points_(n),
-        vertices_(n),
-        chains_(fit::band_chain_slots(n)),
-        pieces_(n > 1 ? n - 1 : 1) {}
+  explicit BandStorage(std::size_t n) : PieceStorage(n) { workspace_for(n); }
 
   fit::BandWorkspace<double> workspace() { return workspace_for(points_.size()); }
-  Span<fit::Piece<double>> pieces() { return {pieces_.data(), pieces_.size()}; }
 
   // A workspace for n points with the sizes BandStorage(n) has, growing
   // the storage if needed: one storage serves a run of fits (kerf weld fits
@@ -45,7 +40,6 @@ class BandStorage {
   std::vector<Vec2<double>> points_;
   std::vector<fit::BandVertex<double>> vertices_;
   std::vector<fit::BandChainSlot<double>> chains_;
-  std::vector<fit::Piece<double>> pieces_;
 };
 
 }  // namespace kerf::io

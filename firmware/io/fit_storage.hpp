@@ -5,31 +5,28 @@
 #include <cstdint>
 #include <vector>
 
+#include "io/piece_storage.hpp"
 #include "kerf/fit/fit.hpp"
 
 namespace kerf::io {
 
-class FitStorage {
+class FitStorage : public PieceStorage {
  public:
   explicit FitStorage(std::size_t n)
-      : words_(fit::workspace_words(n)),
+      : PieceStorage(n),
+        words_(fit::workspace_words(n)),
         intervals_(fit::workspace_intervals(n)),
-        points_(fit::workspace_points(n)),
-        pieces_(n > 1 ? n - 1 : 1) {}
+        points_(fit::workspace_points(n)) {}
 
   fit::Workspace<double> workspace() {
     return {{words_.data(), words_.size()},
             {intervals_.data(), intervals_.size()},
             {points_.data(), points_.size()}};
   }
-  Span<fit::Piece<double>> pieces() { return {pieces_.data(), pieces_.size()}; }
-  const fit::Piece<double>& piece(std::size_t k) const { return pieces_[k]; }
-
  private:
   std::vector<std::uint32_t> words_;
   std::vector<fit::Interval<double>> intervals_;
   std::vector<Vec2<double>> points_;
-  std::vector<fit::Piece<double>> pieces_;
 };
 
 }  // namespace kerf::io

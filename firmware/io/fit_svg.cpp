@@ -14,19 +14,6 @@ namespace {
 
 using namespace svg;
 
-// Canvas, in px (the same frame as the run plot's).
-constexpr double kWidth = 960;
-constexpr double kLeft = 80;
-constexpr double kRight = 20;
-constexpr double kPlotWidth = kWidth - kLeft - kRight;
-constexpr double kTitleY = 24;
-constexpr double kLegendY = 46;
-constexpr double kTopY = 70;
-constexpr double kMaxTopHeight = 560;
-constexpr double kPanelGap = 70;
-constexpr double kDevHeight = 200;
-constexpr double kBottomMargin = 50;
-
 // [begin, end) point ranges of the paths.
 std::vector<std::pair<std::size_t, std::size_t>> path_ranges(const FitPlot& plot) {
   std::vector<std::size_t> b = plot.path_begin;
@@ -38,19 +25,8 @@ std::vector<std::pair<std::size_t, std::size_t>> path_ranges(const FitPlot& plot
 }
 
 void legend(std::string& out, const FitPlot& plot, double band) {
-  double x = kLeft;
-  const auto item = [&](const std::string& swatch, const std::string& name) {
-    out += "<g transform=\"translate(";
-    num(out, x);
-    out += ' ';
-    num(out, kLegendY);
-    out += ")\">";
-    out += swatch;
-    out += "<text class=\"tick\" x=\"26\" y=\"4\">";
-    escaped(out, name);
-    out += "</text></g>\n";
-    x += 30 + 7.0 * static_cast<double>(name.size());
-  };
+  Legend row{out, kLeft, kLegendY};
+  const auto item = [&](const std::string& swatch, const std::string& name) { row.item(swatch, name); };
   item("<circle class=\"pt key\" cx=\"10\" cy=\"0\" r=\"2\"/>",
        "input points (" + std::to_string(plot.points.size()) + ")");
   item("<line x1=\"0\" y1=\"0\" x2=\"20\" y2=\"0\" stroke=\"#1f77b4\" stroke-width=\"2\"/>",
@@ -98,11 +74,9 @@ double xy_panel(std::string& out, const FitPlot& plot, double band) {
     out += "\"/>\n";
   }
   for (const Vec2<double>& p : plot.points) {
-    out += "<circle class=\"pt\" cx=\"";
-    num(out, m.px(p.x));
-    out += "\" cy=\"";
-    num(out, m.py(p.y));
-    out += "\" r=\"1.5\"/>\n";
+    out += "<circle class=\"pt\"";
+    attrs(out, {{"cx", m.px(p.x)}, {"cy", m.py(p.y)}});
+    out += " r=\"1.5\"/>\n";
   }
   out += "</g>\n";
   return height;
@@ -124,38 +98,28 @@ void deviation_panel(std::string& out, const FitPlot& plot, double top) {
     if (std::isfinite(d)) lim = std::fmax(lim, std::fabs(d));
   lim = lim > 0 ? lim * 1.15 : 1.0;
   const auto px = [&](double v) { return kLeft + v / s1 * kPlotWidth; };
-  const auto py = [&](double v) { return top + kDevHeight / 2 - v / lim * (kDevHeight / 2); };
+  const auto py = [&](double v) { return top + kLowerHeight / 2 - v / lim * (kLowerHeight / 2); };
 
   out += "<g id=\"deviation\">\n";
-  frame(out, kLeft, top, kPlotWidth, kDevHeight);
-  axis(out, true, 0.0, s1, px, top + kDevHeight, top, top + kDevHeight);
+  frame(out, kLeft, top, kPlotWidth, kLowerHeight);
+  axis(out, true, 0.0, s1, px, top + kLowerHeight, top, top + kLowerHeight);
   axis(out, false, -lim, lim, py, kLeft, kLeft, kLeft + kPlotWidth);
-  text(out, kLeft + kPlotWidth / 2, top + kDevHeight + 36, "middle", "distance along the path (mm)");
+  text(out, kLeft + kPlotWidth / 2, top + kLowerHeight + 36, "middle", "distance along the path (mm)");
   std::string rot = " transform=\"rotate(-90 ";
-  num(rot, kLeft - 56);
-  rot += ' ';
-  num(rot, top + kDevHeight / 2);
+  num_pair(rot, kLeft - 56, " ", top + kLowerHeight / 2);
   rot += ")\"";
-  text(out, kLeft - 56, top + kDevHeight / 2, "middle", "deviation (mm)", rot.c_str());
+  text(out, kLeft - 56, top + kLowerHeight / 2, "middle", "deviation (mm)", rot.c_str());
   for (const double v : {plot.tol_left, -plot.tol_right}) {
     out += "<line class=\"limit\" data-value=\"";
     label(out, v);
-    out += "\" x1=\"";
-    num(out, kLeft);
-    out += "\" y1=\"";
-    num(out, py(v));
-    out += "\" x2=\"";
-    num(out, kLeft + kPlotWidth);
-    out += "\" y2=\"";
-    num(out, py(v));
-    out += "\"/>\n";
+    out += '"';
+    attrs(out, {{"x1", kLeft}, {"y1", py(v)}, {"x2", kLeft + kPlotWidth}, {"y2", py(v)}});
+    out += "/>\n";
   }
   out += "<polyline class=\"dev\" points=\"";
   for (std::size_t i = 0; i < dev.size(); ++i) {
     if (i) out += ' ';
-    num(out, px(along[i]));
-    out += ',';
-    num(out, py(dev[i]));  // num() prints a NaN (an uncovered point) as 0
+    num_pair(out, px(along[i]), ",", py(dev[i]));  // num() prints a NaN (an uncovered point) as 0
   }
   out += "\"/>\n</g>\n";
 }
@@ -164,24 +128,15 @@ void deviation_panel(std::string& out, const FitPlot& plot, double top) {
 
 std::string format_fit_svg(const FitPlot& plot) {
   const double band = std::fmax(plot.tol_left, plot.tol_right);
-  std::string body;
-  const double xy_height = xy_panel(body, plot, band);
-  const double dev_top = kTopY + xy_height + kPanelGap;
-  deviation_panel(body, plot, dev_top);
-  const double height = dev_top + kDevHeight + kBottomMargin;
-
-  std::string out;
-  open_document(out, kWidth, height,
-                ".pt{fill:#333}"
-                ".band,.bandkey{fill:none;stroke:#f2d98c;stroke-opacity:0.6;stroke-linecap:round;"
-                "stroke-linejoin:round}"
-                ".dev{fill:none;stroke:#1f5fb4;stroke-width:1}"
-                ".limit{stroke:#d00;stroke-width:1;stroke-dasharray:5 4}",
-                plot.title, kLeft, kTitleY);
-  legend(out, plot, band);
-  out += body;
-  out += "</svg>\n";
-  return out;
+  return page(
+      ".pt{fill:#333}"
+      ".band,.bandkey{fill:none;stroke:#f2d98c;stroke-opacity:0.6;stroke-linecap:round;"
+      "stroke-linejoin:round}"
+      ".dev{fill:none;stroke:#1f5fb4;stroke-width:1}"
+      ".limit{stroke:#d00;stroke-width:1;stroke-dasharray:5 4}",
+      plot.title, [&](std::string& out) { legend(out, plot, band); },
+      [&](std::string& body) { return xy_panel(body, plot, band); },
+      [&](std::string& body, double top) { deviation_panel(body, plot, top); });
 }
 
 }  // namespace kerf::io

@@ -14,19 +14,6 @@ namespace {
 
 using namespace svg;
 
-// Canvas, in px.
-constexpr double kWidth = 960;
-constexpr double kLeft = 80;            // room for the y tick labels
-constexpr double kRight = 20;
-constexpr double kPlotWidth = kWidth - kLeft - kRight;
-constexpr double kTitleY = 24;
-constexpr double kLegendY = 46;
-constexpr double kTopY = 70;            // top of the XY panel
-constexpr double kMaxTopHeight = 560;
-constexpr double kPanelGap = 70;        // room for the x tick labels and axis title
-constexpr double kSpeedHeight = 200;
-constexpr double kBottomMargin = 50;
-
 // Indices in [begin, end) to draw, at most kMaxPolylineVertices: per bucket
 // its first and last and, for each of the `nkeys` keys, its lowest and highest.
 template <class Key>
@@ -75,24 +62,9 @@ std::vector<Run> torch_runs(const std::vector<TraceSample>& trace) {
   return runs;
 }
 
-void legend_item(std::string& out, double x, const std::string& swatch, const std::string& name) {
-  out += "<g transform=\"translate(";
-  num(out, x);
-  out += ' ';
-  num(out, kLegendY);
-  out += ")\">";
-  out += swatch;
-  out += "<text class=\"tick\" x=\"26\" y=\"4\">";
-  escaped(out, name);
-  out += "</text></g>\n";
-}
-
 void legend(std::string& out, const RunPlot& plot) {
-  double x = kLeft;
-  const auto item = [&](const std::string& swatch, const std::string& name) {
-    legend_item(out, x, swatch, name);
-    x += 30 + 7.0 * static_cast<double>(name.size());
-  };
+  Legend row{out, kLeft, kLegendY};
+  const auto item = [&](const std::string& swatch, const std::string& name) { row.item(swatch, name); };
   item("<circle class=\"pt\" cx=\"10\" cy=\"0\" r=\"2\"/>", "input points");
   item("<line x1=\"0\" y1=\"0\" x2=\"20\" y2=\"0\" stroke=\"#1f77b4\" stroke-width=\"2\"/>",
        "fitted pieces (" + std::to_string(plot.pieces.size()) + ")");
@@ -115,9 +87,7 @@ void polyline(std::string& out, const char* cls, const std::vector<std::size_t>&
   out += "\" points=\"";
   for (std::size_t k = 0; k < idx.size(); ++k) {
     if (k) out += ' ';
-    num(out, m.px(trace[idx[k]].pos.x));
-    out += ',';
-    num(out, m.py(trace[idx[k]].pos.y));
+    num_pair(out, m.px(trace[idx[k]].pos.x), ",", m.py(trace[idx[k]].pos.y));
   }
   out += "\"/>\n";
 }
@@ -174,19 +144,15 @@ double xy_panel(std::string& out, const RunPlot& plot, const std::vector<Run>& r
   // The points over the trace, so that both stay visible.
   for (const auto& path : plot.paths)
     for (const Vec2<double>& p : path) {
-      out += "<circle class=\"pt\" cx=\"";
-      num(out, m.px(p.x));
-      out += "\" cy=\"";
-      num(out, m.py(p.y));
-      out += "\" r=\"1.2\"/>\n";
+      out += "<circle class=\"pt\"";
+      attrs(out, {{"cx", m.px(p.x)}, {"cy", m.py(p.y)}});
+      out += " r=\"1.2\"/>\n";
     }
   for (const Run& r : runs) {
     if (!r.torch) continue;
-    out += "<circle class=\"pierce\" cx=\"";
-    num(out, m.px(tr[r.begin].pos.x));
-    out += "\" cy=\"";
-    num(out, m.py(tr[r.begin].pos.y));
-    out += "\" r=\"4\"/>\n";
+    out += "<circle class=\"pierce\"";
+    attrs(out, {{"cx", m.px(tr[r.begin].pos.x)}, {"cy", m.py(tr[r.begin].pos.y)}});
+    out += " r=\"4\"/>\n";
   }
   out += "</g>\n";
   return height;
@@ -211,43 +177,33 @@ void speed_panel(std::string& out, const std::vector<TraceSample>& tr, const std
   for (const double v : vs) vmax = std::fmax(vmax, v);
   vmax = vmax > 0 ? vmax * 1.05 : 1.0;
   const auto px = [&](double t) { return kLeft + (t - t0) / (t1 - t0) * kPlotWidth; };
-  const auto py = [&](double v) { return top + kSpeedHeight - v / vmax * kSpeedHeight; };
+  const auto py = [&](double v) { return top + kLowerHeight - v / vmax * kLowerHeight; };
 
   out += "<g id=\"speed\">\n";
   for (const Run& r : runs) {
     if (!r.torch) continue;
     const double a = tr[r.begin].t_s;
     const double b = r.end < tr.size() ? tr[r.end].t_s : tr[r.end - 1].t_s;
-    out += "<rect class=\"on\" x=\"";
-    num(out, px(a));
-    out += "\" y=\"";
-    num(out, top);
-    out += "\" width=\"";
-    num(out, std::fmax(px(b) - px(a), 0.5));
-    out += "\" height=\"";
-    num(out, kSpeedHeight);
-    out += "\"/>\n";
+    out += "<rect class=\"on\"";
+    attrs(out, {{"x", px(a)}, {"y", top}, {"width", std::fmax(px(b) - px(a), 0.5)}, {"height", kLowerHeight}});
+    out += "/>\n";
   }
-  frame(out, kLeft, top, kPlotWidth, kSpeedHeight);
-  axis(out, true, t0, t1, px, top + kSpeedHeight, top, top + kSpeedHeight);
+  frame(out, kLeft, top, kPlotWidth, kLowerHeight);
+  axis(out, true, t0, t1, px, top + kLowerHeight, top, top + kLowerHeight);
   axis(out, false, 0.0, vmax, py, kLeft, kLeft, kLeft + kPlotWidth);
-  text(out, kLeft + kPlotWidth / 2, top + kSpeedHeight + 36, "middle", "t (s)");
+  text(out, kLeft + kPlotWidth / 2, top + kLowerHeight + 36, "middle", "t (s)");
   std::string rot = " transform=\"rotate(-90 ";
-  num(rot, kLeft - 56);
-  rot += ' ';
-  num(rot, top + kSpeedHeight / 2);
+  num_pair(rot, kLeft - 56, " ", top + kLowerHeight / 2);
   rot += ")\"";
-  text(out, kLeft - 56, top + kSpeedHeight / 2, "middle", "speed (mm/min)", rot.c_str());
+  text(out, kLeft - 56, top + kLowerHeight / 2, "middle", "speed (mm/min)", rot.c_str());
   if (vs.empty()) {
-    text(out, kLeft + kPlotWidth / 2, top + kSpeedHeight / 2, "middle", "no trace");
+    text(out, kLeft + kPlotWidth / 2, top + kLowerHeight / 2, "middle", "no trace");
   } else {
     const auto idx = decimate(0, vs.size(), 1, [&](std::size_t i, std::size_t) { return vs[i]; });
     out += "<polyline class=\"speed\" points=\"";
     for (std::size_t k = 0; k < idx.size(); ++k) {
       if (k) out += ' ';
-      num(out, px(ts[idx[k]]));
-      out += ',';
-      num(out, py(vs[idx[k]]));
+      num_pair(out, px(ts[idx[k]]), ",", py(vs[idx[k]]));
     }
     out += "\"/>\n";
   }
@@ -258,26 +214,17 @@ void speed_panel(std::string& out, const std::vector<TraceSample>& tr, const std
 
 std::string format_run_svg(const RunPlot& plot) {
   const std::vector<Run> runs = torch_runs(plot.trace);
-  std::string body;
-  const double xy_height = xy_panel(body, plot, runs);
-  const double speed_top = kTopY + xy_height + kPanelGap;
-  speed_panel(body, plot.trace, runs, speed_top);
-  const double height = speed_top + kSpeedHeight + kBottomMargin;
-
-  std::string out;
-  open_document(out, kWidth, height,
-                ".pt{fill:#555}"
-                ".band,.band path{fill:none;stroke:#f2d98c;stroke-opacity:0.6;stroke-linecap:round}"
-                ".cut{fill:none;stroke:#222;stroke-width:0.75}"
-                ".rapid{fill:none;stroke:#999;stroke-width:1;stroke-dasharray:5 4}"
-                ".pierce{fill:none;stroke:#d00;stroke-width:1.5}"
-                ".on{fill:#ffe0b0;stroke:none}"
-                ".speed{fill:none;stroke:#1f5fb4;stroke-width:1}",
-                plot.title, kLeft, kTitleY);
-  legend(out, plot);
-  out += body;
-  out += "</svg>\n";
-  return out;
+  return page(
+      ".pt{fill:#555}"
+      ".band,.band path{fill:none;stroke:#f2d98c;stroke-opacity:0.6;stroke-linecap:round}"
+      ".cut{fill:none;stroke:#222;stroke-width:0.75}"
+      ".rapid{fill:none;stroke:#999;stroke-width:1;stroke-dasharray:5 4}"
+      ".pierce{fill:none;stroke:#d00;stroke-width:1.5}"
+      ".on{fill:#ffe0b0;stroke:none}"
+      ".speed{fill:none;stroke:#1f5fb4;stroke-width:1}",
+      plot.title, [&](std::string& out) { legend(out, plot); },
+      [&](std::string& body) { return xy_panel(body, plot, runs); },
+      [&](std::string& body, double top) { speed_panel(body, plot.trace, runs, top); });
 }
 
 }  // namespace kerf::io

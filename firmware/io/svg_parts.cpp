@@ -84,11 +84,7 @@ void add_arc_points(Box& box, const Segment<double>& s) {
   }
 }
 
-void point(std::string& out, const XyMap& m, Vec2<double> p) {
-  num(out, m.px(p.x));
-  out += ' ';
-  num(out, m.py(p.y));
-}
+void point(std::string& out, const XyMap& m, Vec2<double> p) { num_pair(out, m.px(p.x), " ", m.py(p.y)); }
 
 // One piece's path data. SVG's sweep-flag 1 is its positive angle direction,
 // which on a y-down screen is clockwise as seen; with y flipped the picture
@@ -135,26 +131,17 @@ double nice_step(double range, int target) {
 }
 
 void frame(std::string& out, double x, double y, double w, double h) {
-  out += "<rect class=\"frame\" x=\"";
-  num(out, x);
-  out += "\" y=\"";
-  num(out, y);
-  out += "\" width=\"";
-  num(out, w);
-  out += "\" height=\"";
-  num(out, h);
-  out += "\"/>\n";
+  out += "<rect class=\"frame\"";
+  attrs(out, {{"x", x}, {"y", y}, {"width", w}, {"height", h}});
+  out += "/>\n";
 }
 
 void text(std::string& out, double x, double y, const char* anchor, const std::string& s,
           const char* extra) {
   out += "<text class=\"axis\" text-anchor=\"";
   out += anchor;
-  out += "\" x=\"";
-  num(out, x);
-  out += "\" y=\"";
-  num(out, y);
   out += '"';
+  attrs(out, {{"x", x}, {"y", y}});
   out += extra;
   out += '>';
   escaped(out, s);
@@ -183,9 +170,7 @@ XyPanel xy_panel_frame(std::string& out, Box box, double min_pad, double left, d
   axis(out, false, box.y0, box.y1, [&](double v) { return m.py(v); }, left, left, left + p.width);
   text(out, left + p.width / 2, top + p.height + 36, "middle", "x (mm)");
   std::string rot = " transform=\"rotate(-90 ";
-  num(rot, left - 56);
-  rot += ' ';
-  num(rot, top + p.height / 2);
+  num_pair(rot, left - 56, " ", top + p.height / 2);
   rot += ")\"";
   text(out, left - 56, top + p.height / 2, "middle", "y (mm)", rot.c_str());
   return p;
@@ -194,14 +179,10 @@ XyPanel xy_panel_frame(std::string& out, Box box, double min_pad, double left, d
 void open_document(std::string& out, double width, double height, const char* extra_style,
                    const std::string& title, double x, double y) {
   out += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-  out += "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"";
-  num(out, width);
-  out += "\" height=\"";
-  num(out, height);
-  out += "\" viewBox=\"0 0 ";
-  num(out, width);
-  out += ' ';
-  num(out, height);
+  out += "<svg xmlns=\"http://www.w3.org/2000/svg\"";
+  attrs(out, {{"width", width}, {"height", height}});
+  out += " viewBox=\"0 0 ";
+  num_pair(out, width, " ", height);
   out += "\" font-family=\"sans-serif\">\n";
   out += "<style>"
          ".frame{fill:none;stroke:#444;stroke-width:1}"
@@ -213,13 +194,38 @@ void open_document(std::string& out, double width, double height, const char* ex
   out += extra_style;
   out += "</style>\n";
   out += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-  out += "<text class=\"title\" x=\"";
-  num(out, x);
-  out += "\" y=\"";
-  num(out, y);
-  out += "\">";
+  out += "<text class=\"title\"";
+  attrs(out, {{"x", x}, {"y", y}});
+  out += ">";
   escaped(out, title);
   out += "</text>\n";
+}
+
+void num_pair(std::string& out, double a, const char* between, double b) {
+  num(out, a);
+  out += between;
+  num(out, b);
+}
+
+void attrs(std::string& out, std::initializer_list<Attr> list) {
+  for (const Attr& a : list) {
+    out += ' ';
+    out += a.name;
+    out += "=\"";
+    num(out, a.value);
+    out += '"';
+  }
+}
+
+void Legend::item(const std::string& swatch, const std::string& name) {
+  out += "<g transform=\"translate(";
+  num_pair(out, x, " ", y);
+  out += ")\">";
+  out += swatch;
+  out += "<text class=\"tick\" x=\"26\" y=\"4\">";
+  escaped(out, name);
+  out += "</text></g>\n";
+  x += 30 + 7.0 * static_cast<double>(name.size());
 }
 
 }  // namespace kerf::io::svg

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cmath>
+#include <initializer_list>
 #include <string>
 
 #include "kerf/geom/segment.hpp"
@@ -13,6 +14,20 @@
 namespace kerf::io::svg {
 
 inline constexpr double kPi = 3.14159265358979323846;
+
+// The page both plots share, in px: the title and a legend row, the XY
+// panel at kTopY, and a lower panel kPanelGap below it.
+inline constexpr double kWidth = 960;
+inline constexpr double kLeft = 80;  // room for the y tick labels
+inline constexpr double kRight = 20;
+inline constexpr double kPlotWidth = kWidth - kLeft - kRight;
+inline constexpr double kTitleY = 24;
+inline constexpr double kLegendY = 46;
+inline constexpr double kTopY = 70;
+inline constexpr double kMaxTopHeight = 560;
+inline constexpr double kPanelGap = 70;  // room for the x tick labels and axis title
+inline constexpr double kLowerHeight = 200;
+inline constexpr double kBottomMargin = 50;
 
 // Piece colours, cycled.
 inline constexpr std::array<const char*, 8> kPalette = {
@@ -24,6 +39,16 @@ void num(std::string& out, double v);
 void label(std::string& out, double v);
 // Text for XML: markup escaped, control characters and non-UTF-8 bytes as '?'.
 void escaped(std::string& out, const std::string& s);
+
+// a, then `between`, then b, the numbers as num() writes them.
+void num_pair(std::string& out, double a, const char* between, double b);
+
+// Numeric attributes, each written ` name="value"` (the value as num() writes it).
+struct Attr {
+  const char* name;
+  double value;
+};
+void attrs(std::string& out, std::initializer_list<Attr> list);
 
 struct Box {
   double x0 = HUGE_VAL, y0 = HUGE_VAL, x1 = -HUGE_VAL, y1 = -HUGE_VAL;  // HUGE_VAL: double (clang warns on INFINITY, a float)
@@ -64,35 +89,14 @@ void axis(std::string& out, bool horizontal, double lo, double hi, ToPx to_px, d
   const double step = nice_step(hi - lo, horizontal ? 10 : 6);
   for (double v = std::ceil(lo / step) * step; v <= hi + step * 1e-9; v += step) {
     const double p = to_px(v);
-    if (horizontal) {
-      out += "<line class=\"grid\" x1=\"";
-      num(out, p);
-      out += "\" y1=\"";
-      num(out, grid_from);
-      out += "\" x2=\"";
-      num(out, p);
-      out += "\" y2=\"";
-      num(out, grid_to);
-      out += "\"/><text class=\"tick\" text-anchor=\"middle\" x=\"";
-      num(out, p);
-      out += "\" y=\"";
-      num(out, x_or_y + 16);
-      out += "\">";
-    } else {
-      out += "<line class=\"grid\" x1=\"";
-      num(out, grid_from);
-      out += "\" y1=\"";
-      num(out, p);
-      out += "\" x2=\"";
-      num(out, grid_to);
-      out += "\" y2=\"";
-      num(out, p);
-      out += "\"/><text class=\"tick\" text-anchor=\"end\" x=\"";
-      num(out, x_or_y - 6);
-      out += "\" y=\"";
-      num(out, p + 4);
-      out += "\">";
-    }
+    out += "<line class=\"grid\"";
+    if (horizontal)
+      attrs(out, {{"x1", p}, {"y1", grid_from}, {"x2", p}, {"y2", grid_to}});
+    else
+      attrs(out, {{"x1", grid_from}, {"y1", p}, {"x2", grid_to}, {"y2", p}});
+    out += horizontal ? "/><text class=\"tick\" text-anchor=\"middle\"" : "/><text class=\"tick\" text-anchor=\"end\"";
+    attrs(out, {{"x", horizontal ? p : x_or_y - 6}, {"y", horizontal ? x_or_y + 16 : p + 4}});
+    out += ">";
     label(out, v);
     out += "</text>\n";
   }
@@ -104,6 +108,22 @@ void axis(std::string& out, bool horizontal, double lo, double hi, ToPx to_px, d
 void open_document(std::string& out, double width, double height, const char* extra_style,
                    const std::string& title, double x, double y);
 void frame(std::string& out, double x, double y, double w, double h);
+
+// A whole page (see kTopY): `legend(out)` draws the legend row, `xy(body)`
+// the XY panel, returning its height, and `lower(body, top)` the lower panel.
+template <class DrawLegend, class DrawXy, class DrawLower>
+std::string page(const char* extra_style, const std::string& title, DrawLegend legend, DrawXy xy,
+                 DrawLower lower) {
+  std::string body;
+  const double lower_top = kTopY + xy(body) + kPanelGap;
+  lower(body, lower_top);
+  std::string out;
+  open_document(out, kWidth, lower_top + kLowerHeight + kBottomMargin, extra_style, title, kLeft, kTitleY);
+  legend(out);
+  out += body;
+  out += "</svg>\n";
+  return out;
+}
 // The XY panel's opening: `<g id="xy">`, its frame, axes and labels, for
 // `box` padded by 3% of its size or `min_pad`, whichever is more, scaled to
 // fit max_w x max_h px at (left, top). The caller draws into it and closes
@@ -118,5 +138,14 @@ XyPanel xy_panel_frame(std::string& out, Box box, double min_pad, double left, d
 
 void text(std::string& out, double x, double y, const char* anchor, const std::string& s,
           const char* extra = "");
+
+// A row of legend entries, left to right from (x, y), each a swatch (SVG
+// drawn around its own origin) and its name.
+struct Legend {
+  std::string& out;
+  double x;
+  double y;
+  void item(const std::string& swatch, const std::string& name);
+};
 
 }  // namespace kerf::io::svg

@@ -48,8 +48,8 @@
 #include <string>
 #include <vector>
 
-#include "cli/weld.hpp"
-#include "io/gcode_reader.hpp"
+#include "weld/weld.hpp"
+#include "job/gcode_reader.hpp"
 
 namespace {
 
@@ -237,7 +237,7 @@ bool threads_figure(const kerf::io::GcodeFile& g, kerf::cli::WeldOptions o, int 
   }
   const double lines = static_cast<double>(g.blocks.size());
   const std::string name = g.file.substr(g.file.find_last_of('/') + 1);
-  std::printf("%-46s %-7s %8.1f %12.0f %8.1f %12.0f %6.2fx %5s\n", name.c_str(), o.criterion.c_str(),
+  std::printf("%-46s %-7s %8.1f %12.0f %8.1f %12.0f %6.2fx %5s\n", name.c_str(), kerf::cli::to_string(o.criterion),
               1e3 * best[0], lines / best[0], 1e3 * best[1], lines / best[1], best[0] / best[1],
               out[0] == out[1] ? "yes" : "NO");
   return out[0] == out[1];
@@ -319,7 +319,7 @@ int main(int argc, char** argv) {
       kerf::cli::WeldOptions o;
       o.threads = 1;  // CPU time below: one thread's
       o.tol_mm = tol;
-      o.criterion = c;
+      o.criterion = *kerf::cli::parse_criterion(c);
       o.split_turns = split;
       o.jitter = jitter;
       o.tie_break = tie_break;
@@ -372,7 +372,7 @@ int main(int argc, char** argv) {
       for (const std::string& c : criteria) {
         kerf::cli::WeldOptions o;
         o.tol_mm = tol;
-        o.criterion = c;
+        o.criterion = *kerf::cli::parse_criterion(c);
         o.split_turns = split;
         o.jitter = jitter;
         o.tie_break = tie_break;

@@ -1,11 +1,11 @@
-// The controller on CiA 402 drives (control/can_sim_machine.hpp), in
+// The controller on CiA 402 drives (simulated/can_sim_machine.hpp), in
 // lockstep with the in-process bus: the same job as the Modbus machine tests
 // cuts every segment once; each CAN fault stops it with the torch off and a
 // reason naming the drive, and the report keeps the last completed segment.
 #include <gtest/gtest.h>
 
 #include "can_jobs.hpp"
-#include "control/can_sim_machine.hpp"
+#include "simulated/can_sim_machine.hpp"
 
 namespace kerf::test {
 namespace {

@@ -1,10 +1,10 @@
 // A CanPlant through the lead's run_sim_machine (needs the Modbus build's
-// kerf_simjob, which holds run_sim_machine): the same controller, the CAN drives.
+// kerf_simulated, which holds run_sim_machine): the same controller, the CAN drives.
 #include <gtest/gtest.h>
 
 #include "can_jobs.hpp"
-#include "control/can_plant.hpp"
-#include "control/sim_machine.hpp"
+#include "simulated/can_plant.hpp"
+#include "simulated/sim_machine.hpp"
 
 namespace kerf::test {
 namespace {

@@ -1,4 +1,4 @@
-// The `kerf sim --link can` entry point (control/can_sim_link.hpp) on the
+// The `kerf sim --link can` entry point (simulated/can_sim_link.hpp) on the
 // in-process bus: a job runs to done by ticks, each fault kind ends in a
 // fault naming the last completed segment, a drive that refuses enable at
 // power-up makes the link fail with the drive named, the candump log is
@@ -6,7 +6,7 @@
 // kernel without CAN support (this machine): a clear error, no crash.
 #include <fstream>
 
-#include "control/can_sim_link.hpp"
+#include "simulated/can_sim_link.hpp"
 #include "kerf/hal/can/socket_can_bus.hpp"
 #include "can_rig.hpp"
 

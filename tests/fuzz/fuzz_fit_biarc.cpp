@@ -4,7 +4,7 @@
 // between two points whose tangents leave the band), but with a status, and
 // what it returns must pass the independent biarc referee
 // (tests/support/biarc_checker.hpp: tangent continuity, certified band,
-// gate rules at the gates of the region the fit certified), and the CLI's own check (cli/biarc_job.hpp: every point
+// gate rules at the gates of the region the fit certified), and the CLI's own check (job/biarc_job.hpp: every point
 // within tol of its biarc, too), whose failure a user would see as an
 // internal error.
 #include <cstddef>
@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "bridge/biarc_bridge.hpp"
-#include "cli/biarc_job.hpp"
+#include "job/biarc_job.hpp"
 #include "fuzz_check.hpp"
 #include "fuzz_points.hpp"
 

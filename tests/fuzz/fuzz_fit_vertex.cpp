@@ -3,14 +3,14 @@
 // handled or refused). Distinct consecutive points always have a fit (each edge is a
 // line piece), so the fit must succeed, and the independent verifier
 // (tests/support/verifier.hpp) must accept it, as must `kerf fit`'s own
-// last check (firmware/cli/check_fit.hpp).
+// last check (firmware/job/check_fit.hpp).
 #include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include "bridge/fit_bridge.hpp"
-#include "cli/check_fit.hpp"
+#include "job/check_fit.hpp"
 #include "fuzz_check.hpp"
 #include "fuzz_points.hpp"
 

@@ -1,4 +1,4 @@
-// The G-code reader (firmware/io/gcode_reader.hpp) on arbitrary bytes, then
+// The G-code reader (firmware/job/gcode_reader.hpp) on arbitrary bytes, then
 // the job built from it (`kerf sim`/`kerf run` on a G-code file). Either a
 // clear error or a file whose blocks and polylines keep the reader's
 // promises, and a job whose points keep the point file's.
@@ -9,7 +9,7 @@
 #include <string_view>
 
 #include "fuzz_check.hpp"
-#include "io/gcode_reader.hpp"
+#include "job/gcode_reader.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);

@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
-#include "cli/biarc_job.hpp"
-#include "cli/fit_job.hpp"
+#include "job/biarc_job.hpp"
+#include "job/fit_job.hpp"
 #include "io/fit_gcode.hpp"
 #include "io/fit_svg.hpp"
-#include "io/gcode_reader.hpp"
+#include "job/gcode_reader.hpp"
 #include "weld_checker.hpp"
 
 namespace {
@@ -62,7 +62,7 @@ std::vector<Piece> fit(const Job& j, double tol, const std::string& criterion) {
       for (const auto& bi : biarcs)
         for (const auto& g : bi.arc) pieces.push_back({bi.first, bi.last, g, bi.error});
     } else {
-      EXPECT_TRUE(kerf::cli::fit_job(pts, {}, tol, criterion, pieces, error, status)) << error;
+      EXPECT_TRUE(kerf::cli::fit_job(pts, {}, tol, *kerf::cli::parse_criterion(criterion), pieces, error, status)) << error;
     }
     for (Piece& pc : pieces) {
       pc.first += static_cast<std::uint32_t>(b);

@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "cli/weld.hpp"
+#include "weld/weld.hpp"
 #include "kerf/geom/segment.hpp"
-#include "io/gcode_reader.hpp"
+#include "job/gcode_reader.hpp"
 #include "weld_checker.hpp"
 
 namespace {
@@ -35,7 +35,7 @@ std::string weld(const std::string& text, double tol, const std::string& criteri
   EXPECT_TRUE(g.ok) << kerf::io::describe_error(g);
   kerf::cli::WeldOptions o;
   o.tol_mm = tol;
-  o.criterion = criterion;
+  o.criterion = *kerf::cli::parse_criterion(criterion);
   o.decimals = decimals;
   std::string out, error;
   EXPECT_TRUE(kerf::cli::weld_gcode(g, o, out, stats, error)) << error;

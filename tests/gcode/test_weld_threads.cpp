@@ -10,8 +10,8 @@
 #include <utility>
 #include <vector>
 
-#include "cli/weld.hpp"
-#include "io/gcode_reader.hpp"
+#include "weld/weld.hpp"
+#include "job/gcode_reader.hpp"
 
 namespace {
 
@@ -71,7 +71,7 @@ TEST(WeldThreads, CorpusIsTheSameOnOneAndFourThreads) {
     for (const char* criterion : {"band", "vertex"}) {
       WeldOptions o;
       o.tol_mm = 0.025;
-      o.criterion = criterion;
+      o.criterion = *kerf::cli::parse_criterion(criterion);
       const Welded one = weld(g, o, 1);
       ASSERT_TRUE(one.ok) << one.error;
       arcs += one.stats.arcs;

@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-#include "control/can_sim_link.hpp"
+#include "simulated/can_sim_link.hpp"
 #include "kerf/hal/can/canopen_master.hpp"
 #include "kerf/hal/can/csp_segment_link.hpp"
 #include "kerf/hal/can/socket_can_bus.hpp"

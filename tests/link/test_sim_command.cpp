@@ -12,7 +12,7 @@
 #include <sstream>
 #include <string>
 
-#include "cli/sim_command.hpp"
+#include "simulated/sim_command.hpp"
 #include "link_rig.hpp"
 
 namespace kerf::test {

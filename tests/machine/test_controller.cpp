@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "control/sim_machine.hpp"
+#include "simulated/sim_machine.hpp"
 #include "fake_gpio.hpp"
 
 namespace kerf::test {

@@ -9,9 +9,9 @@
 #include <filesystem>
 #include <set>
 
-#include "cli/fit_paths.hpp"
+#include "control/fit_paths.hpp"
 #include "control/machine_config.hpp"
-#include "control/sim_machine.hpp"
+#include "simulated/sim_machine.hpp"
 #include "kerf/sim/scripted_gpio.hpp"
 #include "scenario.hpp"
 

@@ -43,10 +43,10 @@ endforeach()
 # Unpacked: every file where it belongs, the unit and config as in the tree.
 run(dpkg -x ${deb} ${OUT}/root)
 set(root ${OUT}/root)
-foreach(f usr/bin/kerf usr/lib/libkerf_core.a usr/lib/libkerf_io.a
+foreach(f usr/bin/kerf usr/lib/libkerf_core.a usr/lib/libkerf_io.a usr/lib/libkerf_job.a
           usr/lib/cmake/kerf/kerfConfig.cmake usr/lib/cmake/kerf/kerfTargets.cmake
           usr/lib/pkgconfig/kerf.pc usr/include/kerf/fit/fit.hpp
-          usr/include/kerf_io/io/gcode_reader.hpp lib/systemd/system/kerf.service
+          usr/include/kerf_job/job/gcode_reader.hpp lib/systemd/system/kerf.service
           etc/kerf/kerf.toml etc/default/kerf usr/share/doc/kerf/examples/kerf.toml)
   if(NOT EXISTS ${root}/${f})
     message(FATAL_ERROR "${deb} lacks /${f}")

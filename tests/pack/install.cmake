@@ -8,7 +8,7 @@ execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${PREFI
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "cmake --install failed (${rc}):\n${out}${err}")
 endif()
-foreach(f bin/kerf lib/libkerf_core.a lib/libkerf_io.a lib/cmake/kerf/kerfConfig.cmake
+foreach(f bin/kerf lib/libkerf_core.a lib/libkerf_io.a lib/libkerf_job.a lib/cmake/kerf/kerfConfig.cmake
           lib/pkgconfig/kerf.pc include/kerf/fit/fit.hpp include/kerf_io/io/fit_output.hpp
           share/kerf/systemd/kerf.service share/doc/kerf/examples/kerf.toml)
   if(NOT EXISTS ${PREFIX}/${f})

@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "io/band_storage.hpp"
-#include "io/gcode_reader.hpp"
+#include "job/gcode_reader.hpp"
 #include "kerf/fit/band_fit.hpp"
 #include "kerf/fit/band_pair.hpp"
 #include "typed_core_helpers.hpp"

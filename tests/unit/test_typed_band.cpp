@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "band_checker.hpp"
-#include "io/gcode_reader.hpp"
+#include "job/gcode_reader.hpp"
 #include "kerf/fit/band_fit.hpp"
 #include "typed_core_helpers.hpp"
 
@@ -31,7 +31,7 @@ TYPED_TEST_SUITE(TypedBand, Scalars);
 
 // What a piece may leave the band by: nothing beyond double's rounding for
 // double; for Fixed the quantization kerf documents for fixed-point pieces
-// (cli/fit_fixed.hpp): 64 steps of 2^-32 of the power of two above the
+// (job/fit_fixed.hpp): 64 steps of 2^-32 of the power of two above the
 // largest coordinate, the resolution of the scaled problem the fitter solves.
 template <class S>
 double allowance(const std::vector<VD>& pts) {

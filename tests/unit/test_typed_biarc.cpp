@@ -36,7 +36,7 @@ constexpr bool is_fixed = std::is_same_v<S, Fixed>;
 
 // What a biarc may leave the band by: double's rounding for double; for
 // Fixed the quantization kerf documents for fixed-point pieces
-// (cli/fit_fixed.hpp): 64 steps of 2^-32 of the power of two above the
+// (job/fit_fixed.hpp): 64 steps of 2^-32 of the power of two above the
 // largest coordinate.
 template <class S>
 double allowance(const std::vector<VD>& pts) {

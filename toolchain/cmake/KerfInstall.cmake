@@ -2,11 +2,13 @@
 #
 # cmake --install BUILD [--prefix P] puts in P:
 #   bin/kerf                              the command
-#   lib/libkerf_core.a, lib/libkerf_io.a  the fitting core and the point-file,
-#                                         fit-output and G-code I/O on top of it
+#   lib/libkerf_core.a, lib/libkerf_io.a, the fitting core, the point-file and
+#   lib/libkerf_job.a                     fit-output I/O, and the job reader
+#                                         (G-code) and fitting pipeline on top
 #   include/kerf/...                      the core's headers (#include <kerf/fit/fit.hpp>)
-#   include/kerf_io/io/...                kerf_io's (#include <io/gcode_reader.hpp>)
-#   lib/cmake/kerf/                       find_package(kerf): kerf::core, kerf::io
+#   include/kerf_io/io/...                kerf_io's (#include <io/fit_output.hpp>)
+#   include/kerf_job/job/...              kerf_job's (#include <job/gcode_reader.hpp>)
+#   lib/cmake/kerf/                       find_package(kerf): kerf::core, kerf::io, kerf::job
 #   lib/pkgconfig/kerf.pc                 pkg-config --cflags --libs kerf
 #   share/kerf/systemd/kerf.service       the unit and the example configuration,
 #   share/doc/kerf/examples/kerf.toml     for reference
@@ -29,20 +31,23 @@ include(CMakePackageConfigHelpers)
 
 set(kerf_cmake_dir ${CMAKE_INSTALL_LIBDIR}/cmake/kerf)
 set(kerf_io_includedir ${CMAKE_INSTALL_INCLUDEDIR}/kerf_io)
+set(kerf_job_includedir ${CMAKE_INSTALL_INCLUDEDIR}/kerf_job)
 
 # Consumers compile the headers as C++20, as kerf does.
 target_compile_features(kerf_core INTERFACE cxx_std_20)
 set_target_properties(kerf_core PROPERTIES EXPORT_NAME core)
 set_target_properties(kerf_io PROPERTIES EXPORT_NAME io)
+set_target_properties(kerf_job PROPERTIES EXPORT_NAME job)
 
 install(TARGETS kerf RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT runtime)
-install(TARGETS kerf_core kerf_io EXPORT kerfTargets
+install(TARGETS kerf_core kerf_io kerf_job EXPORT kerfTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT dev)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/core/include/kerf
   DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} COMPONENT dev)
 file(GLOB kerf_io_headers ${PROJECT_SOURCE_DIR}/firmware/io/*.hpp)
-list(FILTER kerf_io_headers EXCLUDE REGEX "/sim_output\\.hpp$")  # kerf_simjob's, not kerf_io's
 install(FILES ${kerf_io_headers} DESTINATION ${kerf_io_includedir}/io COMPONENT dev)
+file(GLOB kerf_job_headers ${PROJECT_SOURCE_DIR}/firmware/job/*.hpp)
+install(FILES ${kerf_job_headers} DESTINATION ${kerf_job_includedir}/job COMPONENT dev)
 
 install(EXPORT kerfTargets NAMESPACE kerf:: DESTINATION ${kerf_cmake_dir} COMPONENT dev)
 configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/kerfConfig.cmake.in
@@ -112,7 +117,7 @@ if(CMAKE_CROSSCOMPILING)
   # libgpiod as their bookworm packages' shlibs files give them.
   set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS OFF)
   set(kerf_deb_depends "libc6 (>= 2.35), libgcc-s1 (>= 3.0), libstdc++6 (>= 12)")
-  if(KERF_HAVE_MODBUS)  # the library of `kerf sim` and `kerf run` (kerf_simjob)
+  if(KERF_HAVE_MODBUS)  # `kerf sim` and `kerf run` (kerf_simulated, app/run_command.cpp)
     string(APPEND kerf_deb_depends ", libmodbus5 (>= 3.1.6)")
     if(KERF_HAVE_GPIOD)
       string(APPEND kerf_deb_depends ", libgpiod2 (>= 1.6.3)")

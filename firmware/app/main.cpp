@@ -1,0 +1,66 @@
+// The kerf command. Exit codes: 0 success, 1 the fit or the output failed,
+// 2 bad options or bad input (the message is on stderr, stdout stays empty).
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <exception>
+#include <new>
+
+#include "app/fit_command.hpp"
+#include "app/plan_command.hpp"
+#include "app/run_options.hpp"
+#include "app/sim_options.hpp"
+#include "app/weld_command.hpp"
+#if KERF_HAVE_MODBUS
+#include "app/run_command.hpp"
+#include "simulated/sim_command.hpp"
+#endif
+
+#ifndef KERF_VERSION
+#define KERF_VERSION "unknown"
+#endif
+
+int main(int argc, char** argv) {
+  using namespace kerf::cli;
+  try {
+    CLI::App app("kerf: fit circular arcs to the points of a cut path", "kerf");
+    app.set_version_flag("--version", "kerf " KERF_VERSION);
+    app.require_subcommand(1);
+    FitOptions fit_opts;
+    CLI::App* fit = add_fit_command(app, fit_opts);
+    PlanOptions plan_opts;
+    CLI::App* plan = add_plan_command(app, plan_opts);
+    SimOptions sim_opts;
+    CLI::App* sim = add_sim_command(app, sim_opts);
+    RunOptions run_opts;
+    CLI::App* run = add_run_command(app, run_opts);
+    WeldCommandOptions weld_opts;
+    CLI::App* weld = add_weld_command(app, weld_opts);
+    try {
+      app.parse(argc, argv);
+    } catch (const CLI::Success& e) {  // --help, --version
+      return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+      std::fprintf(stderr, "kerf: %s\nRun with --help for more information.\n", e.what());
+      return kExitUsage;
+    }
+    if (fit->parsed()) return run_fit(fit_opts);
+    if (plan->parsed()) return run_plan(plan_opts);
+    if (weld->parsed()) return run_weld(weld_opts);
+#if KERF_HAVE_MODBUS
+    if (sim->parsed()) return run_sim(sim_opts);
+    if (run->parsed()) return run_run(run_opts);
+#else
+    if (sim->parsed() || run->parsed()) {
+      std::fprintf(stderr, "kerf: %s: this build has no libmodbus (the target's libmodbus-dev was not found)\n",
+                   sim->parsed() ? "sim" : "run");
+      return kExitFailure;
+    }
+#endif
+    return kExitUsage;  // require_subcommand(1) makes this unreachable
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "kerf: out of memory\n");
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "kerf: internal error: %s\n", e.what());
+  }
+  return kExitFailure;
+}

@@ -1,0 +1,34 @@
+// `kerf run`'s options. Built in every configuration, so that --help is the
+// same everywhere; running it needs the Modbus link (run_command.cpp).
+#include <CLI/CLI.hpp>
+
+#include "app/run_options.hpp"
+
+namespace kerf::cli {
+
+CLI::App* add_run_command(CLI::App& app, RunOptions& o) {
+  CLI::App* r = app.add_subcommand(
+      "run", "Cut a job on the machine: the motion board over Modbus, the torch and safety inputs on GPIO");
+  r->add_option("--config", o.config, "Machine configuration (TOML)")->type_name("FILE")->required();
+  add_journal_options(r, o.journal, o.resume);
+  r->add_flag("--sim-gpio", o.sim_gpio,
+              "Bench mode: simulate the torch and inputs (arc-OK follows the torch). Never on a machine with a torch");
+  add_report_option(r, o.report);
+  add_job_file(r, "job", o.job)->type_name("JOB")->required();
+  return r;
+}
+
+void add_journal_options(CLI::App* command, std::string& journal, bool& resume) {
+  command->add_option("--journal", journal, "Progress journal: every completed segment, synced")->type_name("FILE");
+  command->add_flag("--resume", resume, "Finish the job the journal belongs to, from where it stopped");
+}
+
+void add_report_option(CLI::App* command, std::string& report) {
+  command->add_option("--report", report, "Write the JSON report here")->type_name("R.json");
+}
+
+CLI::Option* add_job_file(CLI::App* command, const std::string& name, std::string& file) {
+  return command->add_option(name, file, "Point file (paths separated by blank lines); - for stdin");
+}
+
+}  // namespace kerf::cli

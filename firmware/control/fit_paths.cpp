@@ -1,0 +1,74 @@
+#include "control/fit_paths.hpp"
+
+#include "job/fit_job.hpp"
+
+#include <cstdio>
+
+namespace kerf::cli {
+
+bool fit_paths(const io::PointFile& in, Criterion criterion, double tol, double feed_mm_s,
+               FittedJob& out, std::string& error, Status& status, Numeric numeric) {
+  out = FittedJob{};
+  std::vector<std::size_t> begins = in.path_begin;
+  if (begins.empty()) begins.push_back(0);
+  for (std::size_t p = 0; p < begins.size(); ++p) {
+    const std::size_t b = begins[p];
+    const std::size_t e = p + 1 < begins.size() ? begins[p + 1] : in.points.size();
+    const std::vector<Vec2<double>> pts(in.points.begin() + static_cast<std::ptrdiff_t>(b),
+                                        in.points.begin() + static_cast<std::ptrdiff_t>(e));
+    std::vector<double> tols;
+    if (!in.tols.empty())
+      tols.assign(in.tols.begin() + static_cast<std::ptrdiff_t>(b), in.tols.begin() + static_cast<std::ptrdiff_t>(e));
+    std::vector<fit::Piece<double>> pieces;
+    std::string why;
+    if (!fit_job(pts, tols, tol, criterion, pieces, why, status, numeric)) {
+      error = "path " + std::to_string(p + 1) + " (line " +
+              std::to_string(b < in.point_lines.size() ? in.point_lines[b] : 0) + "): " + why;
+      return false;
+    }
+    control::CutPath path;
+    path.start = pts.front();
+    for (const fit::Piece<double>& piece : pieces) {
+      hal::SegmentCommand c;
+      c.kind = piece.segment.kind;
+      c.end = piece.segment.end;
+      c.centre = piece.segment.centre;
+      c.dir = piece.segment.dir;
+      c.feed = feed_mm_s;
+      c.torch = true;
+      path.segments.push_back(c);
+      out.pieces.push_back(piece);
+      out.piece_path.push_back(p);
+    }
+    out.job.paths.push_back(std::move(path));
+  }
+  status = Status::ok;
+  return true;
+}
+
+int fit_paths_or_say(const io::PointFile& in, Criterion criterion, double tol, double feed_mm_s,
+                     FittedJob& out, Numeric numeric) {
+  std::string error;
+  Status status = Status::ok;
+  if (fit_paths(in, criterion, tol, feed_mm_s, out, error, status, numeric)) return 0;
+  std::fprintf(stderr, "kerf: %s: %s\n", in.file.c_str(), error.c_str());
+  return status == Status::invalid_argument || status == Status::degenerate ? 2 : 1;
+}
+
+bool open_journal(const std::string& path, bool resume, const control::Job& job,
+                  std::unique_ptr<control::Journal>& out, control::ResumePoint& from) {
+  from = control::ResumePoint{};
+  from.from = job.paths.front().start;
+  out.reset();
+  if (path.empty()) return true;
+  std::string error;
+  out = resume ? control::Journal::resume(path, job.id(), error) : control::Journal::create(path, job.id(), error);
+  if (!out) {
+    std::fprintf(stderr, "kerf: --journal: %s\n", error.c_str());
+    return false;
+  }
+  if (resume) from = control::resume_point(job, out->state());
+  return true;
+}
+
+}  // namespace kerf::cli

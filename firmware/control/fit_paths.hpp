@@ -1,0 +1,43 @@
+// A point file's cut paths fitted one by one into a controller Job: each
+// path becomes a chain of arcs and lines at the cut feed, pierced at its
+// first point. Shared by `kerf sim` and `kerf run`.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "control/job.hpp"
+#include "control/journal.hpp"
+#include "io/point_file.hpp"
+#include "job/criterion.hpp"
+#include "kerf/core/status.hpp"
+#include "kerf/fit/fit.hpp"
+
+namespace kerf::cli {
+
+struct FittedJob {
+  control::Job job;
+  std::vector<fit::Piece<double>> pieces;  // in job order
+  std::vector<std::size_t> piece_path;     // the path of each piece
+};
+
+// On failure returns false with `error` ("path N (line L): reason") and `status`.
+// numeric: the fit's scalar type (job/criterion.hpp).
+bool fit_paths(const io::PointFile& in, Criterion criterion, double tol, double feed_mm_s,
+               FittedJob& out, std::string& error, Status& status,
+               Numeric numeric = Numeric::floating);
+
+// fit_paths for a command: on failure prints "kerf: FILE: reason" and
+// returns the exit code (2 for bad input, 1 otherwise); 0 on success.
+int fit_paths_or_say(const io::PointFile& in, Criterion criterion, double tol, double feed_mm_s,
+                     FittedJob& out, Numeric numeric = Numeric::floating);
+
+// The job's journal for a run: none (empty path; the run starts at the
+// job's beginning), a new one, or with `resume` the one a previous run left,
+// and the point this run starts from. On failure prints
+// "kerf: --journal: reason" and returns false.
+bool open_journal(const std::string& path, bool resume, const control::Job& job,
+                  std::unique_ptr<control::Journal>& out, control::ResumePoint& from);
+
+}  // namespace kerf::cli

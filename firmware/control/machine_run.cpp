@@ -1,0 +1,74 @@
+#include "control/machine_run.hpp"
+
+#include <cerrno>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+
+#include "control/controller.hpp"
+#include "control/machine_config.hpp"
+#include "control/run_report.hpp"
+#include "io/options.hpp"
+#include "io/output_file.hpp"
+#include "kerf/hal/rt_loop.hpp"
+
+namespace kerf::control {
+
+namespace {
+
+volatile std::sig_atomic_t g_signal = 0;
+extern "C" void on_signal(int sig) { g_signal = sig; }
+
+}  // namespace
+
+int run_on_machine(const Job& job, const config::Config& cfg, hal::SegmentLink& link, hal::Gpio& gpio,
+                   Journal* journal, const ResumePoint& from, bool resumed, const std::string& report) {
+  using cli::kExitFailure;
+  using cli::kExitOk;
+  const hal::RtSetup rt = hal::rt_setup(cfg.rt.priority, cfg.rt.lock_memory);
+  if (!rt.warning.empty()) std::fprintf(stderr, "kerf: run: %s\n", rt.warning.c_str());
+  struct sigaction sa {};
+  sa.sa_handler = on_signal;
+  sigaction(SIGINT, &sa, nullptr);
+  sigaction(SIGTERM, &sa, nullptr);
+
+  Controller ctl(job, controller_config(cfg), link, gpio, journal);
+  ctl.start(from);
+  hal::RtLoop loop(cfg.machine.cycle);
+  double t0 = -1.0, next_status = 1.0, now = 0.0;
+  while (!ctl.finished()) {
+    const double due = loop.wait_next();
+    if (t0 < 0.0) t0 = due;
+    if (g_signal != 0) ctl.request_stop(g_signal == SIGINT ? "stopped by SIGINT" : "stopped by SIGTERM");
+    now = due - t0;
+    ctl.cycle(now);
+    if (now >= next_status) {  // the operator's status line, once a second
+      next_status += 1.0;
+      std::fprintf(stderr, "kerf: run: t %.0f s, %s, segment %lld of %zu; %s\n", now,
+                   to_string(ctl.state()), static_cast<long long>(ctl.report().last_completed + 1),
+                   ctl.report().planned, loop.stats().describe().c_str());
+    }
+  }
+  const RunReport& r = ctl.report();
+  RunSummary sum =
+      summarise_run(r, job.paths.size(), config::to_string(cfg.link.kind), resumed, journal);
+  sum.simulated = false;
+  sum.torch_on = ctl.torch();
+  sum.duration_s = now;  // on the loop's clock: overrun cycles are skipped, not counted
+  sum.rt = loop.stats().describe();
+  sum.rt_histogram = loop.stats().histogram();
+  if (!report.empty() && !io::write_output(report, format_run_json(sum))) {
+    std::fprintf(stderr, "kerf: --report: cannot write %s: %s\n", report.c_str(), std::strerror(errno));
+    return kExitFailure;
+  }
+  std::fputs(format_run_summary(sum).c_str(), stdout);
+  std::fprintf(stdout, "kerf run: %s; wake-up lateness:\n%s", sum.rt.c_str(), sum.rt_histogram.c_str());
+  if (r.state != State::done) {
+    std::fprintf(stderr, "kerf: run: stopped after segment %lld: %s\n", static_cast<long long>(sum.last_executed),
+                 r.reason.c_str());
+    return kExitFailure;
+  }
+  return kExitOk;
+}
+
+}  // namespace kerf::control

@@ -1,0 +1,111 @@
+#include "control/run_report.hpp"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace kerf::control {
+
+RunSummary summarise_run(const RunReport& r, std::size_t paths, const std::string& link, bool resumed,
+                         const Journal* journal) {
+  RunSummary s;
+  s.state = to_string(r.state);
+  s.reason = r.reason;
+  s.link = link;
+  s.paths = paths;
+  s.pierces = r.pierces;
+  s.planned = r.planned;
+  s.executed = r.completed_this_run;
+  s.last_executed = r.last_completed + 1;
+  s.resumed_from = resumed ? r.first + 1 : 0;
+  s.has_cut_to = r.has_cut_to;
+  s.cut_to = r.cut_to;
+  s.torch_off_valid = r.torch_off_valid;
+  s.torch_off_at = r.torch_off_at;
+  s.stopped_at = r.stopped_at;
+  s.link_errors = r.link_errors;
+  s.executed_total = journal ? journal->state().executed_total : r.completed_this_run;
+  s.duplicates = journal ? journal->state().duplicates : 0;
+  s.runs = journal ? journal->state().runs : 1;
+  return s;
+}
+
+namespace {
+
+std::string json_string(const std::string& s) {
+  std::string out = "\"";
+  for (const char c : s) {
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += c;
+    } else if (static_cast<unsigned char>(c) < 0x20) {
+      char esc[8];
+      std::snprintf(esc, sizeof esc, "\\u%04x", static_cast<unsigned>(c));
+      out += esc;
+    } else {
+      out += c;
+    }
+  }
+  return out + "\"";
+}
+
+std::string point(Vec2<double> p) {
+  char buf[80];
+  std::snprintf(buf, sizeof buf, "[%.6f, %.6f]", p.x, p.y);
+  return buf;
+}
+
+}  // namespace
+
+std::string format_run_json(const RunSummary& s) {
+  std::string cut_to = "null";
+  if (s.has_cut_to)
+    cut_to = "{\"segment\": " + std::to_string(s.cut_to.segment + 1) + ", \"at\": " + point(s.cut_to.at) + "}";
+  std::string histogram = "null";
+  if (!s.rt_histogram.empty()) {  // "[8, 16) us  4123" lines as a JSON array of strings
+    histogram = "[";
+    std::size_t from = 0;
+    while (from < s.rt_histogram.size()) {
+      std::size_t nl = s.rt_histogram.find('\n', from);
+      if (nl == std::string::npos) nl = s.rt_histogram.size();
+      if (nl > from) histogram += (histogram.size() > 1 ? ", " : "") + json_string(s.rt_histogram.substr(from, nl - from));
+      from = nl + 1;
+    }
+    histogram += "]";
+  }
+  char buf[4096];
+  std::snprintf(
+      buf, sizeof buf,
+      "{\n  \"state\": \"%s\",\n  \"fault\": %s,\n  \"link\": \"%s\",\n  \"paths\": %zu,\n  \"pierces\": %zu,\n"
+      "  \"segments_planned\": %zu,\n  \"segments_executed\": %zu,\n  \"segments_executed_total\": %llu,\n"
+      "  \"duplicates\": %llu,\n  \"last_executed_segment\": %lld,\n  \"resumed_from_segment\": %zu,\n"
+      "  \"runs\": %u,\n  \"cut_to\": %s,\n  \"torch_on\": %s,\n  \"torch_off_at\": %s,\n  \"stopped_at\": %s,\n"
+      "  \"link_errors\": %llu,\n  \"board_duplicates_dropped\": %u,\n  \"max_path_deviation_mm\": %.6f,\n"
+      "  \"duration_s\": %.6f,\n  \"wall_s\": %.3f,\n  \"rt\": %s,\n  \"rt_histogram\": %s\n}\n",
+      s.state.c_str(), s.reason.empty() ? "null" : json_string(s.reason).c_str(), s.link.c_str(), s.paths,
+      s.pierces, s.planned, s.executed, static_cast<unsigned long long>(s.executed_total),
+      static_cast<unsigned long long>(s.duplicates), static_cast<long long>(s.last_executed), s.resumed_from,
+      s.runs, cut_to.c_str(), s.torch_on ? "true" : "false",
+      s.torch_off_valid ? point(s.torch_off_at).c_str() : "null", point(s.stopped_at).c_str(),
+      static_cast<unsigned long long>(s.link_errors), s.board_duplicates, s.max_path_deviation_mm,
+      s.duration_s, s.wall_s, s.rt.empty() ? "null" : json_string(s.rt).c_str(), histogram.c_str());
+  return buf;
+}
+
+std::string format_run_summary(const RunSummary& s) {
+  char head[512], tail[256];
+  std::snprintf(head, sizeof head,
+                "kerf %s: %s over %s: %zu paths, %zu of %zu segments executed this run (last %lld; "
+                "%llu in all, %llu duplicates), %zu pierces",
+                s.simulated ? "sim" : "run", s.state.c_str(), s.link.c_str(), s.paths, s.executed, s.planned,
+                static_cast<long long>(s.last_executed), static_cast<unsigned long long>(s.executed_total),
+                static_cast<unsigned long long>(s.duplicates), s.pierces);
+  if (s.simulated)
+    std::snprintf(tail, sizeof tail, "; max path deviation %.6f mm; %.3f s simulated, %.3f s wall", s.max_path_deviation_mm,
+                  s.duration_s, s.wall_s);
+  else
+    std::snprintf(tail, sizeof tail, "; %.3f s", s.duration_s);
+  return std::string(head) + tail + "; torch " + (s.torch_on ? "ON" : "off") +
+         (s.reason.empty() ? "" : "; stopped: " + s.reason) + "\n";
+}
+
+}  // namespace kerf::control

@@ -1,0 +1,51 @@
+// What a run of a job reports, `kerf sim` and `kerf run` alike: the JSON
+// report and the one-line summary, from the controller's report and the
+// journal.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "control/controller.hpp"
+#include "control/journal.hpp"
+#include "kerf/geom/vec2.hpp"
+
+namespace kerf::control {
+
+struct RunSummary {
+  bool simulated = true;  // kerf sim; false for kerf run (no trace, no simulated time)
+  std::string state;   // done | fault | estop
+  std::string reason;  // empty when done
+  std::string link;    // modbus-tcp | modbus-rtu
+  std::size_t paths = 0, pierces = 0;
+  std::size_t planned = 0;          // segments in the job
+  std::size_t executed = 0;         // completed in this run
+  std::uint64_t executed_total = 0; // completed over every run of the job (the journal's count)
+  std::uint64_t duplicates = 0;     // segments completed more than once
+  std::int64_t last_executed = 0;   // 1-based number of the last completed segment, 0 for none
+  std::size_t resumed_from = 0;     // 1-based first segment of this run; 0: a new job
+  std::uint32_t runs = 1;
+  bool has_cut_to = false;          // where the torch went off inside the next segment
+  CutPoint cut_to;
+  bool torch_on = false;
+  bool torch_off_valid = false;
+  Vec2<double> torch_off_at{}, stopped_at{};
+  std::uint64_t link_errors = 0;
+  std::uint32_t board_duplicates = 0;  // resent segments the board dropped
+  double max_path_deviation_mm = 0.0;
+  double duration_s = 0.0;  // simulated
+  double wall_s = 0.0;
+  std::string rt;           // the cycle loop's statistics, when paced in real time
+  std::string rt_histogram; // its wake-up lateness histogram, one bin per line
+};
+
+// The summary's fields that come from the controller's report and the
+// journal (when there is one; otherwise from this run alone). `resumed`:
+// this run started from a journal.
+RunSummary summarise_run(const RunReport& r, std::size_t paths, const std::string& link, bool resumed,
+                         const Journal* journal);
+
+std::string format_run_json(const RunSummary& s);
+std::string format_run_summary(const RunSummary& s);
+
+}  // namespace kerf::control

@@ -1,0 +1,114 @@
+#include "job/fit_job.hpp"
+
+#include "job/biarc_job.hpp"
+#include "job/check_fit.hpp"
+#include "job/fit_fixed.hpp"
+
+#include <cstdio>
+#include "io/band_storage.hpp"
+#include "job/gcode_reader.hpp"
+#include "io/fit_storage.hpp"
+#include "kerf/fit/band_fit.hpp"
+
+namespace kerf::cli {
+
+bool read_job(const std::string& file, Criterion criterion, io::PointFile& out,
+              const JobColumns& columns) {
+  if (io::is_gcode_path(file)) {  // a G-code job: its cut paths, arcs sampled
+    std::string error;
+    if (io::read_gcode_job(file, out, error)) return true;
+    std::fprintf(stderr, "%s\n", error.c_str());
+    return false;
+  }
+  out = io::read_points(file, columns.angles);
+  if (out.ok && !out.tols.empty() && criterion != Criterion::band) {
+    out.line = out.point_lines.empty() ? 0 : out.point_lines[0];
+    out.reason = "a third column (per-point tol) needs --criterion band";
+    out.ok = false;
+  }
+  if (out.ok && !out.tangents.empty() && (criterion != Criterion::biarc || !columns.tangents)) {
+    out.line = out.point_lines.empty() ? 0 : out.point_lines[0];
+    out.reason = criterion != Criterion::biarc
+                     ? "tangent columns (x y tx ty) need --criterion biarc"
+                     : "tangent columns are read by kerf fit only (this command estimates them)";
+    out.ok = false;
+  }
+  if (!out.ok) std::fprintf(stderr, "%s\n", io::describe_error(out).c_str());
+  return out.ok;
+}
+
+bool fit_job(const std::vector<Vec2<double>>& pts, const std::vector<double>& tols, double tol,
+             Criterion criterion, std::vector<fit::Piece<double>>& out,
+             std::string& error, Status& status, Numeric numeric, double tie_break) {
+  status = Status::invalid_argument;
+  const bool fixed = numeric == Numeric::fixed;
+  if (criterion == Criterion::biarc) {
+    if (!tols.empty()) {
+      error = "a third column (per-point tol) needs --criterion band";
+      return false;
+    }
+    std::vector<fit::BiarcPiece<double>> biarcs;
+    fit::Fit<double> fit{};
+    if (!fit_biarc_path(pts, {}, tol, biarcs, fit, error, status, fit::BiarcMethod::exact_sets, fixed))
+      return false;
+    // Each biarc runs as its two arcs; both keep the biarc's point range.
+    out.clear();
+    for (const fit::BiarcPiece<double>& b : biarcs)
+      for (const Segment<double>& g : b.arc) out.push_back({b.first, b.last, g, b.error});
+    return true;
+  }
+  const bool band = criterion == Criterion::band;
+  if (!band && !tols.empty()) {
+    error = "a third column (per-point tol) needs --criterion band";
+    return false;
+  }
+  const std::size_t n = pts.size();
+  const Span<const Vec2<double>> points(pts.data(), n);
+  std::vector<fit::Piece<double>> pieces(n > 1 ? n - 1 : 1);
+  const Span<fit::Piece<double>> dst(pieces.data(), pieces.size());
+  Result<fit::Fit<double>> r = Status::invalid_argument;
+  if (band) {
+    std::vector<fit::BandWidth<double>> widths(n, {tol, tol});
+    for (std::size_t k = 0; k < tols.size() && k < n; ++k) widths[k] = {tols[k], tols[k]};
+    const Span<const fit::BandWidth<double>> w(widths.data(), n);
+    // Kept across calls: a weld fits one polyline after another.
+    thread_local io::BandStorage storage(0);
+    r = fixed           ? fit_band_fixed(points, w, 0, dst)
+        : tie_break > 0 ? fit::fit_band_min_count(points, w, storage.workspace_for(n), dst, tie_break)
+                        : fit::fit_band_min_count(points, w, storage.workspace_for(n), dst);
+  } else if (fixed) {
+    r = fit_vertex_fixed(points, tol, 0, fit::Method::optimal, dst);
+  } else {
+    io::FitStorage storage(n);
+    r = tie_break > 0 ? fit::fit_min_count(points, tol, fit::Method::optimal, storage.workspace(), dst, tie_break)
+                      : fit::fit_min_count(points, tol, fit::Method::optimal, storage.workspace(), dst);
+  }
+  if (!r.ok()) {
+    status = r.status();
+    error = std::string("fit failed: ") + to_string(r.status());
+    return false;
+  }
+  // A band piece crosses each inner point's gate, so it passes within the
+  // widest width (the band fit's tol) of every inner point: the vertex check
+  // applies to it too. Fixed-point pieces may exceed it by the quantization.
+  const Span<const fit::Piece<double>> fitted(dst.data(), r.value().pieces);
+  const double allowance = fixed ? fixed_fit_slack(points) : 0.0;
+  if (const std::string bad = check_fit(points, fitted, r.value().tol + allowance); !bad.empty()) {
+    status = Status::infeasible;
+    error = "internal error: the fit fails its own check (" + bad + ")";
+    return false;
+  }
+  // Inside the band an arc is within the widest width of its polyline; more
+  // is a band fitter bug (found by fuzz_fit_band at sharp turns).
+  if (band && !(r.value().max_error <= r.value().tol * (1 + 1e-6))) {
+    status = Status::infeasible;
+    error = "internal error: the fit leaves the band (max error " + std::to_string(r.value().max_error) +
+            " > tol " + std::to_string(r.value().tol) + ")";
+    return false;
+  }
+  out.assign(fitted.begin(), fitted.end());
+  status = Status::ok;
+  return true;
+}
+
+}  // namespace kerf::cli

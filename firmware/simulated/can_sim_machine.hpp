@@ -1,0 +1,36 @@
+// The simulated machine on CAN: the controller drives a CanSimLink (CiA 402
+// drives on the in-process bus, or SocketCAN) instead of the Modbus board,
+// in lockstep on one simulated clock: each controller cycle is followed by
+// the SYNC periods it spans. Same result as run_sim_machine (trace, executed
+// segments, the controller's report), so `kerf sim --link can` can report
+// and trace as for Modbus. Faults: heartbeat-loss, emcy, bus-off,
+// enable-refused at simulated times.
+#pragma once
+
+#include <vector>
+
+#include "simulated/can_sim_link.hpp"
+#include "simulated/sim_machine.hpp"
+
+namespace kerf::control {
+
+struct CanFault {
+  CanFaultKind kind = CanFaultKind::heartbeat_loss;
+  double at_s = 0.0;  // simulated time
+};
+
+struct CanMachineConfig {
+  CanSimOptions can;            // axes, node ids, SYNC period, iface, counts/mm, start
+  double cycle_s = 0.002;       // controller period: a whole number of SYNC periods
+  double speed = 0.0;           // simulated s per wall s; 0 = as fast as possible (in-process bus only)
+  std::vector<CanFault> faults;
+  double max_sim_s = 4 * 3600.0;
+};
+
+// The CAN settings and the controller period from a machine configuration.
+CanMachineConfig can_machine_config(const config::Config& cfg);
+
+SimMachineResult run_can_sim_machine(const Job& job, const ControllerConfig& ccfg, const CanMachineConfig& mcfg,
+                                     hal::Gpio& gpio, Journal* journal, const ResumePoint& from);
+
+}  // namespace kerf::control

@@ -1,0 +1,290 @@
+#include "simulated/sim_command.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+#include <optional>
+#include <set>
+
+#include "job/fit_job.hpp"
+#include "control/fit_paths.hpp"
+#include "io/options.hpp"
+#include "config/config.hpp"
+#include "simulated/can_sim_machine.hpp"
+#include "control/machine_config.hpp"
+#include "control/run_report.hpp"
+#include "simulated/sim_machine.hpp"
+#include "io/output_file.hpp"
+#include "io/point_file.hpp"
+#include "io/run_svg.hpp"
+#include "simulated/sim_output.hpp"
+#include "kerf/sim/scripted_gpio.hpp"
+
+namespace kerf::cli {
+
+namespace {
+
+const char* const kDemoJob =
+#include "demo_job.inc"
+    ;
+
+constexpr const char* kFaultKinds =
+    "estop, arc-lost, no-arc, limit, hold, cycle-start, drive-fault, link-drop, link-stall, modbus-exception, "
+    "crc-error, heartbeat-loss, emcy, bus-off or enable-refused";
+
+// KIND@SECONDS[:DURATION]: a GPIO event for the scripted inputs, or a fault
+// on the board's side.
+bool parse_fault(const std::string& text, const std::string& link, std::vector<sim::GpioEvent>& gpio,
+                 std::vector<control::BoardFault>& board, std::vector<control::CanFault>& can, std::string& error) {
+  const bool rtu = link == "modbus-rtu", on_can = link == "can";
+  const std::size_t at = text.find('@');
+  const std::string kind = text.substr(0, at);
+  sim::GpioEvent g;
+  control::BoardFault b;
+  control::CanFault c;
+  bool is_gpio = true, is_can = false;
+  if (kind == "estop") g.kind = sim::GpioEvent::Kind::estop;
+  else if (kind == "arc-lost") g.kind = sim::GpioEvent::Kind::arc_lost;
+  else if (kind == "no-arc") g.kind = sim::GpioEvent::Kind::no_arc;
+  else if (kind == "limit") g.kind = sim::GpioEvent::Kind::limit, g.limit = 0;
+  else if (kind == "hold") g.kind = sim::GpioEvent::Kind::hold;
+  else if (kind == "cycle-start") g.kind = sim::GpioEvent::Kind::cycle_start;
+  else {
+    is_gpio = false;
+    if (kind == "drive-fault") b.kind = control::BoardFaultKind::drive_fault;
+    else if (kind == "link-drop") b.kind = control::BoardFaultKind::link_drop;
+    else if (kind == "link-stall") b.kind = control::BoardFaultKind::link_stall;
+    else if (kind == "modbus-exception") b.kind = control::BoardFaultKind::modbus_exception;
+    else if (kind == "crc-error") b.kind = control::BoardFaultKind::crc_error;
+    else if (control::parse_can_fault(kind, c.kind)) is_can = true;
+    else {
+      error = "--fault: unknown kind " + quoted(kind) + " (expected " + kFaultKinds + ")";
+      return false;
+    }
+  }
+  if (on_can && !is_gpio && !is_can) {
+    if (b.kind != control::BoardFaultKind::drive_fault) {
+      error = "--fault: " + kind + " is a Modbus fault; on --link can: heartbeat-loss, emcy, bus-off, enable-refused";
+      return false;
+    }
+    is_can = true;  // a drive fault on CAN is the drive's EMCY
+    c.kind = control::CanFaultKind::emcy;
+  }
+  if (is_can && !on_can) {
+    error = "--fault: " + kind + " needs --link can";
+    return false;
+  }
+  if (!is_gpio && !is_can && b.kind == control::BoardFaultKind::crc_error && !rtu) {
+    error = "--fault: crc-error needs --link modbus-rtu (TCP frames carry no CRC)";
+    return false;
+  }
+  if (at == std::string::npos) {
+    error = "--fault: expected KIND@SECONDS[:DURATION], got " + quoted(text);
+    return false;
+  }
+  const std::string rest = text.substr(at + 1);
+  const std::size_t colon = rest.find(':');
+  double t = 0.0, duration = 0.0;
+  if (!parse_length("--fault", rest.substr(0, colon), true, t, error)) return false;
+  if (colon != std::string::npos && !parse_length("--fault", rest.substr(colon + 1), false, duration, error))
+    return false;
+  if (is_gpio) {
+    g.t_s = t;
+    g.duration_s = duration;
+    gpio.push_back(g);
+  } else if (is_can) {
+    c.at_s = t;
+    can.push_back(c);
+  } else {
+    b.at_s = t;
+    if (colon != std::string::npos) b.duration_s = duration;
+    board.push_back(b);
+  }
+  return true;
+}
+
+bool write_or_say(const std::string& option, const std::string& path, const std::string& text) {
+  if (path.empty() || io::write_output(path, text)) return true;
+  std::fprintf(stderr, "kerf: %s: cannot write %s: %s\n", option.c_str(), path.c_str(), std::strerror(errno));
+  return false;
+}
+
+}  // namespace
+
+int run_sim(const SimOptions& given) {
+  SimOptions opts = given;
+  std::string error;
+  config::Config cfg = config::defaults();
+  if (!opts.config.empty() && !config::load(opts.config, cfg, error)) {
+    std::fprintf(stderr, "%s\n", error.c_str());
+    return kExitUsage;
+  }
+  const bool demo = opts.file.empty();
+  if (demo) {  // the embedded default: everything written next to the user
+    if (opts.trace.empty()) opts.trace = "kerf-sim.csv";
+    if (opts.plot.empty()) opts.plot = "kerf-sim.svg";
+    if (opts.report.empty()) opts.report = "kerf-sim.json";
+  }
+  std::string link = opts.link.empty() ? config::to_string(cfg.link.kind) : opts.link;
+  if (link != "modbus-tcp" && link != "modbus-rtu" && link != "can")
+    return usage_error("--link: unknown link " + quoted(link) + " (expected modbus-tcp, modbus-rtu or can)");
+  const bool rtu = link == "modbus-rtu", can = link == "can";
+  if (!can && (!opts.axes.empty() || !opts.sync_ms.empty() || !opts.iface.empty()))
+    return usage_error(std::string(!opts.axes.empty() ? "--axes" : !opts.sync_ms.empty() ? "--sync-ms" : "--iface") +
+                       ": only with --link can");
+  const std::optional<Criterion> criterion =
+      opts.criterion.empty() ? cfg.fit.criterion : parse_criterion(opts.criterion);
+  if (!criterion) return usage_error(unknown_criterion(opts.criterion));
+  const std::optional<Numeric> numeric = opts.numeric.empty() ? cfg.fit.numeric : parse_numeric(opts.numeric);
+  if (!numeric) return usage_error(unknown_numeric(opts.numeric));
+  double tol = cfg.fit.tol, feed = cfg.cut.feed, speed = 0.0, link_timeout = cfg.link.timeout;
+  if ((!opts.tol.empty() && !parse_length("--tol", opts.tol, false, tol, error)) ||
+      (!opts.feed.empty() && !parse_length("--feed", opts.feed, false, feed, error)) ||
+      !parse_length("--speed", opts.speed, true, speed, error) ||
+      (!opts.link_timeout.empty() && !parse_length("--link-timeout", opts.link_timeout, false, link_timeout, error)))
+    return usage_error(error);
+  if (feed > cfg.machine.max_feed)
+    return usage_error("--feed: " + opts.feed + " mm/min is above the machine's max_feed");
+  if (opts.resume && opts.journal.empty()) return usage_error("--resume: needs --journal FILE");
+
+  sim::ScriptedGpioOptions gopts;
+  // The simulated machine has the config's limit switches, or X and Y ones.
+  gopts.limit_count = cfg.gpio.limits.empty() ? 2 : cfg.gpio.limits.size();
+  std::vector<sim::GpioEvent> events;
+  std::vector<control::BoardFault> board_faults;
+  std::vector<control::CanFault> can_faults;
+  for (const std::string& text : opts.faults)
+    if (!parse_fault(text, link, events, board_faults, can_faults, error)) return usage_error(error);
+  control::CanMachineConfig can_cfg = control::can_machine_config(cfg);
+  if (can) {
+    double axes = 0.0, sync_ms = 0.0;
+    if (!opts.axes.empty()) {
+      if (!parse_length("--axes", opts.axes, false, axes, error)) return usage_error(error);
+      if (axes != 2.0 && axes != 3.0) return usage_error("--axes: the CAN link drives 2 or 3 axes, got " + opts.axes);
+      can_cfg.can.axes = static_cast<std::size_t>(axes);
+      if (can_cfg.can.node_ids.size() != can_cfg.can.axes) can_cfg.can.node_ids.clear();  // 1..axes
+    }
+    if (!opts.sync_ms.empty()) {
+      if (!parse_length("--sync-ms", opts.sync_ms, false, sync_ms, error)) return usage_error(error);
+      if (sync_ms < 1.0 || sync_ms > 10.0 || sync_ms != std::floor(sync_ms))
+        return usage_error("--sync-ms: a whole number of ms in 1..10, got " + opts.sync_ms);
+      can_cfg.can.sync_ms = sync_ms;
+    }
+    can_cfg.can.iface = opts.iface;
+    can_cfg.faults = can_faults;
+  }
+  if (!opts.gpio_script.empty() &&
+      !sim::load_gpio_script(opts.gpio_script, gopts.limit_count, events, error)) {
+    std::fprintf(stderr, "%s\n", error.c_str());
+    return kExitUsage;
+  }
+
+  io::PointFile in;
+  if (demo) {
+    in = io::parse_points(kDemoJob, "<demo job>");
+    if (!in.ok) {
+      std::fprintf(stderr, "%s\n", io::describe_error(in).c_str());
+      return kExitFailure;
+    }
+  } else if (!read_job(opts.file, *criterion, in)) {
+    return kExitUsage;
+  }
+  FittedJob fitted;
+  if (const int rc = fit_paths_or_say(in, *criterion, tol, feed / 60.0, fitted, *numeric); rc != 0) return rc;
+
+  std::unique_ptr<control::Journal> journal;
+  control::ResumePoint from;
+  if (!open_journal(opts.journal, opts.resume, fitted.job, journal, from)) return kExitUsage;
+
+  sim::ScriptedGpio gpio(gopts);
+  if (!gpio.add(events, error)) return usage_error("--fault: " + error);
+
+  control::ControllerConfig ccfg = control::controller_config(cfg);
+  ccfg.link_timeout_s = link_timeout;
+  ccfg.link_watchdog_s = link_timeout / 2.0;
+  control::SimMachineConfig mcfg = control::sim_machine_config(cfg);
+  mcfg.rtu = rtu;
+  mcfg.speed = speed;
+  mcfg.faults = board_faults;
+  // Long enough for any run of this job: every path at the cut feed, a rapid
+  // across the job's extent between paths, each pierce at its timeout, three
+  // times over.
+  double cut_mm = 0.0, extent = 0.0;
+  for (const fit::Piece<double>& p : fitted.pieces) {
+    cut_mm += p.segment.is_arc() ? p.segment.radius() * 6.3 : distance(p.segment.start, p.segment.end);
+    extent = std::max({extent, std::abs(p.segment.end.x), std::abs(p.segment.end.y)});
+  }
+  const double paths = static_cast<double>(fitted.job.paths.size());
+  mcfg.max_sim_s = std::max(600.0, 3.0 * (cut_mm / (feed / 60.0) + paths * (4.0 * extent / (cfg.machine.rapid_feed / 60.0) +
+                                                                             cfg.cut.arc_ok_timeout + cfg.cut.pierce_delay + 2.0)));
+  // The axes power up at the job's first pierce point, as if homed there; a
+  // resumed run starts there too and travels to its resume point.
+  mcfg.start = fitted.job.paths.front().start;
+
+  control::SimMachineResult res;
+  if (can) {
+    can_cfg.can.start = mcfg.start;
+    can_cfg.speed = speed;
+    can_cfg.max_sim_s = mcfg.max_sim_s;
+    // The controller cycles in whole SYNC periods.
+    const double sync_s = can_cfg.can.sync_ms / 1000.0;
+    can_cfg.cycle_s = std::max(sync_s, std::round(mcfg.cycle_s / sync_s) * sync_s);
+    res = control::run_can_sim_machine(fitted.job, ccfg, can_cfg, gpio, journal.get(), from);
+  } else {
+    res = control::run_sim_machine(fitted.job, ccfg, mcfg, gpio, journal.get(), from);
+  }
+  if (!res.setup_error.empty()) {
+    std::fprintf(stderr, "kerf: sim: %s\n", res.setup_error.c_str());
+    return kExitFailure;
+  }
+
+  control::RunSummary sum = control::summarise_run(res.run, fitted.job.paths.size(), link, opts.resume, journal.get());
+  // The board's truth: what it executed (with the link down it may run on
+  // past what the controller saw and journaled).
+  sum.executed = res.executed.size();
+  sum.torch_on = gpio.torch();
+  sum.board_duplicates = res.board.duplicates;
+  sum.max_path_deviation_mm = io::max_path_deviation(res.trace, fitted.pieces);
+  sum.duration_s = res.sim_s;
+  sum.wall_s = res.wall_s;
+  sum.rt = res.rt;
+  sum.rt_histogram = res.rt_histogram;
+  if (!journal) {  // no journal: count repeats in this run's own record
+    const std::set<std::int64_t> seen(res.executed.begin(), res.executed.end());
+    sum.executed_total = res.executed.size();
+    sum.duplicates = res.executed.size() - seen.size();
+  }
+
+  io::RunPlot plot;
+  if (!opts.plot.empty()) {
+    for (std::size_t p = 0; p < fitted.job.paths.size(); ++p) {
+      const std::size_t b = in.path_begin.empty() ? 0 : in.path_begin[p];
+      const std::size_t e = p + 1 < in.path_begin.size() ? in.path_begin[p + 1] : in.points.size();
+      plot.paths.emplace_back(in.points.begin() + static_cast<std::ptrdiff_t>(b),
+                              in.points.begin() + static_cast<std::ptrdiff_t>(e));
+    }
+    for (const fit::Piece<double>& piece : fitted.pieces) plot.pieces.push_back(piece.segment);
+    plot.piece_path = fitted.piece_path;
+    plot.tol = tol;
+    for (const sim::TraceSample& t : res.trace) plot.trace.push_back({t.t_s, t.pos, t.seq, t.torch});
+    plot.title = "kerf sim: " + in.file + " (" + sum.state + ")";
+  }
+  if (!write_or_say("--trace", opts.trace, io::format_trace_csv(res.trace)) ||
+      !write_or_say("--report", opts.report, control::format_run_json(sum)) ||
+      (!opts.plot.empty() && !write_or_say("--plot", opts.plot, io::format_run_svg(plot))))
+    return kExitFailure;
+  std::fputs(control::format_run_summary(sum).c_str(), stdout);
+  if (demo)
+    std::printf("kerf sim: wrote %s, %s and %s\n", opts.trace.c_str(), opts.plot.c_str(), opts.report.c_str());
+  if (res.run.state != control::State::done) {
+    std::fprintf(stderr, "kerf: sim: stopped after segment %lld: %s\n", static_cast<long long>(sum.last_executed),
+                 sum.reason.c_str());
+    return kExitFailure;
+  }
+  return kExitOk;
+}
+
+}  // namespace kerf::cli

@@ -1,0 +1,123 @@
+#include "simulated/sim_machine.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <thread>
+
+#include "kerf/hal/rt_loop.hpp"
+#include "simulated/sim_plant.hpp"
+
+namespace kerf::control {
+
+const char* to_string(BoardFaultKind k) {
+  switch (k) {
+    case BoardFaultKind::link_drop: return "link-drop";
+    case BoardFaultKind::link_stall: return "link-stall";
+    case BoardFaultKind::modbus_exception: return "modbus-exception";
+    case BoardFaultKind::crc_error: return "crc-error";
+    case BoardFaultKind::drive_fault: return "drive-fault";
+    case BoardFaultKind::heartbeat_loss: return "heartbeat-loss";
+    case BoardFaultKind::emcy: return "emcy";
+    case BoardFaultKind::bus_off: return "bus-off";
+    case BoardFaultKind::enable_refused: return "enable-refused";
+  }
+  return "unknown";
+}
+
+
+SimMachineConfig sim_machine_config(const config::Config& cfg) {
+  SimMachineConfig m;
+  m.rtu = cfg.link.kind == config::Link::Kind::modbus_rtu;
+  m.motion.servo_period_s = cfg.machine.servo_period;
+  m.motion.accel_mm_s2 = cfg.machine.accel;
+  m.motion.counts_per_mm = cfg.machine.axes.empty() ? 1000.0 : cfg.machine.axes.front().counts_per_mm;
+  m.cycle_s = cfg.machine.cycle;
+  return m;
+}
+
+SimMachineResult run_sim_machine(const Job& job, const ControllerConfig& ccfg, const SimMachineConfig& mcfg,
+                                 SimPlant& plant, hal::Gpio& gpio, Journal* journal, const ResumePoint& from) {
+  SimMachineResult res;
+  using clock = std::chrono::steady_clock;
+  const auto wall0 = clock::now();
+  const double servo = plant.tick_s();
+  const long ticks_per_cycle = std::max(1L, std::lround(mcfg.cycle_s / servo));
+  hal::SegmentLink& link = plant.link();
+  Controller ctl(job, ccfg, link, gpio, journal);
+  ctl.start(from);
+  std::vector<BoardFault> faults = mcfg.faults;
+  std::stable_sort(faults.begin(), faults.end(),
+                   [](const BoardFault& a, const BoardFault& b) { return a.at_s < b.at_s; });
+  std::size_t next_fault = 0;
+  res.trace.reserve(1 << 16);
+  std::uint64_t ticks = 0;
+  std::uint32_t last_executed = 0;
+  auto sample = [&] {
+    const hal::BoardStatus s = plant.truth();
+    const std::int64_t k = ctl.job_segment_of(s.executing);
+    res.trace.push_back({static_cast<double>(ticks) * servo, s.position,
+                         static_cast<std::uint32_t>(k < 0 ? 0 : k + 1), ctl.torch()});
+    for (std::uint32_t q = last_executed + 1; q <= s.last_executed; ++q) {
+      const std::int64_t done = ctl.job_segment_of(q);
+      if (done >= 0) res.executed.push_back(done);
+    }
+    last_executed = std::max(last_executed, s.last_executed);
+  };
+  sample();
+  // A few cycles after the controller is finished, so the trace shows the stop.
+  int tail = 0;
+  // Paced in real time (scaled by speed) on absolute deadlines, as `kerf run` is.
+  hal::RtLoop pace(mcfg.speed > 0.0 ? mcfg.cycle_s / mcfg.speed : 1.0);
+  auto last_wall = clock::now();
+  while (tail < 3) {
+    if (mcfg.speed > 0.0) pace.wait_next();
+    const double now = static_cast<double>(ticks) * servo;
+    while (next_fault < faults.size() && faults[next_fault].at_s <= now)
+      if (!plant.inject(faults[next_fault++])) {
+        res.setup_error = std::string("this link has no fault ") + to_string(faults[next_fault - 1].kind);
+        return res;
+      }
+    ctl.cycle(now);
+    // Link faults are wall-time events (timeouts, the board's watchdog): while
+    // the link is down the simulation runs at least in real time, so that the
+    // board moves on, blind, for as long as it would on a real machine.
+    long ticks_now = ticks_per_cycle;
+    const auto wall_now = clock::now();
+    if (ctl.link_down()) {
+      const double took = std::chrono::duration<double>(wall_now - last_wall).count();
+      if (took < mcfg.cycle_s) std::this_thread::sleep_for(std::chrono::duration<double>(mcfg.cycle_s - took));
+      ticks_now = std::max(ticks_per_cycle, std::lround(took / servo));
+    }
+    last_wall = clock::now();
+    for (long i = 0; i < ticks_now; ++i) {
+      plant.tick();
+      ++ticks;
+      sample();
+    }
+    // Finished, and the axes at rest (the controller may have lost the link,
+    // but the board brakes by itself and the simulation shows it).
+    if (ctl.finished()) {
+      const hal::BoardStatus s = plant.truth();
+      const bool still = s.position == res.trace[res.trace.size() - 1 - static_cast<std::size_t>(ticks_per_cycle)].pos;
+      tail = still && s.state != hal::BoardState::running ? tail + 1 : 0;
+    }
+    if (now > mcfg.max_sim_s) {
+      res.setup_error = "the job did not finish within the simulation's time limit";
+      break;
+    }
+  }
+  if (mcfg.speed > 0.0) {
+    res.rt = pace.stats().describe();
+    res.rt_histogram = pace.stats().histogram();
+  }
+  res.run = ctl.report();
+  res.board = plant.truth();
+  res.run.stopped_at = res.board.position;  // where the axes really came to rest
+  res.link_resends = link.resends();
+  res.sim_s = static_cast<double>(ticks) * servo;
+  res.wall_s = std::chrono::duration<double>(clock::now() - wall0).count();
+  return res;
+}
+
+}  // namespace kerf::control

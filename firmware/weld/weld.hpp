@@ -1,0 +1,72 @@
+// Welding a G-code file: each XY polyline of G1 moves becomes the fewest
+// G2/G3 arcs (and G1 lines) the chosen criterion allows within tol; every
+// other line is written back byte for byte.
+//
+// Rounding rule: a piece is fitted at tol minus a rounding budget of
+// 2 * 10^-D (file units), written with D decimals (I/J relative to the
+// rounded start), then measured as a controller will run it: the drawn arc
+// around the rounded centre, widened by the difference between its start
+// and end radius. The measure is the largest of: each input point inside the
+// piece to the drawn arc, sample points of the arc (tol/4 apart, at most 512
+// of them) to the input polyline, and the moved end point to its input point.
+// The band criterion's arcs are inside the band by construction (the fitter
+// certifies it); for the vertex criterion, the samples are the band check. Over tol, the piece is written again with D+1 and D+2
+// decimals; still over tol, its input lines are kept as they were.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <string>
+
+#include "job/criterion.hpp"
+#include "job/gcode_reader.hpp"
+
+namespace kerf::cli {
+
+struct WeldOptions {
+  double tol_mm = 0.025;
+  Criterion criterion = Criterion::band;  // vertex or band
+  int decimals = -1;               // < 0: as many as the file's X/Y words use (at least 3)
+  bool split_turns = true;         // fit separately at turns sharper than 90 degrees
+  double jitter = 0.02;            // fit without points within jitter * tol of their chord (0: keep all)
+  // The fitters' tie-break precision (fit/fit.hpp), per criterion; it does
+  // not change the piece count, only how far under tol the pieces stay.
+  // < 0: weld's choice (tie_break_for); 0: the fitters' own; >= 1: none.
+  double tie_break = -1;
+  // Threads that plan the parts of the polylines (split at sharp turns, each
+  // planned apart): 0 one per core, else at most this many and the cores; 1
+  // plans on the calling thread. The output is the same, byte for byte, for
+  // any count.
+  int threads = 0;
+  // As runs are fitted, in file order, always from the calling thread; may be empty.
+  std::function<void(std::size_t line, std::size_t lines)> progress;
+};
+
+struct WeldStats {
+  std::size_t input_moves = 0;   // blocks that move (G0..G3)
+  std::size_t output_moves = 0;
+  std::size_t arcs = 0;          // G2/G3 written by weld
+  std::size_t polylines = 0;     // welded
+  std::size_t kept_pieces = 0;   // pieces left as their input lines (rounding)
+  double max_deviation_mm = 0;   // measured, over the written pieces
+  int decimals = 0;
+};
+
+// The tie-break precision weld uses for `criterion` (opts.tie_break < 0).
+double tie_break_for(Criterion criterion);
+
+// The threads weld_gcode plans on for opts.threads == requested.
+unsigned weld_threads(int requested);
+
+// Welds g into `out`. False with `error` when a fit fails (a bug or a numeric
+// breakdown): then nothing is to be written.
+bool weld_gcode(const io::GcodeFile& g, const WeldOptions& opts, std::string& out,
+                WeldStats& stats, std::string& error);
+
+// `kerf weld` once its options are checked (app/weld_command.cpp): reads
+// `in` ("-": stdin), welds it, writes `out` ("-": stdout) and the summary
+// (on stderr when the G-code goes to stdout), with progress on a terminal.
+// Returns the exit code (io/options.hpp).
+int weld_file(const std::string& in, const std::string& out, WeldOptions w);
+
+}  // namespace kerf::cli

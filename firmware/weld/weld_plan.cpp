@@ -1,0 +1,319 @@
+#include "weld/weld_plan.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+#include "job/fit_job.hpp"
+#include "kerf/geom/segment.hpp"
+
+namespace kerf::cli::weld_detail {
+
+namespace {
+
+std::string format_number(double v, int decimals) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  std::string s = buf;
+  if (s.find('.') != std::string::npos) {
+    while (s.back() == '0') s.pop_back();
+    if (s.back() == '.') s.pop_back();
+  }
+  if (s == "-0") s = "0";
+  return s;
+}
+
+double rounded(double v, int decimals) { return std::strtod(format_number(v, decimals).c_str(), nullptr); }
+
+// max(dev, distance from q to the polyline pts[a..b] + widen), exactly. The
+// scan starts at segment `near` (the last sample's nearest: the samples walk
+// along the polyline) and goes outwards; it stops once q is within dev, where
+// the rest of the minimum cannot change the maximum. `near` receives q's
+// nearest segment when the scan went through.
+double raise_to_polyline(const std::vector<P>& pts, std::size_t a, std::size_t b, P q, double widen,
+                         double dev, std::size_t& near) {
+  double best = distance(pts[a], q);
+  if (best + widen <= dev) return dev;
+  const std::size_t from = std::clamp(near, a, b - 1);
+  auto within = [&](std::size_t k) {  // true once q is known to be within dev
+    const double d = distance_to_line_segment(pts[k], pts[k + 1], q);
+    if (d < best) {
+      best = d;
+      near = k;
+    }
+    return best + widen <= dev;
+  };
+  for (std::size_t step = 0;; ++step) {
+    const bool up = from + step < b;
+    const bool down = step > 0 && from >= a + step;
+    if (!up && !down) break;
+    if ((up && within(from + step)) || (down && within(from - step))) return dev;
+  }
+  return std::max(dev, best + widen);
+}
+
+// Writes piece `s` from the rounded start `from` with `decimals`, and
+// measures it against pts[a..b] (see weld.hpp).
+Written write_piece(const Segment<double>& s, P from, const std::vector<P>& pts, std::size_t a,
+                    std::size_t b, int decimals, double tol) {
+  Written w;
+  w.end = {rounded(s.end.x, decimals), rounded(s.end.y, decimals)};
+  const bool arc = s.is_arc();
+  P c{};
+  if (arc) {
+    const P off{rounded(s.centre.x - from.x, decimals), rounded(s.centre.y - from.y, decimals)};
+    c = from + off;
+    w.text = (s.dir < 0 ? "G2 X" : "G3 X") + format_number(w.end.x, decimals) + " Y" +
+             format_number(w.end.y, decimals) + " I" + format_number(off.x, decimals) + " J" +
+             format_number(off.y, decimals);
+  } else {
+    w.text = "G1 X" + format_number(w.end.x, decimals) + " Y" + format_number(w.end.y, decimals);
+  }
+  const Segment<double> drawn = arc ? Segment<double>::arc(from, w.end, c, s.dir) : Segment<double>::line(from, w.end);
+  const double widen = arc ? std::fabs((from - c).norm() - (w.end - c).norm()) : 0.0;
+  double dev = std::max(distance(w.end, pts[b]), distance(from, pts[a]));
+  for (std::size_t k = a + 1; k < b; ++k) dev = std::max(dev, distance_to_segment(drawn, pts[k]) + widen);
+  // Samples of the drawn piece against the polyline: the band side.
+  double sweep = 0, r = 0, a0 = 0;
+  double length = distance(from, w.end);
+  if (arc) {
+    r = (from - c).norm();
+    a0 = std::atan2(from.y - c.y, from.x - c.x);
+    const double a1 = std::atan2(w.end.y - c.y, w.end.x - c.x);
+    sweep = s.dir > 0 ? a1 - a0 : a0 - a1;
+    if (sweep <= 0) sweep += 2 * 3.14159265358979323846;
+    length = r * sweep;
+  }
+  const std::size_t n = std::clamp<std::size_t>(static_cast<std::size_t>(std::ceil(4 * length / tol)), 8, 512);
+  std::size_t near = a;
+  for (std::size_t k = 1; k < n; ++k) {
+    const double t = static_cast<double>(k) / static_cast<double>(n);
+    P q;
+    if (arc) {
+      const double ang = a0 + (s.dir > 0 ? 1 : -1) * sweep * t;
+      q = {c.x + r * std::cos(ang), c.y + r * std::sin(ang)};
+    } else {
+      q = from + (w.end - from) * t;
+    }
+    dev = raise_to_polyline(pts, a, b, q, widen, dev, near);
+  }
+  w.deviation = dev;
+  return w;
+}
+
+// pts without its jitter: a point that lies, with the points skipped before
+// it (at most 32 in a row), within `e` of the chord from the last kept point
+// to the next point.
+// kept_index maps each kept point to its index in pts; `moved` is the largest
+// distance of a skipped point from its chord.
+std::vector<P> without_jitter(const std::vector<P>& pts, double e, std::vector<std::size_t>& kept_index,
+                              double& moved) {
+  kept_index.clear();
+  kept_index.push_back(0);
+  moved = 0;
+  std::size_t a = 0;
+  for (std::size_t k = 1; k + 1 < pts.size(); ++k) {
+    bool drop = e > 0 && k - a <= 32;
+    double worst = 0;
+    for (std::size_t m = a + 1; m <= k && drop; ++m) {
+      worst = std::max(worst, distance_to_line_segment(pts[a], pts[k + 1], pts[m]));
+      drop = worst <= e;
+    }
+    if (drop) {
+      moved = std::max(moved, worst);
+      continue;
+    }
+    kept_index.push_back(k);
+    a = k;
+  }
+  kept_index.push_back(pts.size() - 1);
+  std::vector<P> out;
+  out.reserve(kept_index.size());
+  for (std::size_t k : kept_index) out.push_back(pts[k]);
+  return out;
+}
+
+// Plans parts: reads opts only, so that planners on several threads share
+// nothing (fit_job's workspace is thread_local).
+struct Planner {
+  const WeldOptions& opts;
+  int decimals = 0;
+  std::string error;
+
+  // The trouble resolve met in the run being planned: pieces refitted or
+  // kept as their input lines.
+  std::size_t trouble = 0;
+  std::size_t kept = 0;
+  bool closed_part = false;  // the part being planned ends where it starts
+
+  // Plans part j of r with the machine at `from` at its start. With the band
+  // criterion the part is fitted first without the fitters' tie-break (each
+  // of its steps is a whole search): the count is the same, only the pieces'
+  // place in the band differs. When a piece then fails the rounding check
+  // (refitted or kept, or a loop closed by a single segment), the part is
+  // planned again with weld's tie-break, whose pieces hug the input, and that
+  // plan is kept unless it has more moves: never more moves than the
+  // tie-break alone.
+  void plan(const Run& r, std::size_t j, P from, PartPlan& out) {
+    out = PartPlan{};
+    out.from_in = from;
+    error.clear();
+    if (!plan_two_pass(r, j, from, out)) {
+      out.ok = false;
+      out.error = error;
+    }
+  }
+
+  bool plan_two_pass(const Run& r, std::size_t j, P from, PartPlan& out) {
+    const double fine = opts.tie_break < 0 ? tie_break_for(opts.criterion) : opts.tie_break;
+    // The vertex criterion's fast pieces leave the band often (refits): it
+    // would plan most parts twice.
+    const bool two_pass = opts.tie_break < 0 && fine < 1 && opts.criterion == Criterion::band;
+    const std::size_t begin = r.cuts[j], k = r.cuts[j + 1];
+    std::vector<Planned>& first = out.pieces;
+    P first_from = from;
+    if (!fit_part(r, begin, k, two_pass ? 1.0 : fine, first_from, first)) return false;
+    std::size_t first_kept = kept;
+    // Without trouble each piece is one move (a kept single segment with
+    // no repeated points between): no plan of the same count has fewer.
+    if (two_pass && (trouble > 0 || moves_of(first, r.from_index) > first.size())) {
+      std::vector<Planned> again;
+      P again_from = from;
+      if (!fit_part(r, begin, k, fine, again_from, again)) return false;
+      if (moves_of(again, r.from_index) <= moves_of(first, r.from_index)) {
+        first.swap(again);
+        first_from = again_from;
+        first_kept = kept;
+      }
+    }
+    out.from_out = first_from;
+    out.kept = first_kept;
+    return true;
+  }
+
+  // Fits r.simple[begin..end] with `tie_break` and plans its pieces over
+  // r.pts (resolve); counts the trouble met.
+  bool fit_part(const Run& r, std::size_t begin, std::size_t end, double tie_break, P& from,
+                std::vector<Planned>& plan) {
+    const std::vector<P> part(r.simple.begin() + static_cast<std::ptrdiff_t>(begin),
+                              r.simple.begin() + static_cast<std::ptrdiff_t>(end) + 1);
+    std::vector<fit::Piece<double>> pieces;
+    Status status = Status::ok;
+    if (!fit_job(part, {}, r.fit_tol - r.moved, opts.criterion, pieces, error, status, Numeric::floating, tie_break))
+      return false;
+    for (fit::Piece<double>& pc : pieces) {
+      pc.first = static_cast<std::uint32_t>(r.kept_index[pc.first + begin]);
+      pc.last = static_cast<std::uint32_t>(r.kept_index[pc.last + begin]);
+    }
+    trouble = 0;
+    kept = 0;
+    closed_part = r.simple[begin] == r.simple[end];
+    return resolve(r.pts, pieces, r.fit_tol, r.tol, 0, from, plan);
+  }
+
+  // The moves a plan writes for the run (input blocks from_index apart).
+  static std::size_t moves_of(const std::vector<Planned>& plan, const std::vector<std::size_t>& from_index) {
+    std::size_t moves = 0;
+    for (const Planned& p : plan) moves += p.keep ? from_index[p.piece.last] - from_index[p.piece.first] : 1;
+    return moves;
+  }
+
+  // Writes each piece from the rounded end of the one before, with more
+  // decimals when rounding costs too much; a piece still over tol (or whose
+  // drawn arc leaves the band, which the vertex criterion allows) is fitted
+  // again with the band criterion at half the tol, once, before its input
+  // lines are kept.
+  bool resolve(const std::vector<P>& pts, const std::vector<fit::Piece<double>>& pieces, double fit_tol,
+               double tol, int depth, P& from, std::vector<Planned>& plan) {
+    for (const fit::Piece<double>& pc : pieces) {
+      Planned pl{pc, false, {}};
+      if (pc.last - pc.first < 2) {  // a single segment: its input line is already the best
+        // Closing a loop beside other pieces: an unbalanced split (a full
+        // circle drawn as one arc and a line); the tie-break's is tried too.
+        if (closed_part && pieces.size() > 1) ++trouble;
+        pl.keep = true;
+        plan.push_back(pl);
+        from = pts[pc.last];
+        continue;
+      }
+      bool ok = false;
+      if (pc.segment.is_arc()) {  // a nearly straight arc (huge radius) is written as a line when one fits
+        const double r = pc.segment.radius();
+        const double half = distance(pc.segment.start, pc.segment.end) / 2;
+        if (half < r && r - std::sqrt(r * r - half * half) < tol) {
+          const Written line = write_piece(Segment<double>::line(pc.segment.start, pc.segment.end), from, pts,
+                                           pc.first, pc.last, decimals, tol);
+          if (line.deviation <= tol) {
+            pl.written = line;
+            pl.piece.segment = Segment<double>::line(pc.segment.start, pc.segment.end);
+            ok = true;
+          }
+        }
+      }
+      for (int d = decimals; d <= decimals + 2 && !ok; ++d) {
+        pl.written = write_piece(pc.segment, from, pts, pc.first, pc.last, d, tol);
+        ok = pl.written.deviation <= tol;
+      }
+      if (ok) {
+        plan.push_back(pl);
+        from = pl.written.end;
+        continue;
+      }
+      ++trouble;
+      if (depth == 0) {
+        const std::vector<P> part(pts.begin() + pc.first, pts.begin() + pc.last + 1);
+        std::vector<fit::Piece<double>> again;
+        Status status = Status::ok;
+        // A finer tie-break than the first fit: rare, and its pieces then hug the input.
+        if (!fit_job(part, {}, fit_tol / 2, Criterion::band, again, error, status, Numeric::floating, 1e-3)) return false;
+        for (fit::Piece<double>& p : again) {
+          p.first += pc.first;
+          p.last += pc.first;
+        }
+        if (!resolve(pts, again, fit_tol / 2, tol, 1, from, plan)) return false;
+        continue;
+      }
+      ++kept;
+      pl.keep = true;
+      plan.push_back(pl);
+      from = pts[pc.last];
+    }
+    return true;
+  }
+};
+
+}  // namespace
+
+void prepare(const io::GPolyline& pl, const WeldOptions& opts, int decimals, Run& r) {
+  r.unit = pl.inches ? 25.4 : 1.0;
+  r.tol = opts.tol_mm / r.unit;
+  for (std::size_t k = 0; k < pl.points.size(); ++k) {
+    if (!r.pts.empty() && r.pts.back() == pl.points[k]) continue;
+    r.pts.push_back(pl.points[k]);
+    r.from_index.push_back(k);
+  }
+  if (pl.relative || r.pts.size() < 2) return;  // G91 polylines are not welded (see README)
+  r.welded = true;
+  const double budget = 2 * std::pow(10.0, -decimals);
+  r.fit_tol = r.tol > 2 * budget ? r.tol - budget : r.tol / 2;
+  // The fit sees the run without its jitter (CAM output is full of 0.0003
+  // mm back-and-forths, each a cusp the fitters must stop at), at a tol
+  // less by how far the skipped points lie from their chords; every piece
+  // is then measured against all the input points (resolve).
+  r.simple = without_jitter(r.pts, r.tol * opts.jitter, r.kept_index, r.moved);
+  const std::vector<P>& simple = r.simple;
+  r.cuts.push_back(0);
+  for (std::size_t k = 1; k <= simple.size() - 1; ++k) {
+    const bool last = k == simple.size() - 1;
+    const bool turn =
+        !last && opts.split_turns && (simple[k] - simple[k - 1]).dot(simple[k + 1] - simple[k]) < 0;
+    if (last || turn) r.cuts.push_back(k);
+  }
+}
+
+void plan_part(const Run& r, std::size_t j, P from, const WeldOptions& opts, int decimals, PartPlan& out) {
+  Planner{opts, decimals, {}}.plan(r, j, from, out);
+}
+
+}  // namespace kerf::cli::weld_detail
