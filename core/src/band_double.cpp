@@ -1,5 +1,5 @@
 // The double instantiation of the band fitter.
-#include "kerf/fit/band_fit_impl.hpp"
+#include "kerf/fit/band/fit_impl.hpp"
 
 namespace kerf::fit {
 

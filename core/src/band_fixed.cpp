@@ -1,6 +1,6 @@
 // The fixed-point (kerf::Fixed) instantiation of the band fitter.
 #include "kerf/core/fixed.hpp"
-#include "kerf/fit/band_fit_impl.hpp"
+#include "kerf/fit/band/fit_impl.hpp"
 
 namespace kerf::fit {
 

@@ -1,5 +1,5 @@
 // The double instantiation of the biarc fitter.
-#include "kerf/fit/biarc_fit_impl.hpp"
+#include "kerf/fit/biarc/fit_impl.hpp"
 
 namespace kerf::fit {
 

@@ -1,7 +1,7 @@
 // The fixed-point (kerf::Fixed) instantiation of the biarc fitter (the
 // exact joint sets; the paper's construction is refused in fixed point).
 #include "kerf/core/fixed.hpp"
-#include "kerf/fit/biarc_fit_impl.hpp"
+#include "kerf/fit/biarc/fit_impl.hpp"
 
 namespace kerf::fit {
 

@@ -1,5 +1,5 @@
 // The double instantiation of the fitter.
-#include "kerf/fit/fit_impl.hpp"
+#include "kerf/fit/detail/fit_impl.hpp"
 
 namespace kerf::fit {
 

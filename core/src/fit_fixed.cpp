@@ -1,6 +1,6 @@
 // The fixed-point (kerf::Fixed) instantiation of the fitter.
 #include "kerf/core/fixed.hpp"
-#include "kerf/fit/fit_impl.hpp"
+#include "kerf/fit/detail/fit_impl.hpp"
 
 namespace kerf::fit {
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "kerf/core/status.hpp"
-#include "kerf/fit/biarc_fit.hpp"
+#include "kerf/fit/biarc.hpp"
 
 namespace kerf::cli {
 
@@ -20,8 +20,7 @@ namespace kerf::cli {
 // checked with the fixed-point allowance (cli/fit_fixed.hpp).
 bool fit_biarc_path(const std::vector<Vec2<double>>& pts, const std::vector<Vec2<double>>& tangents,
                     double tol, std::vector<fit::BiarcPiece<double>>& out, fit::Fit<double>& fit,
-                    std::string& error, Status& status,
-                    fit::BiarcMethod method = fit::BiarcMethod::exact_sets, bool fixed = false);
+                    std::string& error, Status& status, bool fixed = false);
 
 // What a fitted path must satisfy (a check of the output, not a proof): each
 // biarc starts on p_first with the point's tangent, its arcs meet at the

@@ -25,10 +25,6 @@ std::string count(std::size_t n, const char* one, const char* many) {
 
 int check_biarc_options(const FitOptions& opts, double& tol, bool& estimate) {
   std::string error;
-  if (!opts.biarc_method.empty() && opts.biarc_method != "sets" && opts.biarc_method != "paper")
-    return usage_error("--biarc-method: expected sets or paper, got " + quoted(opts.biarc_method));
-  if (opts.biarc_method == "paper" && opts.numeric == "fixed")
-    return usage_error("--biarc-method paper runs in double only (--numeric fixed fits with the exact sets)");
   if (opts.method != "optimal")
     return usage_error("--method: " + quoted(opts.method) +
                        " is a vertex-criterion rule; --criterion biarc is always optimal");
@@ -84,9 +80,7 @@ int run_fit_biarc(const FitOptions& opts) {
     std::string error;
     Status status = Status::ok;
     const auto t0 = std::chrono::steady_clock::now();
-    const fit::BiarcMethod how =
-        opts.biarc_method == "paper" ? fit::BiarcMethod::paper : fit::BiarcMethod::exact_sets;
-    const bool ok = fit_biarc_path(pts, tangents, tol, biarcs, fit, error, status, how, fixed);
+    const bool ok = fit_biarc_path(pts, tangents, tol, biarcs, fit, error, status, fixed);
     ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     if (!ok) {
       const std::string where = begins.size() > 1 ? " (path " + std::to_string(p + 1) + ")" : "";

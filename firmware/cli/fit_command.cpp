@@ -23,7 +23,7 @@
 #include "io/fit_output.hpp"
 #include "io/fit_storage.hpp"
 #include "io/point_file.hpp"
-#include "kerf/fit/band_fit.hpp"
+#include "kerf/fit/band.hpp"
 #include "kerf/fit/fit.hpp"
 
 namespace kerf::cli {
@@ -90,10 +90,6 @@ CLI::App* add_fit_command(CLI::App& app, FitOptions& opts) {
                   "biarc: vector (x y tx ty) or angle (x y degrees)")
       ->type_name("NAME")
       ->capture_default_str();
-  fit->add_option("--biarc-method", opts.biarc_method,
-                  "biarc: how a pair's valid joints are found: sets (kerf's exact joint sets, "
-                  "default) or paper (the visibility regions of Drysdale-Rote-Sturm section 3)")
-      ->type_name("sets|paper");
   fit->add_option("--numeric", opts.numeric,
                   "Scalar type of the fit: double, or fixed (Q31.32, what a core without an FPU "
                   "runs; vertex and band criteria)")
@@ -202,7 +198,6 @@ int run_fit(const FitOptions& opts) {
   }
   if (!opts.tangents.empty() || opts.tangent_format != "vector")
     return usage_error("--tangents and --tangent-format need --criterion biarc");
-  if (!opts.biarc_method.empty()) return usage_error("--biarc-method needs --criterion biarc");
   const bool band = opts.criterion == "band";
   const bool by_pieces = !opts.pieces.empty();
   const bool tie_break = opts.tie_break != "none";

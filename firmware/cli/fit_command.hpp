@@ -30,7 +30,6 @@ struct FitOptions {
   std::string tangents;                  // biarc: given | estimate (default: given when
                                          // the file has them)
   std::string tangent_format = "vector";  // biarc: vector (x y tx ty) | angle (x y deg)
-  std::string biarc_method;  // biarc: sets (default, fit/biarc_joints.hpp) | paper (biarc_visibility.hpp)
   std::string numeric = "double";  // vertex and band criteria: double or fixed (kerf::Fixed)
   std::string tie_break;  // smallest (whole-input default) | none (--stream's only)
   bool stream = false;   // --stream: read and write piece by piece (cli/fit_stream.cpp)

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "kerf/core/fixed_convert.hpp"
-#include "kerf/fit/band_fit.hpp"
+#include "kerf/fit/band.hpp"
 
 namespace kerf::cli {
 

@@ -7,7 +7,7 @@
 
 #include <cstdint>
 
-#include "kerf/fit/band_region.hpp"
+#include "kerf/fit/band/region.hpp"
 #include "kerf/fit/fit.hpp"
 
 namespace kerf::cli {

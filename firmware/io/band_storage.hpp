@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "kerf/fit/band_fit.hpp"
+#include "kerf/fit/band.hpp"
 
 namespace kerf::io {
 

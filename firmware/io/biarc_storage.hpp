@@ -5,8 +5,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "kerf/fit/biarc_fit.hpp"
-#include "kerf/fit/tangent.hpp"
+#include "kerf/fit/biarc.hpp"
+#include "kerf/fit/biarc/tangent.hpp"
 
 namespace kerf::io {
 

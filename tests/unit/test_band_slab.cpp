@@ -8,8 +8,8 @@
 #include <cmath>
 #include <cstdint>
 
-#include "kerf/fit/angle_set.hpp"
-#include "kerf/fit/band_slab.hpp"
+#include "kerf/fit/detail/angle_set.hpp"
+#include "kerf/fit/band/slab.hpp"
 
 namespace {
 

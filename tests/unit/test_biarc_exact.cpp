@@ -19,10 +19,10 @@
 #include <vector>
 
 #include "bridge/biarc_bridge.hpp"
-#include "kerf/fit/biarc_deviation.hpp"
-#include "kerf/fit/biarc_joints.hpp"
-#include "kerf/fit/biarc_reach.hpp"
-#include "kerf/fit/tangent.hpp"
+#include "kerf/fit/biarc/deviation.hpp"
+#include "kerf/fit/biarc/joints.hpp"
+#include "kerf/fit/biarc/reach.hpp"
+#include "kerf/fit/biarc/tangent.hpp"
 #include "rng.hpp"
 
 namespace {

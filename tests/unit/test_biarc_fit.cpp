@@ -12,8 +12,8 @@
 #include "biarc_checker.hpp"
 #include "biarc_twin.hpp"
 #include "bridge/biarc_bridge.hpp"
-#include "kerf/fit/biarc.hpp"
-#include "kerf/fit/tangent.hpp"
+#include "kerf/fit/biarc/arc.hpp"
+#include "kerf/fit/biarc/tangent.hpp"
 #include "rng.hpp"
 
 namespace {

@@ -21,8 +21,8 @@
 #include <vector>
 
 #include "bridge/biarc_bridge.hpp"
-#include "kerf/fit/biarc_visibility.hpp"
-#include "kerf/fit/tangent.hpp"
+#include "biarc_visibility.hpp"
+#include "kerf/fit/biarc/tangent.hpp"
 #include "rng.hpp"
 
 namespace {
@@ -546,7 +546,7 @@ void expect_same_counts(const std::vector<VPoint>& p, double tol, const char* wh
   CoreBiarcFitter sets(p, {}, tol), paper(p, {}, tol);
   fit::BiarcOptions opts;
   const auto a = sets.fit(opts);
-  opts.method = fit::BiarcMethod::paper;
+  opts.joints = fit::biarc_paper_joints;
   const auto b = paper.fit(opts);
   ASSERT_EQ(a.ok(), b.ok()) << what;
   if (!a.ok()) return;

@@ -2,11 +2,11 @@
 // scalar type that instantiates them (src/fit_double.cpp).
 #pragma once
 
-#include "kerf/fit/esgi.hpp"
+#include "kerf/fit/esgi/rules.hpp"
 #include "kerf/fit/fit.hpp"
-#include "kerf/fit/min_count.hpp"
-#include "kerf/fit/prefix_guard.hpp"
-#include "kerf/fit/vertex_pair.hpp"
+#include "kerf/fit/detail/min_count.hpp"
+#include "kerf/fit/detail/prefix_guard.hpp"
+#include "kerf/fit/vertex/pair.hpp"
 
 namespace kerf::fit {
 

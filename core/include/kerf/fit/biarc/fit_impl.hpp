@@ -1,12 +1,11 @@
-// Definitions behind fit/biarc_fit.hpp. Included by the one translation unit
+// Definitions behind fit/biarc.hpp. Included by the one translation unit
 // per scalar type that instantiates them (src/biarc_double.cpp).
 #pragma once
 
-#include "kerf/fit/biarc_deviation.hpp"
-#include "kerf/fit/biarc_fit.hpp"
-#include "kerf/fit/biarc_joints.hpp"
-#include "kerf/fit/biarc_reach.hpp"
-#include "kerf/fit/biarc_visibility.hpp"
+#include "kerf/fit/biarc/deviation.hpp"
+#include "kerf/fit/biarc.hpp"
+#include "kerf/fit/biarc/joints.hpp"
+#include "kerf/fit/biarc/reach.hpp"
 
 namespace kerf::fit {
 
@@ -51,14 +50,15 @@ S max_radius(const PairFrame<S>& fr, S factor) {
   }
 }
 
-// The paper's joint sets; floating point only (the fitter refuses the
-// method in fixed point before it gets here).
+// The caller's joint sets (BiarcOptions::joints); floating point only (the
+// fitter refuses them in fixed point before it gets here).
 template <class S>
-bool paper_joints(const BandRegion<S>& r, std::uint32_t i, std::uint32_t j, Vec2<S> ti, Vec2<S> tj,
-                  JointSet<S>& set) {
-  if constexpr (kFloating<S>) {
-    return biarc_valid_joints_paper(r, i, j, ti, tj, set);
+bool given_joints(BiarcJointsFn joints, const BandRegion<S>& r, std::uint32_t i, std::uint32_t j,
+                  Vec2<S> ti, Vec2<S> tj, JointSet<S>& set) {
+  if constexpr (std::is_same_v<S, double>) {
+    return joints(r, i, j, ti, tj, set);
   } else {
+    (void)joints;
     (void)r;
     (void)i;
     (void)j;
@@ -103,7 +103,7 @@ S sampled_deviation(Span<const Vec2<S>> pts, std::uint32_t i, std::uint32_t j, c
                     const PairFrame<S>& f) {
   // Samples per arc grow with the span, so that each cell sees several, up
   // to 32 cells' worth: each costs O(j - i), and this only ranks joints (the
-  // reported error is certified, fit/biarc_deviation.hpp).
+  // reported error is certified, fit/biarc/deviation.hpp).
   const std::uint32_t span = j - i < 32 ? j - i : 32;
   const std::uint32_t m = 8 + 4 * span;
   S worst = S(0);
@@ -117,7 +117,7 @@ S sampled_deviation(Span<const Vec2<S>> pts, std::uint32_t i, std::uint32_t j, c
 }
 
 // The deviation used to choose a joint (sampled: the certified one of
-// fit/biarc_deviation.hpp is computed for the result), plus a penalty: an
+// fit/biarc/deviation.hpp is computed for the result), plus a penalty: an
 // arc of a radius far below the band's width is a corner to the machine
 // (and may be shorter than its resolution), so where the band lets the
 // joint move, radii below the width cost more than any deviation.
@@ -227,9 +227,8 @@ Result<Fit<S>> fit_biarc_min_count(Span<const Vec2<S>> pts, Span<const Vec2<S>> 
         Scalar<S>::abs(t.norm() - S(1)) > biarc_detail::unit_slack<S>(S(1e-9)))
       return Status::invalid_argument;
   }
-  // The paper's construction (fit/biarc_visibility.hpp) runs in floating
-  // point only.
-  if (!biarc_detail::kFloating<S> && opts.method == BiarcMethod::paper) return Status::invalid_argument;
+  // The caller's joint sets (the tests' referee) run in floating point only.
+  if (!std::is_same_v<S, double> && opts.joints != nullptr) return Status::invalid_argument;
   if (ws.words.size() < biarc_workspace_words(n) || ws.vertices.size() < n || ws.points.size() < n)
     return Status::capacity_exceeded;
   const auto count = static_cast<std::uint32_t>(n);
@@ -246,7 +245,7 @@ Result<Fit<S>> fit_biarc_min_count(Span<const Vec2<S>> pts, Span<const Vec2<S>> 
   constexpr std::uint32_t kNone = 0xffffffffu;
   std::uint32_t* dist = ws.words.data();
   std::uint32_t* prev = dist + n;
-  std::uint32_t* back = prev + n;  // B_j of fit/biarc_reach.hpp
+  std::uint32_t* back = prev + n;  // B_j of fit/biarc/reach.hpp
   std::uint32_t* back_min = back + n;  // min of B over j..n-1
   for (std::size_t k = 0; k < n; ++k) dist[k] = prev[k] = kNone;
   dist[0] = 0;
@@ -260,7 +259,7 @@ Result<Fit<S>> fit_biarc_min_count(Span<const Vec2<S>> pts, Span<const Vec2<S>> 
   bool overflow = false;
   for (std::uint32_t i = 0; i + 1 < count; ++i) {
     if (dist[i] == kNone) continue;
-    // F_i of fit/biarc_reach.hpp, extended only as far as a j needs it.
+    // F_i of fit/biarc/reach.hpp, extended only as far as a j needs it.
     KappaMeet<S> meet;
     std::uint32_t fwd = i;
     bool fwd_final = false;
@@ -284,10 +283,8 @@ Result<Fit<S>> fit_biarc_min_count(Span<const Vec2<S>> pts, Span<const Vec2<S>> 
       if (!opts.exact && back[j] > i + 1 && !reaches(back[j] - 1)) return false;
       const BiarcJoints<S> bj(region, i, j, tangents[i], tangents[j]);
       S s{};
-      if (opts.method == BiarcMethod::paper) {
-        // The paper's construction alone (no quick joints), so that it is
-        // what decides and what the benchmark measures.
-        if (!biarc_detail::paper_joints(region, i, j, tangents[i], tangents[j], set)) {
+      if (opts.joints != nullptr) {
+        if (!biarc_detail::given_joints(opts.joints, region, i, j, tangents[i], tangents[j], set)) {
           overflow = true;
           return false;
         }
@@ -335,8 +332,8 @@ Result<Fit<S>> fit_biarc_min_count(Span<const Vec2<S>> pts, Span<const Vec2<S>> 
     const std::uint32_t i = prev[j];
     const BiarcJoints<S> bj(region, i, j, tangents[i], tangents[j]);
     S s{};
-    const bool got = opts.method == BiarcMethod::paper
-                         ? biarc_detail::paper_joints(region, i, j, tangents[i], tangents[j], set)
+    const bool got = opts.joints != nullptr
+                         ? biarc_detail::given_joints(opts.joints, region, i, j, tangents[i], tangents[j], set)
                          : bj.compute(set);
     if (!got) return Status::capacity_exceeded;
     // The pair was found valid: by a joint of its set or by a quick joint.

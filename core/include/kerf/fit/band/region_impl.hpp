@@ -1,8 +1,8 @@
-// Definitions behind fit/band_region.hpp (see the construction there).
+// Definitions behind fit/band/region.hpp (see the construction there).
 #pragma once
 
-#include "kerf/fit/band_numeric.hpp"
-#include "kerf/fit/band_region.hpp"
+#include "kerf/fit/band/numeric.hpp"
+#include "kerf/fit/band/region.hpp"
 
 namespace kerf::fit {
 

@@ -18,8 +18,8 @@
 // centre, which is far away on nearly straight arcs.
 #pragma once
 
-#include "kerf/fit/band_numeric.hpp"
-#include "kerf/fit/band_region.hpp"
+#include "kerf/fit/band/numeric.hpp"
+#include "kerf/fit/band/region.hpp"
 #include "kerf/geom/segment.hpp"
 
 namespace kerf::fit {
@@ -171,7 +171,7 @@ S stretch_to_edge(const ArcProbe<S>& arc, Vec2<S> from, Vec2<S> to, Vec2<S> p0, 
 }
 
 // The deviation of the piece p_i -> p_j of region R with direction d and
-// orientation orient (see fit/band_pair.hpp), in R's units.
+// orientation orient (see fit/band/pair.hpp), in R's units.
 template <class S>
 S band_deviation(const BandRegion<S>& r, std::uint32_t i, std::uint32_t j, Vec2<S> d, int orient) {
   const ArcProbe<S> arc(r.point(i), r.point(j), d, orient);

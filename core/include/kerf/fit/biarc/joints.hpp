@@ -1,9 +1,9 @@
 // The exact set of valid joints of a pair p_i -> p_j: which points of the
-// joint circle J (fit/biarc.hpp) give a valid biarc (Definition 3.2,
-// fit/biarc_valid.hpp), as intervals of J's parameter s in (0, 2).
+// joint circle J (fit/biarc/arc.hpp) give a valid biarc (Definition 3.2,
+// fit/biarc/valid.hpp), as intervals of J's parameter s in (0, 2).
 //
 // Why this is exact. Let J's points be m(lambda), m = p_i + d w / (1 + w),
-// w = lambda k (fit/biarc.hpp). The first arc's curvature and the reversed
+// w = lambda k (fit/biarc/arc.hpp). The first arc's curvature and the reversed
 // second arc's curvature are then simple in lambda (d = p_j - p_i):
 //   kappa1(lambda) = 2 (t_i x d + (t_i x d k) / lambda) / |d|^2,
 //   kappa2~(lambda) = 2 (t_j x d + lambda t_j x (d conj k)) / |d|^2
@@ -22,9 +22,9 @@
 // R's boundary between g_i and g_j (both gates included), of the intervals
 // where the biarc meets them: no joint is sampled, and no valid interval,
 // however narrow, is missed. Critical joints themselves (a biarc touching
-// the boundary) count as invalid, like every touch in fit/biarc_valid.hpp.
+// the boundary) count as invalid, like every touch in fit/biarc/valid.hpp.
 // The sets are exact for the boundary; the rule that every intermediate gate
-// be crossed (fit/biarc_valid.hpp; it refuses anything only where R
+// be crossed (fit/biarc/valid.hpp; it refuses anything only where R
 // overlaps itself) is applied to the joints verified from them.
 //
 // Relation to the paper. Drysdale, Rote and Sturm find the same arc of
@@ -43,7 +43,7 @@
 
 #include <cstdint>
 
-#include "kerf/fit/biarc_valid.hpp"
+#include "kerf/fit/biarc/valid.hpp"
 
 namespace kerf::fit {
 
@@ -165,7 +165,7 @@ class BiarcJoints {
     }
   }
 
-  // The check, and the frame (fit/biarc_numeric.hpp) of the joint circle,
+  // The check, and the frame (fit/biarc/numeric.hpp) of the joint circle,
   // the biarcs and the sets.
   const BiarcCheck<S>& check() const { return check_; }
   // How many windows the last compute() needed beyond the whole of J.
@@ -248,7 +248,7 @@ class BiarcJoints {
  private:
   static Vec2<S> mul(Vec2<S> a, Vec2<S> b) { return {a.x * b.x - a.y * b.y, a.x * b.y + a.y * b.x}; }
 
-  // J's parameter s (fit/biarc.hpp) of lambda.
+  // J's parameter s (fit/biarc/arc.hpp) of lambda.
   static S s_of(S lambda) {
     if (lambda >= S(0)) return lambda / (S(1) + lambda);
     return (S(2) - lambda) / (S(1) - lambda);

@@ -1,5 +1,5 @@
 // Unit tangents at the points of a polyline, for the biarc fitter
-// (fit/biarc_fit.hpp), when the input does not give them.
+// (fit/biarc.hpp), when the input does not give them.
 //
 // The method: the tangent at p_k of the circle through p_{k-1}, p_k, p_{k+1}.
 // With a = p_k - p_{k-1}, b = p_{k+1} - p_k it is the direction of

@@ -1,7 +1,7 @@
 // A certified upper bound on how far a biarc p_i -> p_j strays from the
 // polyline p_i..p_j: the largest distance from a point of either arc to the
 // nearest of the edges i..j-1. Computed, not sampled, like the band
-// fitter's fit/band_deviation.hpp, whose arc probe it reuses.
+// fitter's fit/band/deviation.hpp, whose arc probe it reuses.
 //
 // Each arc is cut where it crosses the lines of gates i..j (sorted along
 // the arc). A stretch between two cuts bounded by gates
@@ -20,8 +20,8 @@
 
 #include <cstdint>
 
-#include "kerf/fit/band_deviation.hpp"
-#include "kerf/fit/biarc.hpp"
+#include "kerf/fit/band/deviation.hpp"
+#include "kerf/fit/biarc/arc.hpp"
 
 namespace kerf::fit {
 
@@ -118,7 +118,7 @@ S arc_deviation(const BandRegion<S>& r, std::uint32_t i, std::uint32_t j, const 
 }  // namespace biarc_detail
 
 // The certified deviation of biarc b from p_i to p_j in region r, with b
-// in the pair's frame f (fit/biarc_numeric.hpp; the identity in floating
+// in the pair's frame f (fit/biarc/numeric.hpp; the identity in floating
 // point). The result is in r's units.
 template <class S>
 S biarc_certified_deviation(const BandRegion<S>& r, std::uint32_t i, std::uint32_t j,

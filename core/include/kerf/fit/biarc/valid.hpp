@@ -8,17 +8,17 @@
 // simple, every intermediate gate separates g_i from g_j anyway).
 //
 // The test. Between g_i and g_j, R is the polygon bounded by g_i, the left
-// chains of cells i..j-1, g_j and the right chains (fit/band_region.hpp).
+// chains of cells i..j-1, g_j and the right chains (fit/band/region.hpp).
 // The biarc starts at p_i on its boundary, leaving forwards into it, and ends
 // at p_j; it lies inside iff it meets the boundary nowhere else. So each
 // arc is intersected with every boundary segment (a quadratic along the
-// segment, with the centre-free circle equation of fit/biarc.hpp), ignoring
+// segment, with the centre-free circle equation of fit/biarc/arc.hpp), ignoring
 // only the touch at p_i (first arc) and at p_j (second arc). A touch of the
 // boundary counts as leaving: a joint or an arc grazing R's edge is refused,
 // which loses only boundary cases of measure zero. Cells are visited middle
 // first (bit-reversed order), so a biarc that strays fails after a few.
 //
-// Fixed point: the test runs in the pair's frame (fit/biarc_numeric.hpp),
+// Fixed point: the test runs in the pair's frame (fit/biarc/numeric.hpp),
 // and so do the biarcs it is given: see frame().
 //
 // The region must have a positive width on both sides of p_i and p_j (the
@@ -28,9 +28,9 @@
 
 #include <cstdint>
 
-#include "kerf/fit/band_region.hpp"
-#include "kerf/fit/biarc.hpp"
-#include "kerf/fit/biarc_numeric.hpp"
+#include "kerf/fit/band/region.hpp"
+#include "kerf/fit/biarc/arc.hpp"
+#include "kerf/fit/biarc/numeric.hpp"
 
 namespace kerf::fit {
 
@@ -119,7 +119,7 @@ class BiarcCheck {
 
   // Does either arc meet the boundary segment q1 q2 (but at p_i for the
   // first arc, p_j for the second)? The one-segment test that
-  // fit/biarc_joints.hpp evaluates between critical joints.
+  // fit/biarc/joints.hpp evaluates between critical joints.
   bool meets(const Biarc<S>& b, Vec2<S> q1, Vec2<S> q2) const {
     return hits(b.first, point(i_), q1, q2) || hits(b.second, point(j_), q1, q2);
   }

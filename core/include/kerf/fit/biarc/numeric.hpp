@@ -1,7 +1,7 @@
 // Scale-aware arithmetic for the biarc fitter, in one place.
 //
 // The fitter scales its points into [-1, 1) by a power of two
-// (fit/biarc_fit_impl.hpp). kerf::Fixed then has 2^-32 absolute
+// (fit/biarc/fit_impl.hpp). kerf::Fixed then has 2^-32 absolute
 // resolution; a pair p_i -> p_j whose chord is a few hundredths long would
 // square its lengths (curvatures, the quadratics of the one-segment test)
 // down to a few significant bits. So each pair is solved in its own frame:
@@ -13,8 +13,8 @@
 
 #include <type_traits>  // freestanding
 
-#include "kerf/fit/band_numeric.hpp"
-#include "kerf/fit/band_region.hpp"
+#include "kerf/fit/band/numeric.hpp"
+#include "kerf/fit/band/region.hpp"
 
 namespace kerf::fit::biarc_detail {
 

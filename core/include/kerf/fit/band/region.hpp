@@ -28,7 +28,7 @@
 //    segment lies in one edge's union of discs (a convex set), so R is
 //    inside the band.
 //  - Every cell must be convex: that is the paper's assumption (C), on which
-//    the one-sided boundary test of the pair test (fit/band_pair.hpp)
+//    the one-sided boundary test of the pair test (fit/band/pair.hpp)
 //    relies. A cell that is not (short edges, sharp turns) has that side's
 //    widths at both its vertices halved, and the build repeats until all
 //    cells are convex; a width below 2^-20 of the original becomes 0. A

@@ -23,8 +23,8 @@
 
 #include <cstdint>
 
-#include "kerf/fit/band_region.hpp"
-#include "kerf/fit/biarc_numeric.hpp"
+#include "kerf/fit/band/region.hpp"
+#include "kerf/fit/biarc/numeric.hpp"
 
 namespace kerf::fit {
 

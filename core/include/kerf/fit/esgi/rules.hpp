@@ -9,13 +9,13 @@
 //              is left out of the mean; if every inner point is, the piece
 //              is the line.
 // A rule's piece is feasible when its largest inner distance is <= eps.
-// Distances are measured in the chord frame (fit/chord.hpp), which stays
+// Distances are measured in the chord frame (fit/detail/chord.hpp), which stays
 // exact for the enormous radii of nearly straight runs.
 #pragma once
 
 #include <cstdint>
 
-#include "kerf/fit/chord.hpp"
+#include "kerf/fit/detail/chord.hpp"
 
 namespace kerf::fit {
 
@@ -52,7 +52,7 @@ template <class S>
 PieceFit<S> esgi_mean(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, const Chord<S>& chord,
                      S stop) {
   // The report's d_k is the signed offset t of the centre along the bisector,
-  // t = A / (2B) in fit/chord.hpp's terms (its normal points the other way,
+  // t = A / (2B) in fit/detail/chord.hpp's terms (its normal points the other way,
   // which flips every d_k and the mean together).
   S sum = S(0);
   std::uint32_t count = 0;

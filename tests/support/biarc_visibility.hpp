@@ -1,7 +1,10 @@
 // The paper's own pair test for biarcs (Drysdale, Rote, Sturm, sections
-// 3.4-3.5), next to kerf's exact joint sets (fit/biarc_joints.hpp) so the
-// two can be cross-checked. Same parametrisation of J (fit/biarc.hpp), same
-// validity (fit/biarc_valid.hpp), same result type (JointSet of s).
+// 3.4-3.5): a referee for kerf's exact joint sets (fit/biarc/joints.hpp), so
+// the two can be cross-checked. It lives with the tests, not in core: it
+// keeps its critical lists (16 KiB) on the stack, which a Cortex-M cannot
+// spare. The fitter runs it through BiarcOptions::joints (biarc_paper_joints
+// below). Same parametrisation of J (fit/biarc/arc.hpp), same validity
+// (fit/biarc/valid.hpp), same result type (JointSet of s).
 //
 // The pair region. A valid biarc p_i -> p_j lives in R between g_i and g_j:
 // the polygon of gate g_i, the chains of cells i..j-1 and gate g_j. The
@@ -51,18 +54,18 @@
 //
 // Cost: the gate intervals are recomputed per pair, O(m^2) in the pair's m
 // boundary edges, not the paper's O(n^2) table with O(log n) per pair; the
-// exact sets of fit/biarc_joints.hpp stay the fitter's default.
+// exact sets of fit/biarc/joints.hpp stay the fitter's default.
 //
 // Degenerate cases: one circle through p_i and p_j with both tangents (t_i
 // tangent to J): every joint on the arc p_i -> p_j of that circle gives the
 // same arc, valid iff that arc is clear; J a line (kappa_J = 0, f a half
 // plane; the point at infinity is an end of the s-intervals); a joint at an
-// end point (s = 0, 1, 2) is never in the set, as in fit/biarc_joints.hpp.
+// end point (s = 0, 1, 2) is never in the set, as in fit/biarc/joints.hpp.
 #pragma once
 
 #include <cstdint>
 
-#include "kerf/fit/biarc_joints.hpp"
+#include "kerf/fit/biarc/joints.hpp"
 
 namespace kerf::fit {
 
@@ -193,7 +196,7 @@ class BiarcPaper {
   // (In) at gate k: W~_j meets g_k on the second arc's side of J.
   bool in_at(std::uint32_t k) const { return meets_side(k, true); }
 
-  // The valid joints (the arc A1A2), as fit/biarc_joints.hpp's sets.
+  // The valid joints (the arc A1A2), as fit/biarc/joints.hpp's sets.
   // Returns false only when a set overflowed.
   bool compute(JointSet<S, Cap>& out, PaperPairStats* stats = nullptr) const {
     out.clear();
@@ -514,7 +517,7 @@ class BiarcPaper {
       // Each arc is defined by its own end and tangent alone, even where the
       // whole biarc is not constructible (a joint within rounding of an end
       // point, see JointCircle::biarc): such joints stay in, as in
-      // fit/biarc_joints.hpp; a joint is verified in full before use.
+      // fit/biarc/joints.hpp; a joint is verified in full before use.
       const Vec2<S> x = jc_.point(mid);
       if (!(Scalar<S>::abs(x.x) + Scalar<S>::abs(x.y) < S(1e300))) continue;
       if (!clear(p, t, x, from_end)) continue;
@@ -603,11 +606,17 @@ class BiarcPaper {
 };
 
 // The valid joints of the pair p_i -> p_j by the paper's construction, in
-// fit/biarc_joints.hpp's parametrisation (s in (0, 2)).
+// fit/biarc/joints.hpp's parametrisation (s in (0, 2)).
 template <class S, int Cap = 128>
 bool biarc_valid_joints_paper(const BandRegion<S>& r, std::uint32_t i, std::uint32_t j, Vec2<S> ti,
                               Vec2<S> tj, JointSet<S, Cap>& out, PaperPairStats* stats = nullptr) {
   return BiarcPaper<S, Cap>(r, i, j, ti, tj).compute(out, stats);
+}
+
+// The same, as the fitter takes it (BiarcOptions::joints).
+inline bool biarc_paper_joints(const BandRegion<double>& r, std::uint32_t i, std::uint32_t j,
+                               Vec2<double> ti, Vec2<double> tj, JointSet<double>& out) {
+  return biarc_valid_joints_paper(r, i, j, ti, tj, out);
 }
 
 }  // namespace kerf::fit

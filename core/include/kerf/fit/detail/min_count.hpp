@@ -3,7 +3,7 @@
 //
 // Feasibility is not monotone in j (p_i -> p_j may work when p_i -> p_{j-1}
 // does not), so a start point i is given up only when the oracle's monotone
-// necessary condition fails for it (fit/prefix_guard.hpp for the vertex
+// necessary condition fails for it (fit/detail/prefix_guard.hpp for the vertex
 // criterion); until then every later j is tried. Layer k+1 is built by walking j upwards from the first start in
 // layer k and asking the live starts of layer k, nearest first, for one that
 // reaches j. The walk ends when every start of layer k is dead, so a node left

@@ -31,22 +31,22 @@
 //    chord from it.
 // A half-plane d.w >= 0 meets the half circle psi in [0, pi] in a prefix or
 // a suffix (it is a half circle too), so the valid set is always one
-// interval [lo, hi], kept as pseudo-angles (fit/angle_set.hpp): no
+// interval [lo, hi], kept as pseudo-angles (fit/detail/angle_set.hpp): no
 // trigonometry and no square roots, and the line is simply psi = 0. This is
 // the paper's test restricted to the bisector, done per pair instead of
 // keeping the 2-D regions: the search's hints make failing pairs O(1). In
 // floating point a cached chain is first tried whole, as a slab clear of the
-// disc at both ends of the range (fit/band_slab.hpp): most cells of a piece
+// disc at both ends of the range (fit/band/slab.hpp): most cells of a piece
 // that fits pass there, and the cells that bound a start's last test are
 // visited first (run()), so that the range is narrow from the start.
 #pragma once
 
 #include <cstdint>
 
-#include "kerf/fit/angle_set.hpp"
-#include "kerf/fit/band_numeric.hpp"
-#include "kerf/fit/band_region.hpp"
-#include "kerf/fit/band_slab.hpp"
+#include "kerf/fit/detail/angle_set.hpp"
+#include "kerf/fit/band/numeric.hpp"
+#include "kerf/fit/band/region.hpp"
+#include "kerf/fit/band/slab.hpp"
 
 namespace kerf::fit {
 
@@ -242,7 +242,7 @@ class BandPair {
   }
 
   // Does the slot's chain cut nothing from the range? True when the slab
-  // around it (fit/band_slab.hpp) is clear of the disc at both ends of the
+  // around it (fit/band/slab.hpp) is clear of the disc at both ends of the
   // range, so clear inside it. Floating point, no point near a or b
   // (apart()).
   bool slab_clear(const BandChainSlot<S>& slot, const PsiRange<S>& range) const {

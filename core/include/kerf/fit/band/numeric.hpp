@@ -59,7 +59,7 @@ S power_for(S m, int limit) {
   return f < cap ? f : cap;
 }
 
-// The factor a pair's frame is scaled by (see fit/band_pair.hpp): 1 in
+// The factor a pair's frame is scaled by (see fit/band/pair.hpp): 1 in
 // floating point; in fixed point the power of two that makes the chord u
 // about 1, so that the pair's areas and offsets keep their bits. At most
 // 2^10: points of a pair lie within 2 of each other in the scaled problem,
@@ -119,7 +119,7 @@ S smallest_scale(S hi, S widest) {
 // coordinates' resolution: a gate end, a corner's chord, a tangent point of
 // a sub-ulp width) can lie from it by rounding alone: 16 ulps of the larger
 // coordinate in floating point, 4 steps in fixed point (absolute). The pair
-// test takes such a point as a or b itself (fit/band_pair.hpp).
+// test takes such a point as a or b itself (fit/band/pair.hpp).
 template <class S>
 S rounding_reach(Vec2<S> a, Vec2<S> b) {
   if constexpr (kFloating<S>) {

@@ -1,15 +1,15 @@
-// Definitions behind fit/band_fit.hpp. Included by the one translation unit
+// Definitions behind fit/band.hpp. Included by the one translation unit
 // per scalar type that instantiates them (src/band_double.cpp).
 #pragma once
 
-#include "kerf/fit/band_deviation.hpp"
-#include "kerf/fit/band_fit.hpp"
-#include "kerf/fit/band_pair.hpp"
-#include "kerf/fit/band_region_impl.hpp"
-#include "kerf/fit/chord.hpp"
-#include "kerf/fit/fit_impl.hpp"
-#include "kerf/fit/min_count.hpp"
-#include "kerf/fit/prefix_guard.hpp"
+#include "kerf/fit/band/deviation.hpp"
+#include "kerf/fit/band.hpp"
+#include "kerf/fit/band/pair.hpp"
+#include "kerf/fit/band/region_impl.hpp"
+#include "kerf/fit/detail/chord.hpp"
+#include "kerf/fit/detail/fit_impl.hpp"
+#include "kerf/fit/detail/min_count.hpp"
+#include "kerf/fit/detail/prefix_guard.hpp"
 
 namespace kerf::fit {
 

@@ -2,7 +2,7 @@
 // (or the line) through both end points pass within eps of every point in
 // between, and which one passes closest?
 //
-// Derivation (see fit/chord.hpp for phi). For an inner point p with
+// Derivation (see fit/detail/chord.hpp for phi). For an inner point p with
 // v = p - mid, A = |v|^2 - h^2 and B = v.n, the power of p is linear in t:
 //   |p - c(t)|^2 - r(t)^2 = A - 2 t B.
 // The annulus condition (r - eps)^2 <= |p - c|^2 <= (r + eps)^2 reads
@@ -20,8 +20,8 @@
 
 #include <cstdint>
 
-#include "kerf/fit/angle_set.hpp"
-#include "kerf/fit/chord.hpp"
+#include "kerf/fit/detail/angle_set.hpp"
+#include "kerf/fit/detail/chord.hpp"
 
 namespace kerf::fit {
 

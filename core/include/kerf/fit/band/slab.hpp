@@ -1,4 +1,4 @@
-// The band pair test's quick pass (fit/band_pair.hpp): is a whole slab, the
+// The band pair test's quick pass (fit/band/pair.hpp): is a whole slab, the
 // points within `thickness` of a segment, outside the disc of a candidate
 // arc? A chain of the region lies in such a slab around the segment between
 // its ends (BandChainSlot::thickness), and most cells of a piece that fits
@@ -7,7 +7,7 @@
 //
 // The arc runs from a to b; n is the chord's normal (b - a).perp() times
 // the orientation, and d = (cos psi, sin psi) times any length <= 1 (as
-// fit/angle_set.hpp's direction_of gives). With A = (q - a).(q - b) and
+// fit/detail/angle_set.hpp's direction_of gives). With A = (q - a).(q - b) and
 // Y = (q - a).n, the power P = d.y A - d.x Y equals |d| sin(psi) times
 // |q - c|^2 - R^2 (c, R the circle's centre and radius), and
 // R sin(psi) = |b - a| / 2. A point q of the segment at least R + t from c

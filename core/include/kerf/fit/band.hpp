@@ -1,7 +1,7 @@
 // kerf's band fitter: the fewest arcs (lines as their limit) from input
 // point to input point that stay inside a tolerance region R around the
 // polyline and cross its gates in order (Drysdale, Rote, Sturm, section 2;
-// R and the band it guarantees are described in fit/band_region.hpp). Unlike
+// R and the band it guarantees are described in fit/band/region.hpp). Unlike
 // the vertex criterion (fit/fit.hpp), which watches only the points, the
 // whole cut stays within the band. Everything runs in caller-provided
 // storage; see BandWorkspace.
@@ -11,7 +11,7 @@
 
 #include "kerf/core/span.hpp"
 #include "kerf/core/status.hpp"
-#include "kerf/fit/band_region.hpp"
+#include "kerf/fit/band/region.hpp"
 #include "kerf/fit/fit.hpp"
 
 namespace kerf::fit {
