@@ -66,6 +66,8 @@
 #include <cstdint>
 
 #include "kerf/fit/biarc/joints.hpp"
+#include "kerf/geom/complex.hpp"
+#include "kerf/geom/roots.hpp"
 
 namespace kerf::fit {
 
@@ -118,14 +120,14 @@ class BiarcPaper {
     }
     const Vec2<S> k = jc_.k();
     k_ = k;
-    tau_ = unit_of(mul(d_, k));
+    tau_ = unit_of(complex_mul<S>(d_, k));
     kj_ = S(2) * tau_.cross(d_) / dd_;
     const S side = -tau_.cross(t1_);
     single_ = Scalar<S>::abs(side) <= S(1e-12);
     sigma_ = side > S(0) ? S(1) : S(-1);
-    a1_ = t1_.cross(mul(d_, k));
+    a1_ = t1_.cross(complex_mul<S>(d_, k));
     c1_ = t1_.cross(d_);
-    b2_ = t2_.cross(mul(d_, {k.x, -k.y}));
+    b2_ = t2_.cross(complex_mul<S>(d_, {k.x, -k.y}));
     c2_ = t2_.cross(d_);
   }
 
@@ -217,7 +219,6 @@ class BiarcPaper {
   // between g_i and g_j. Overflow is reported (compute returns false).
   static constexpr int kCritMax = 2048;
 
-  static Vec2<S> mul(Vec2<S> a, Vec2<S> b) { return {a.x * b.x - a.y * b.y, a.x * b.y + a.y * b.x}; }
   static S s_of(S lambda) {
     if (lambda >= S(0)) return lambda / (S(1) + lambda);
     return (S(2) - lambda) / (S(1) - lambda);
@@ -312,23 +313,7 @@ class BiarcPaper {
     const S qb = S(2) * (kappa * e.dot(u) - t.cross(u));
     const S qc = kappa * e.norm2() - S(2) * t.cross(e);
     S roots[2];
-    int c = 0;
-    if (qa == S(0)) {
-      if (qb != S(0)) roots[c++] = -qc / qb;
-    } else {
-      S disc = qb * qb - S(4) * qa * qc;
-      if (touch && disc < S(0)) disc = S(0);
-      if (disc >= S(0)) {
-        const S sq = Scalar<S>::sqrt(disc);
-        const S q = -(qb + (qb < S(0) ? -sq : sq)) / S(2);
-        if (q == S(0)) {
-          roots[c++] = S(0);
-        } else {
-          roots[c++] = q / qa;
-          roots[c++] = qc / q;
-        }
-      }
-    }
+    const int c = quadratic_roots(qa, qb, qc, roots, RootForm::half_sum, touch);
     int m = 0;
     S pos[2];
     for (int a = 0; a < c; ++a) {
@@ -481,12 +466,12 @@ class BiarcPaper {
     {
       const Vec2<S> n = t1_.perp();
       const S den = n.dot(d_);
-      if (!from_end && den != S(0)) push(crit, m, s_of(-n.dot(mul(d_, k_)) / den));
+      if (!from_end && den != S(0)) push(crit, m, s_of(-n.dot(complex_mul<S>(d_, k_)) / den));
     }
     {
       const Vec2<S> n = t2_.perp();
       const S g = n.dot(d_);
-      const S den = n.dot(mul(d_, k_)) - S(2) * g * k_.x;
+      const S den = n.dot(complex_mul<S>(d_, k_)) - S(2) * g * k_.x;
       if (from_end && den != S(0)) push(crit, m, s_of(g / den));
     }
     const Vec2<S> p = from_end ? p2_ : p1_;
@@ -552,22 +537,11 @@ class BiarcPaper {
     const Vec2<S> n = (e * (S(1) / len)).perp();
     const S g = n.dot(q1 - p1_);
     const S qa = n.dot(d_) - g;
-    const S qb = n.dot(mul(d_, k_)) - S(2) * g * k_.x;
+    const S qb = n.dot(complex_mul<S>(d_, k_)) - S(2) * g * k_.x;
     const S qc = -g;
-    if (qa == S(0)) {
-      if (qb != S(0)) push(crit, m, s_of(-qc / qb));
-      return;
-    }
-    const S disc = qb * qb - S(4) * qa * qc;
-    if (disc < S(0)) return;
-    const S sq = Scalar<S>::sqrt(disc);
-    const S q = -(qb + (qb < S(0) ? -sq : sq)) / S(2);
-    if (q == S(0)) {
-      push(crit, m, S(0));
-      return;
-    }
-    push(crit, m, s_of(q / qa));
-    push(crit, m, s_of(qc / q));
+    S roots[2];
+    const int c = quadratic_roots(qa, qb, qc, roots);
+    for (int r = 0; r < c; ++r) push(crit, m, s_of(roots[r]));
   }
 
   // Is x inside one of the cells c0..c1 (crossing number over each cell's

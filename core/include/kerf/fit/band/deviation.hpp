@@ -20,6 +20,7 @@
 
 #include "kerf/fit/band/numeric.hpp"
 #include "kerf/fit/band/region.hpp"
+#include "kerf/geom/roots.hpp"
 #include "kerf/geom/segment.hpp"
 
 namespace kerf::fit {
@@ -65,22 +66,9 @@ class ArcProbe {
     const S qa = d_.y * g.norm2();
     const S qb = d_.y * g.dot(p * S(2) - a_ - b_) - d_.x * S(2) * h_ * g.dot(n_);
     const S qc = d_.y * (p - a_).dot(p - b_) - d_.x * S(2) * h_ * (p - mid).dot(n_);
-    if (qa == S(0)) {
-      if (qb == S(0)) return 0;
-      out[0] = p + g * (-qc / qb);
-      return 1;
-    }
-    const S disc = qb * qb - S(4) * qa * qc;
-    if (disc < S(0)) return 0;
-    const S sq = Scalar<S>::sqrt(disc);
-    const S q = -(qb + (qb < S(0) ? -sq : sq)) / S(2);
-    int k = 0;
-    if (q != S(0)) {
-      out[k++] = p + g * (q / qa);
-      out[k++] = p + g * (qc / q);
-    } else {
-      out[k++] = p;
-    }
+    S t[2];
+    const int k = quadratic_roots(qa, qb, qc, t);
+    for (int r = 0; r < k; ++r) out[r] = p + g * t[r];
     return k;
   }
 

@@ -47,6 +47,7 @@
 #include "kerf/fit/band/numeric.hpp"
 #include "kerf/fit/band/region.hpp"
 #include "kerf/fit/band/slab.hpp"
+#include "kerf/geom/roots.hpp"
 
 namespace kerf::fit {
 
@@ -343,16 +344,8 @@ class BandPair {
     int m = 0;
     if (from_end || to_end) {
       if (qa != S(0) && !(from_end && to_end)) roots[m++] = to_end ? qc / qa : -qb / qa;
-    } else if (qa != S(0)) {
-      const S disc = qb * qb - S(4) * qa * qc;
-      if (disc >= S(0)) {
-        const S sq = Scalar<S>::sqrt(disc);
-        const S t1 = (-qb - (qb < S(0) ? -sq : sq)) / (S(2) * qa);  // no cancellation
-        roots[m++] = t1;
-        if (t1 != S(0)) roots[m++] = qc / (qa * t1);
-      }
-    } else if (qb != S(0)) {
-      roots[m++] = -qc / qb;
+    } else {
+      m = quadratic_roots(qa, qb, qc, roots, RootForm::over_two_a);
     }
     // Where it crosses the chord line (for a segment from a or b, only there).
     if (dn != S(0) && !from_end && !to_end) roots[m++] = -y1 / dn;

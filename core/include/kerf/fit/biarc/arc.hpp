@@ -29,6 +29,7 @@
 
 #include "kerf/fit/biarc/numeric.hpp"
 #include "kerf/fit/biarc/tangent.hpp"
+#include "kerf/geom/complex.hpp"
 #include "kerf/geom/segment.hpp"
 
 namespace kerf::fit {
@@ -144,11 +145,11 @@ class JointCircle {
     if (near_p1) {  // m = p1 + d w / (1 + w), w = lambda k
       const S lambda = s < S(1) ? s / (S(1) - s) : -(S(2) - s) / (s - S(1));
       const Vec2<S> w = k_ * lambda;
-      return p1_ + mul(d, div(w, {S(1) + w.x, w.y}));
+      return p1_ + complex_mul<S>(d, complex_div<S>(w, {S(1) + w.x, w.y}));
     }
     // m = p2 - d mu / (mu + k), mu = 1 / lambda
     const S mu = s < S(1) ? (S(1) - s) / s : -(s - S(1)) / (S(2) - s);
-    return p2_ - mul(d, div({mu, S(0)}, {mu + k_.x, k_.y}));
+    return p2_ - complex_mul<S>(d, complex_div<S>({mu, S(0)}, {mu + k_.x, k_.y}));
   }
 
   // The biarc with its joint at point(s). Returns false when it is not G1
@@ -181,12 +182,6 @@ class JointCircle {
   }
 
  private:
-  static Vec2<S> mul(Vec2<S> a, Vec2<S> b) { return {a.x * b.x - a.y * b.y, a.x * b.y + a.y * b.x}; }
-  static Vec2<S> div(Vec2<S> a, Vec2<S> b) {
-    const S q = b.norm2();
-    return Vec2<S>{a.x * b.x + a.y * b.y, a.y * b.x - a.x * b.y} * (S(1) / q);
-  }
-
   Vec2<S> p1_, p2_, t1_, t2_;
   Vec2<S> k_{};
 };

@@ -6,6 +6,7 @@
 #include "kerf/fit/biarc.hpp"
 #include "kerf/fit/biarc/joints.hpp"
 #include "kerf/fit/biarc/reach.hpp"
+#include "kerf/fit/detail/fit_impl.hpp"
 
 namespace kerf::fit {
 
@@ -19,9 +20,7 @@ S problem_factor(Span<const Vec2<S>> pts) {
     (void)pts;
     return S(1);
   } else {
-    S big = S(0);
-    for (const Vec2<S>& p : pts) big = max_of(big, max_of(Scalar<S>::abs(p.x), Scalar<S>::abs(p.y)));
-    return big > S(0) ? Scalar<S>::normaliser(big) : S(1);
+    return detail::scale_factor(pts);
   }
 }
 

@@ -44,6 +44,8 @@
 #include <cstdint>
 
 #include "kerf/fit/biarc/valid.hpp"
+#include "kerf/geom/complex.hpp"
+#include "kerf/geom/roots.hpp"
 
 namespace kerf::fit {
 
@@ -141,8 +143,8 @@ class BiarcJoints {
     dd_ = d_.norm2();
     const Vec2<S> k = jc_.k();
     k_ = k;
-    const Vec2<S> dk = mul(d_, k);
-    const Vec2<S> dkc = mul(d_, {k.x, -k.y});
+    const Vec2<S> dk = complex_mul<S>(d_, k);
+    const Vec2<S> dkc = complex_mul<S>(d_, {k.x, -k.y});
     a1_ = t1_.cross(dk);
     c1_ = t1_.cross(d_);
     b2_ = t2_.cross(dkc);
@@ -246,8 +248,6 @@ class BiarcJoints {
   }
 
  private:
-  static Vec2<S> mul(Vec2<S> a, Vec2<S> b) { return {a.x * b.x - a.y * b.y, a.x * b.y + a.y * b.x}; }
-
   // J's parameter s (fit/biarc/arc.hpp) of lambda.
   static S s_of(S lambda) {
     if (lambda >= S(0)) return lambda / (S(1) + lambda);
@@ -306,27 +306,9 @@ class BiarcJoints {
   // lambda^2 (n.d - g) + lambda (n.(d k) - 2 g Re k) - g = 0, g = n.(q - p_i).
   int joint_on_line(Vec2<S> q, Vec2<S> n, S out[2]) const {
     const S g = n.dot(q - p1_);
-    S q3[3] = {n.dot(d_) - g, n.dot(mul(d_, k_)) - S(2) * g * k_.x, -g};
+    S q3[3] = {n.dot(d_) - g, n.dot(complex_mul<S>(d_, k_)) - S(2) * g * k_.x, -g};
     band_detail::balance(q3, 3);  // fixed point: the discriminant keeps its bits
-    const S qa = q3[0];
-    const S qb = q3[1];
-    const S qc = q3[2];
-    if (qa == S(0)) {
-      if (qb == S(0)) return 0;
-      out[0] = -qc / qb;
-      return 1;
-    }
-    const S disc = qb * qb - S(4) * qa * qc;
-    if (disc < S(0)) return 0;
-    const S sq = Scalar<S>::sqrt(disc);
-    const S q2 = -(qb + (qb < S(0) ? -sq : sq)) / S(2);
-    if (q2 == S(0)) {
-      out[0] = S(0);
-      return 1;
-    }
-    out[0] = q2 / qa;
-    out[1] = qc / q2;
-    return 2;
+    return quadratic_roots(q3[0], q3[1], q3[2], out);
   }
 
   // The valid joints within (lo, hi); false when the set overflowed.
@@ -335,20 +317,13 @@ class BiarcJoints {
     out.remove(S(1), S(1));  // p_j itself (see JointCircle::biarc)
     cut(check_.gate_end(i_, -1), check_.gate_end(i_, 1), out);
     if (!out.empty()) cut(check_.gate_end(j_, -1), check_.gate_end(j_, 1), out);
-    // The cells middle first (bit-reversed order): a biarc that strays
-    // usually meets the boundary there, and the set empties early.
-    const std::uint32_t len = j_ - i_;
-    std::uint32_t bits = 0;
-    while ((1u << bits) < len) ++bits;
-    BandChain<S> c;
-    for (std::uint32_t t = 0; t < (1u << bits) && !out.empty() && !out.overflow(); ++t) {
-      std::uint32_t rev = 0;
-      for (std::uint32_t q = 0; q < bits; ++q) rev |= ((t >> q) & 1u) << (bits - 1 - q);
-      if (rev >= len) continue;
-      for (int side = -1; side <= 1 && !out.empty(); side += 2) {
-        check_.chain(i_ + rev, side, c);
+    // The cells middle first: the set empties early. (Past an overflow the
+    // window is split and computed again, so stopping there loses nothing.)
+    if (!out.empty() && !out.overflow()) {
+      check_.chains_middle_first([&](const BandChain<S>& c) {
         for (int e = 0; e + 1 < c.size && !out.empty(); ++e) cut(c.pt[e], c.pt[e + 1], out);
-      }
+        return !out.empty() && !out.overflow();
+      });
     }
     if (out.overflow()) return false;
     // Intervals with no double strictly inside hold no joint kerf can use.

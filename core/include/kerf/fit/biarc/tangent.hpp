@@ -17,6 +17,7 @@
 
 #include <type_traits>  // freestanding
 
+#include "kerf/core/scale.hpp"
 #include "kerf/core/span.hpp"
 #include "kerf/geom/vec2.hpp"
 
@@ -34,9 +35,9 @@ S unit_scale(Vec2<S> u, Vec2<S> v) {
   } else {
     const S m = max_of(max_of(Scalar<S>::abs(u.x), Scalar<S>::abs(u.y)),
                        max_of(Scalar<S>::abs(v.x), Scalar<S>::abs(v.y)));
-    if (!(m > S(0)) || !Scalar<S>::is_finite(m)) return S(1);
-    const S f = Scalar<S>::normaliser(m);
-    return Scalar<S>::is_finite(f) ? f : S(1);
+    if (!Scalar<S>::is_finite(m)) return S(1);
+    const S f = power_of_two_scale(m);
+    return Scalar<S>::is_finite(f) ? f : S(1);  // m below 2^-31: no factor in range
   }
 }
 

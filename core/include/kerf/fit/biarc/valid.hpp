@@ -31,6 +31,7 @@
 #include "kerf/fit/band/region.hpp"
 #include "kerf/fit/biarc/arc.hpp"
 #include "kerf/fit/biarc/numeric.hpp"
+#include "kerf/geom/roots.hpp"
 
 namespace kerf::fit {
 
@@ -77,16 +78,8 @@ class BiarcCheck {
       if (alive[q] && (crosses_gate(b[q], i_) || crosses_gate(b[q], j_))) alive[q] = false;
       if (alive[q]) ++left;
     }
-    const std::uint32_t len = j_ - i_;
-    std::uint32_t bits = 0;
-    while ((1u << bits) < len) ++bits;
-    BandChain<S> c;
-    for (std::uint32_t t = 0; t < (1u << bits) && left > 0; ++t) {
-      std::uint32_t rev = 0;
-      for (std::uint32_t q = 0; q < bits; ++q) rev |= ((t >> q) & 1u) << (bits - 1 - q);
-      if (rev >= len) continue;
-      for (int side = -1; side <= 1 && left > 0; side += 2) {
-        chain(i_ + rev, side, c);
+    if (left > 0) {
+      chains_middle_first([&](const BandChain<S>& c) {
         for (std::uint32_t q = 0; q < m; ++q) {
           if (!alive[q]) continue;
           for (int e = 0; e + 1 < c.size; ++e) {
@@ -97,7 +90,8 @@ class BiarcCheck {
             }
           }
         }
-      }
+        return left > 0;
+      });
     }
     // Every gate between g_i and g_j crossed at least once. Where R is
     // simple each of them separates g_i from g_j, so this refuses nothing;
@@ -115,6 +109,27 @@ class BiarcCheck {
       }
     }
     return left;
+  }
+
+  // Calls visit(chain) for the boundary chains of cells i..j-1, both sides,
+  // in the frame, until it returns false. Middle cells first (bit-reversed
+  // order): a biarc that strays usually meets the boundary there, so the
+  // callers' tests fail after a few cells.
+  template <class Visit>
+  void chains_middle_first(Visit&& visit) const {
+    const std::uint32_t len = j_ - i_;
+    std::uint32_t bits = 0;
+    while ((1u << bits) < len) ++bits;
+    BandChain<S> c;
+    for (std::uint32_t t = 0; t < (1u << bits); ++t) {
+      std::uint32_t rev = 0;
+      for (std::uint32_t q = 0; q < bits; ++q) rev |= ((t >> q) & 1u) << (bits - 1 - q);
+      if (rev >= len) continue;
+      for (int side = -1; side <= 1; side += 2) {
+        chain(i_ + rev, side, c);
+        if (!visit(c)) return;
+      }
+    }
   }
 
   // Does either arc meet the boundary segment q1 q2 (but at p_i for the
@@ -138,26 +153,9 @@ class BiarcCheck {
     // kappa |e + s d|^2 - 2 t x (e + s d) = qa s^2 + qb s + qc
     S q3[3] = {k * d.norm2(), S(2) * (k * e.dot(d) - arc.t.cross(d)), k * e.norm2() - S(2) * arc.t.cross(e)};
     band_detail::balance(q3, 3);  // fixed point: the discriminant keeps its bits
-    const S qa = q3[0];
-    const S qb = q3[1];
-    const S qc = q3[2];
     S roots[2];
-    int m = 0;
-    if (qa == S(0)) {
-      if (qb == S(0)) return false;
-      roots[m++] = -qc / qb;
-    } else {
-      const S disc = qb * qb - S(4) * qa * qc;
-      if (disc < S(0)) return false;
-      const S sq = Scalar<S>::sqrt(disc);
-      const S q = -(qb + (qb < S(0) ? -sq : sq)) / S(2);
-      if (q == S(0)) {
-        roots[m++] = S(0);
-      } else {
-        roots[m++] = q / qa;
-        roots[m++] = qc / q;
-      }
-    }
+    const int m = quadratic_roots(q3[0], q3[1], q3[2], roots);
+    if (m == 0) return false;
     const S slack = biarc_detail::relative_reach(S(1), S(1e-12), 4);
     const S skip_reach = biarc_detail::relative_reach(scale_, S(1e-9), 4096);
     // Where x lies along the arc. A nearly straight arc (turning by less

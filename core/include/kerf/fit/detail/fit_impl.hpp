@@ -7,6 +7,7 @@
 #include "kerf/fit/detail/min_count.hpp"
 #include "kerf/fit/detail/prefix_guard.hpp"
 #include "kerf/fit/vertex/pair.hpp"
+#include "kerf/core/scale.hpp"
 
 namespace kerf::fit {
 
@@ -42,11 +43,18 @@ struct Scaled {
   S factor;
 };
 
+// The power of two the points are scaled by: their largest coordinate to
+// about 1.
 template <class S>
-Scaled<S> scale_into(Span<const Vec2<S>> pts, Span<Vec2<S>> out) {
+S scale_factor(Span<const Vec2<S>> pts) {
   S big = S(0);
   for (const Vec2<S>& p : pts) big = max_of(big, max_of(Scalar<S>::abs(p.x), Scalar<S>::abs(p.y)));
-  const S f = big > S(0) ? Scalar<S>::normaliser(big) : S(1);
+  return power_of_two_scale(big);
+}
+
+template <class S>
+Scaled<S> scale_into(Span<const Vec2<S>> pts, Span<Vec2<S>> out) {
+  const S f = scale_factor(pts);
   for (std::size_t k = 0; k < pts.size(); ++k) out[k] = pts[k] * f;
   return {Span<const Vec2<S>>(out.data(), pts.size()), f};
 }
