@@ -1,26 +1,24 @@
-// The double instantiation of the band fitter.
+// The band fitter for each scalar type the core is built for.
+#include "kerf/core/fixed.hpp"
 #include "kerf/fit/band/fit_impl.hpp"
+#include "scalar_types.hpp"
 
 namespace kerf::fit {
 
-template class BandRegion<double>;
-template Result<Fit<double>> fit_band_min_count(Span<const Vec2<double>>,
-                                                Span<const BandWidth<double>>,
-                                                BandWorkspace<double>, Span<Piece<double>>);
-template Result<Fit<double>> fit_band_min_count(Span<const Vec2<double>>,
-                                                Span<const BandWidth<double>>,
-                                                BandWorkspace<double>, Span<Piece<double>>,
-                                                double);
-template Result<Fit<double>> fit_band_min_error(Span<const Vec2<double>>,
-                                                Span<const BandWidth<double>>, std::uint32_t,
-                                                BandWorkspace<double>, Span<Piece<double>>);
-template Result<std::uint32_t> count_band_min(Span<const Vec2<double>>,
-                                              Span<const BandWidth<double>>,
-                                              BandWorkspace<double>);
-template Result<BandRegion<double>> band_region(Span<const Vec2<double>>,
-                                                Span<const BandWidth<double>>,
-                                                BandWorkspace<double>);
-template bool band_pair_valid(const BandRegion<double>&, std::uint32_t, std::uint32_t,
-                              Segment<double>*);
+#define KERF_BAND_INSTANCES(S)                                                                   \
+  template class BandRegion<S>;                                                                  \
+  template Result<Fit<S>> fit_band_min_count(Span<const Vec2<S>>, Span<const BandWidth<S>>,      \
+                                             BandWorkspace<S>, Span<Piece<S>>);                  \
+  template Result<Fit<S>> fit_band_min_count(Span<const Vec2<S>>, Span<const BandWidth<S>>,      \
+                                             BandWorkspace<S>, Span<Piece<S>>, S);               \
+  template Result<Fit<S>> fit_band_min_error(Span<const Vec2<S>>, Span<const BandWidth<S>>,      \
+                                             std::uint32_t, BandWorkspace<S>, Span<Piece<S>>);   \
+  template Result<std::uint32_t> count_band_min(Span<const Vec2<S>>, Span<const BandWidth<S>>,   \
+                                                BandWorkspace<S>);                               \
+  template Result<BandRegion<S>> band_region(Span<const Vec2<S>>, Span<const BandWidth<S>>,      \
+                                             BandWorkspace<S>);                                  \
+  template bool band_pair_valid(const BandRegion<S>&, std::uint32_t, std::uint32_t, Segment<S>*);
+
+KERF_FOR_EACH_SCALAR(KERF_BAND_INSTANCES)
 
 }  // namespace kerf::fit

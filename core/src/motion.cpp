@@ -1,14 +1,20 @@
-// The double instantiation of the motion code callers link against.
+// The motion code callers link against, for each scalar type the core is
+// built for.
+#include "kerf/core/fixed.hpp"
 #include "kerf/motion/interpolator.hpp"
+#include "scalar_types.hpp"
 
 namespace kerf::motion {
 
-template class PathQueue<double>;
-template class Interpolator<double>;
-template Result<QueuedSegment<double>> prepare_segment(const PathSegment<double>&);
-template Vec2<double> point_at(const QueuedSegment<double>&, double);
-template double braking_length(double, double, double);
-template double max_step_before(double, double, double);
-template double corner_step_limit(Vec2<double>, Vec2<double>, double, double);
+#define KERF_MOTION_INSTANCES(S)                                                   \
+  template class PathQueue<S>;                                                     \
+  template class Interpolator<S>;                                                  \
+  template Result<QueuedSegment<S>> prepare_segment(const PathSegment<S>&);        \
+  template Vec2<S> point_at(const QueuedSegment<S>&, S);                           \
+  template S braking_length(S, S, S);                                              \
+  template S max_step_before(S, S, S);                                             \
+  template S corner_step_limit(Vec2<S>, Vec2<S>, S, S);
+
+KERF_FOR_EACH_SCALAR(KERF_MOTION_INSTANCES)
 
 }  // namespace kerf::motion
