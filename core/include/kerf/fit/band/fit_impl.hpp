@@ -34,9 +34,11 @@ struct Oracle {
   static constexpr std::uint32_t kMarkMask = (1u << kMarkBits) - 1;
   static constexpr std::uint32_t kPreferCw = 1u << 30;
 
-  static std::uint32_t mark(std::uint32_t hint, int o) { return (hint >> (o * kMarkBits)) & kMarkMask; }
+  // Where orientation o's mark sits in the hint word (o is 0 or 1).
+  static std::uint32_t shift(int o) { return static_cast<std::uint32_t>(o) * kMarkBits; }
+  static std::uint32_t mark(std::uint32_t hint, int o) { return (hint >> shift(o)) & kMarkMask; }
   static std::uint32_t with_mark(std::uint32_t hint, int o, std::uint32_t m) {
-    return (hint & ~(kMarkMask << (o * kMarkBits))) | (m << (o * kMarkBits));
+    return (hint & ~(kMarkMask << shift(o))) | (m << shift(o));
   }
   static std::uint32_t pack(std::uint32_t i, std::uint32_t cell) {
     const std::uint32_t off = cell - i;
