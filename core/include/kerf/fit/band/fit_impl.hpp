@@ -1,9 +1,9 @@
-// Definitions behind fit/band.hpp. Included by the one translation unit
-// per scalar type that instantiates them (src/band_double.cpp).
+// Definitions behind fit/band.hpp. Included by the translation unit that
+// instantiates them for every scalar type (src/band.cpp).
 #pragma once
 
-#include "kerf/fit/band/deviation.hpp"
 #include "kerf/fit/band.hpp"
+#include "kerf/fit/band/deviation.hpp"
 #include "kerf/fit/band/pair.hpp"
 #include "kerf/fit/band/region_impl.hpp"
 #include "kerf/fit/detail/chord.hpp"

@@ -43,10 +43,10 @@
 
 #include <cstdint>
 
-#include "kerf/fit/detail/angle_set.hpp"
 #include "kerf/fit/band/numeric.hpp"
 #include "kerf/fit/band/region.hpp"
 #include "kerf/fit/band/slab.hpp"
+#include "kerf/fit/detail/angle_set.hpp"
 #include "kerf/geom/roots.hpp"
 
 namespace kerf::fit {

@@ -1,9 +1,9 @@
-// Definitions behind fit/biarc.hpp. Included by the one translation unit
-// per scalar type that instantiates them (src/biarc_double.cpp).
+// Definitions behind fit/biarc.hpp. Included by the translation unit that
+// instantiates them for every scalar type (src/biarc.cpp).
 #pragma once
 
-#include "kerf/fit/biarc/deviation.hpp"
 #include "kerf/fit/biarc.hpp"
+#include "kerf/fit/biarc/deviation.hpp"
 #include "kerf/fit/biarc/joints.hpp"
 #include "kerf/fit/biarc/reach.hpp"
 #include "kerf/fit/detail/fit_impl.hpp"

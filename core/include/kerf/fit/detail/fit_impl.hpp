@@ -1,13 +1,14 @@
-// Definitions behind fit/fit.hpp. Included by the one translation unit per
-// scalar type that instantiates them (src/fit_double.cpp).
+// Definitions behind fit/fit.hpp (and the search the band fitter shares).
+// Included by src/fit.cpp, which instantiates them, and by the fitters that
+// build on it.
 #pragma once
 
-#include "kerf/fit/esgi/rules.hpp"
-#include "kerf/fit/fit.hpp"
+#include "kerf/core/scale.hpp"
 #include "kerf/fit/detail/min_count.hpp"
 #include "kerf/fit/detail/prefix_guard.hpp"
+#include "kerf/fit/esgi/rules.hpp"
+#include "kerf/fit/fit.hpp"
 #include "kerf/fit/vertex/pair.hpp"
-#include "kerf/core/scale.hpp"
 
 namespace kerf::fit {
 
