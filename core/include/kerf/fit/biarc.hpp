@@ -55,9 +55,9 @@ struct BiarcOptions {
   // Test every pair, ignoring the proven reach bound of fit/biarc/reach.hpp
   // (slow; the tests use it to show the bound changes no count).
   bool exact = false;
-  // nullptr: kerf's exact sets. Otherwise they decide alone (no quick
-  // joints), so that the referee is what the tests and the benchmark
-  // measure; kerf::Fixed refuses it (Status::invalid_argument).
+  // nullptr: kerf's exact sets. Otherwise the caller's sets decide alone
+  // (no quick joints), so that the referee is what the tests and the
+  // benchmark measure; kerf::Fixed refuses them (Status::invalid_argument).
   BiarcJointsFn joints = nullptr;
 };
 

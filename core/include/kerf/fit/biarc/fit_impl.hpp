@@ -2,6 +2,8 @@
 // instantiates them for every scalar type (src/biarc.cpp).
 #pragma once
 
+#include <type_traits>  // freestanding
+
 #include "kerf/fit/biarc.hpp"
 #include "kerf/fit/biarc/deviation.hpp"
 #include "kerf/fit/biarc/joints.hpp"
