@@ -11,12 +11,8 @@ namespace kerf::cli {
 
 namespace {
 
-int check_biarc_options(const FitOptions& opts, Numeric numeric, double& tol, bool& estimate) {
+int check_biarc_options(const FitOptions& opts, double& tol, bool& estimate) {
   std::string error;
-  if (!opts.biarc_method.empty() && opts.biarc_method != "sets" && opts.biarc_method != "paper")
-    return usage_error("--biarc-method: expected sets or paper, got " + quoted(opts.biarc_method));
-  if (opts.biarc_method == "paper" && numeric == Numeric::fixed)
-    return usage_error("--biarc-method paper runs in double only (--numeric fixed fits with the exact sets)");
   if (opts.method != "optimal")
     return usage_error("--method: " + quoted(opts.method) +
                        " is a vertex-criterion rule; --criterion biarc is always optimal");
@@ -38,7 +34,7 @@ int check_biarc_options(const FitOptions& opts, Numeric numeric, double& tol, bo
 int run_fit_biarc(const FitOptions& opts, Numeric numeric) {
   double tol = 0.0;
   bool estimate = false;
-  if (const int rc = check_biarc_options(opts, numeric, tol, estimate); rc != kExitOk) return rc;
+  if (const int rc = check_biarc_options(opts, tol, estimate); rc != kExitOk) return rc;
   double feed = 1000.0;
   if (const int rc = check_output_options(opts, feed); rc != kExitOk) return rc;
   return fit_biarc_file(opts, numeric == Numeric::fixed, tol, estimate, feed);

@@ -66,10 +66,6 @@ CLI::App* add_fit_command(CLI::App& app, FitOptions& opts) {
                   "biarc: vector (x y tx ty) or angle (x y degrees)")
       ->type_name("NAME")
       ->capture_default_str();
-  fit->add_option("--biarc-method", opts.biarc_method,
-                  "biarc: how a pair's valid joints are found: sets (kerf's exact joint sets, "
-                  "default) or paper (the visibility regions of Drysdale-Rote-Sturm section 3)")
-      ->type_name("sets|paper");
   add_numeric_option(fit, opts.numeric);
   fit->add_option("--tie-break", opts.tie_break,
                   "vertex, band: among the fewest-pieces fits, smallest (default: the one at the "
@@ -144,7 +140,6 @@ int run_fit(const FitOptions& opts) {
   }
   if (!opts.tangents.empty() || opts.tangent_format != "vector")
     return usage_error("--tangents and --tangent-format need --criterion biarc");
-  if (!opts.biarc_method.empty()) return usage_error("--biarc-method needs --criterion biarc");
   fit::Method method{};
   std::uint32_t pieces = 0;
   double tol = 0.0;

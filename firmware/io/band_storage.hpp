@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "io/piece_storage.hpp"
-#include "kerf/fit/band_fit.hpp"
+#include "kerf/fit/band.hpp"
 
 namespace kerf::io {
 

@@ -5,8 +5,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "kerf/fit/biarc_fit.hpp"
-#include "kerf/fit/tangent.hpp"
+#include "kerf/fit/biarc.hpp"
+#include "kerf/fit/biarc/tangent.hpp"
 
 namespace kerf::io {
 
@@ -34,7 +34,7 @@ class BasicBiarcStorage {
 };
 using BiarcStorage = BasicBiarcStorage<double>;
 
-// The estimated unit tangents of pts (fit/tangent.hpp).
+// The estimated unit tangents of pts (fit/biarc/tangent.hpp).
 inline std::vector<Vec2<double>> estimated_tangents(const std::vector<Vec2<double>>& pts) {
   std::vector<Vec2<double>> t(pts.size());
   fit::estimate_tangents<double>({pts.data(), pts.size()}, {t.data(), t.size()});

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "io/point_file.hpp"
-#include "kerf/fit/band_region.hpp"
+#include "kerf/fit/band/region.hpp"
 
 namespace kerf::cli {
 

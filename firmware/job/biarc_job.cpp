@@ -66,18 +66,12 @@ Result<fit::Fit<double>> fit_biarc_fixed(const std::vector<Vec2<double>>& pts,
 
 bool fit_biarc_path(const std::vector<Vec2<double>>& pts, const std::vector<Vec2<double>>& given,
                     double tol, std::vector<fit::BiarcPiece<double>>& out, fit::Fit<double>& fit,
-                    std::string& error, Status& status, fit::BiarcMethod method, bool fixed) {
+                    std::string& error, Status& status, bool fixed) {
   const std::size_t n = pts.size();
-  if (fixed && method == fit::BiarcMethod::paper) {
-    status = Status::invalid_argument;
-    error = "--biarc-method paper runs in double only (--numeric fixed fits with the exact sets)";
-    return false;
-  }
   std::vector<Vec2<double>> tangents = given.empty() && !fixed ? io::estimated_tangents(pts) : given;
   std::vector<fit::BandWidth<double>> widths(n, {tol, tol});
   io::BiarcStorage storage(n);
   fit::BiarcOptions opts;
-  opts.method = method;
   const Result<fit::Fit<double>> r =
       fixed ? fit_biarc_fixed(pts, tangents, tol, storage)
             : fit::fit_biarc_min_count<double>({pts.data(), n}, {tangents.data(), n}, {widths.data(), n},

@@ -1,6 +1,6 @@
 // The biarc criterion for the commands (`kerf fit --criterion biarc`, and
 // `kerf plan` / `kerf sim` through fit_job): core's fewest G1 biarcs
-// (kerf/fit/biarc_fit.hpp) within a symmetric --tol, on given or estimated
+// (kerf/fit/biarc.hpp) within a symmetric --tol, on given or estimated
 // tangents, each biarc checked before it is used.
 #pragma once
 
@@ -8,20 +8,19 @@
 #include <vector>
 
 #include "kerf/core/status.hpp"
-#include "kerf/fit/biarc_fit.hpp"
+#include "kerf/fit/biarc.hpp"
 
 namespace kerf::cli {
 
 // Fits one path. tangents: one unit vector per point, or empty to estimate
-// them (fit/tangent.hpp). On failure returns false with `error` (no "kerf: "
+// them (fit/biarc/tangent.hpp). On failure returns false with `error` (no "kerf: "
 // prefix) and `status` set. fixed: the points, tangents (estimated in
 // kerf::Fixed too when not given) and tol are rounded to Q31.32 and the
 // fit runs there (exact sets only); the biarcs come back in double and are
 // checked with the fixed-point allowance (job/fit_fixed.hpp).
 bool fit_biarc_path(const std::vector<Vec2<double>>& pts, const std::vector<Vec2<double>>& tangents,
                     double tol, std::vector<fit::BiarcPiece<double>>& out, fit::Fit<double>& fit,
-                    std::string& error, Status& status,
-                    fit::BiarcMethod method = fit::BiarcMethod::exact_sets, bool fixed = false);
+                    std::string& error, Status& status, bool fixed = false);
 
 // What a fitted path must satisfy (a check of the output, not a proof): each
 // biarc starts on p_first with the point's tangent, its arcs meet at the

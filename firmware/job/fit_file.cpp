@@ -18,7 +18,7 @@
 #include "job/fit_fixed.hpp"
 #include "job/fit_job.hpp"
 #include "job/fit_write.hpp"
-#include "kerf/fit/band_fit.hpp"
+#include "kerf/fit/band.hpp"
 
 namespace kerf::cli {
 
@@ -186,9 +186,7 @@ int fit_biarc_file(const FitOptions& opts, bool fixed, double tol, bool estimate
     std::string error;
     Status status = Status::ok;
     const auto t0 = std::chrono::steady_clock::now();
-    const fit::BiarcMethod how =
-        opts.biarc_method == "paper" ? fit::BiarcMethod::paper : fit::BiarcMethod::exact_sets;
-    const bool ok = fit_biarc_path(pts, tangents, tol, biarcs, fit, error, status, how, fixed);
+    const bool ok = fit_biarc_path(pts, tangents, tol, biarcs, fit, error, status, fixed);
     ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     if (!ok) {
       const std::string where = begins.size() > 1 ? " (path " + std::to_string(p + 1) + ")" : "";

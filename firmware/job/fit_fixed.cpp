@@ -8,7 +8,7 @@
 
 #include "io/options.hpp"
 #include "kerf/core/fixed_convert.hpp"
-#include "kerf/fit/band_fit.hpp"
+#include "kerf/fit/band.hpp"
 
 namespace kerf::cli {
 

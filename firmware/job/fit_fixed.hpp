@@ -8,7 +8,7 @@
 #include <cstdint>
 
 #include "io/point_file.hpp"
-#include "kerf/fit/band_region.hpp"
+#include "kerf/fit/band/region.hpp"
 #include "kerf/fit/fit.hpp"
 
 namespace kerf::cli {

@@ -8,7 +8,7 @@
 #include "io/band_storage.hpp"
 #include "job/gcode_reader.hpp"
 #include "io/fit_storage.hpp"
-#include "kerf/fit/band_fit.hpp"
+#include "kerf/fit/band.hpp"
 
 namespace kerf::cli {
 
@@ -49,7 +49,7 @@ bool fit_job(const std::vector<Vec2<double>>& pts, const std::vector<double>& to
     }
     std::vector<fit::BiarcPiece<double>> biarcs;
     fit::Fit<double> fit{};
-    if (!fit_biarc_path(pts, {}, tol, biarcs, fit, error, status, fit::BiarcMethod::exact_sets, fixed))
+    if (!fit_biarc_path(pts, {}, tol, biarcs, fit, error, status, fixed))
       return false;
     // Each biarc runs as its two arcs; both keep the biarc's point range.
     out.clear();

@@ -21,7 +21,6 @@ struct FitOptions {
   std::string tangents;                  // biarc: given | estimate (default: given when
                                          // the file has them)
   std::string tangent_format = "vector";  // biarc: vector (x y tx ty) | angle (x y deg)
-  std::string biarc_method;  // biarc: sets (default, fit/biarc_joints.hpp) | paper (biarc_visibility.hpp)
   std::string numeric = "double";  // double or fixed (kerf::Fixed), every criterion
   std::string tie_break;  // smallest (whole-input default) | none (--stream's only)
   bool stream = false;   // --stream: read and write piece by piece (job/fit_stream.cpp)

@@ -14,7 +14,7 @@
 #include "bench_util.hpp"
 #include "io/band_storage.hpp"
 #include "io/fit_storage.hpp"
-#include "kerf/fit/band_fit.hpp"
+#include "kerf/fit/band.hpp"
 #include "kerf/fit/fit.hpp"
 
 namespace {

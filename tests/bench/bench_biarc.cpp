@@ -2,7 +2,7 @@
 // on the sine wave of bench_fit, with estimated tangents; the growth
 // exponent; and, up to --exact-max-n, every pair tested (BiarcOptions::exact)
 // against the default, which skips the pairs the proven reach bound of
-// fit/biarc_reach.hpp rules out (same counts, by the bound's proof). Prints figures measured in this run; it
+// fit/biarc/reach.hpp rules out (same counts, by the bound's proof). Prints figures measured in this run; it
 // asserts nothing about speed.
 //
 // Memory: the caller-provided storage core uses (2n words, n region
@@ -21,17 +21,18 @@
 #include <vector>
 
 #include "bench_util.hpp"
+#include "biarc_visibility.hpp"
 #include "io/biarc_storage.hpp"
-#include "kerf/fit/biarc_fit.hpp"
+#include "kerf/fit/biarc.hpp"
 
 namespace {
 
 using kerf::Vec2;
 namespace fit = kerf::fit;
 
-// --method paper: the pair test of fit/biarc_visibility.hpp instead of the
-// exact joint sets.
-fit::BiarcMethod g_method = fit::BiarcMethod::exact_sets;
+// --method paper: the pair test of tests/support/biarc_visibility.hpp instead
+// of the exact joint sets.
+fit::BiarcJointsFn g_joints = nullptr;
 
 struct Run {
   std::uint32_t biarcs = 0;
@@ -46,7 +47,7 @@ Run once(const std::vector<Vec2<double>>& p, double tol, bool exact) {
   kerf::io::BiarcStorage s(n);
   fit::BiarcOptions opts;
   opts.exact = exact;
-  opts.method = g_method;
+  opts.joints = g_joints;
   const auto r = fit::fit_biarc_min_count<double>({p.data(), n}, {t.data(), n}, {widths.data(), n},
                                                   opts, s.workspace(), s.pieces());
   const std::clock_t t1 = std::clock();
@@ -92,11 +93,11 @@ int main(int argc, char** argv) {
     if (!std::strcmp(argv[a], "--tol")) tol = std::atof(argv[a + 1]);
     if (!std::strcmp(argv[a], "--dx")) dx = std::atof(argv[a + 1]);
     if (!std::strcmp(argv[a], "--method") && !std::strcmp(argv[a + 1], "paper"))
-      g_method = fit::BiarcMethod::paper;
+      g_joints = fit::biarc_paper_joints;
   }
   std::printf("biarc fitter (%s pair test), symmetric tol %g on y = %g sin(2 pi x / %g), dx = %g, "
               "estimated tangents\n",
-              g_method == fit::BiarcMethod::paper ? "paper" : "exact-sets", tol,
+              g_joints != nullptr ? "paper" : "exact-sets", tol,
               kerf_bench::kAmplitude, kerf_bench::kPeriod, dx);
   std::printf("%8s %8s %8s %12s %14s %12s %12s %10s\n", "n", "biarcs", "span", "pt/s",
               "all-pair pt/s", "a.p. biarcs", "storage KiB", "peak MiB");

@@ -1,4 +1,4 @@
-// The band fitter (kerf/fit/band_fit.hpp) on fuzzed points and widths
+// The band fitter (kerf/fit/band.hpp) on fuzzed points and widths
 // (symmetric, one-sided or per vertex; now and then a tol of 0, -1, NaN or
 // inf, which must be refused, or 1e-300 or 1e300, handled or refused). A line along each edge always lies
 // in the band, so the fit must succeed, and the independent band referee

@@ -1,4 +1,4 @@
-// The biarc fitter (kerf/fit/biarc_fit.hpp) on fuzzed points, with the
+// The biarc fitter (kerf/fit/biarc.hpp) on fuzzed points, with the
 // tangents kerf estimates, in a symmetric band (now and then of 0, -1, NaN
 // or inf, which must be refused, or 1e-300 or 1e300). It may refuse (no biarc
 // between two points whose tangents leave the band), but with a status, and

@@ -7,7 +7,7 @@
 #include <cstdio>
 
 #include "kerf/core/fixed.hpp"
-#include "kerf/fit/band_fit.hpp"
+#include "kerf/fit/band.hpp"
 #include "kerf/fit/fit.hpp"
 
 namespace kerf::mcu {

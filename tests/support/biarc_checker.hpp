@@ -22,7 +22,7 @@
 // `widths` at any point (checked). Where the ideal band runs back over
 // itself (a hairpin of short edges), an ideal gate reaches into the band of
 // the return leg, and a biarc going down that leg crosses it there; kerf's
-// region narrows the widths until its cells are convex (fit/band_region.hpp),
+// region narrows the widths until its cells are convex (fit/band/region.hpp),
 // and its shorter gates are the ones Definition 3.2 speaks of. Without them
 // the ideal gates are used, which suits fits made in the ideal band.
 #pragma once

@@ -11,9 +11,9 @@
 #include <new>
 
 #include "kerf/core/fixed_convert.hpp"
-#include "kerf/fit/band_fit.hpp"
-#include "kerf/fit/biarc_fit.hpp"
-#include "kerf/fit/tangent.hpp"
+#include "kerf/fit/band.hpp"
+#include "kerf/fit/biarc.hpp"
+#include "kerf/fit/biarc/tangent.hpp"
 #include "kerf/fit/fit.hpp"
 #include "kerf/fit/stream.hpp"
 #include "kerf/fit/stream_band.hpp"

@@ -4,7 +4,7 @@
 #include <random>
 #include <vector>
 
-#include "kerf/fit/angle_set.hpp"
+#include "kerf/fit/detail/angle_set.hpp"
 
 namespace {
 

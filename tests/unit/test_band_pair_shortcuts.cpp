@@ -19,8 +19,8 @@
 
 #include "io/band_storage.hpp"
 #include "job/gcode_reader.hpp"
-#include "kerf/fit/band_fit.hpp"
-#include "kerf/fit/band_pair.hpp"
+#include "kerf/fit/band.hpp"
+#include "kerf/fit/band/pair.hpp"
 #include "typed_core_helpers.hpp"
 
 namespace {

@@ -1,4 +1,4 @@
-// The pair test's quick pass (fit/band_slab.hpp) must be sound: when it
+// The pair test's quick pass (fit/band/slab.hpp) must be sound: when it
 // says a slab is clear of an arc's disc, every point within the slab's
 // thickness of its segment lies outside that disc. Checked on random arcs
 // and slabs placed across their circles, sampling each slab to its edge,
@@ -8,8 +8,8 @@
 #include <cmath>
 #include <cstdint>
 
-#include "kerf/fit/angle_set.hpp"
-#include "kerf/fit/band_slab.hpp"
+#include "kerf/fit/detail/angle_set.hpp"
+#include "kerf/fit/band/slab.hpp"
 
 namespace {
 

@@ -1,6 +1,6 @@
-// The exact valid-joint sets of fit/biarc_joints.hpp, the proven reach
-// bound of fit/biarc_reach.hpp and the certified deviation of
-// fit/biarc_deviation.hpp:
+// The exact valid-joint sets of fit/biarc/joints.hpp, the proven reach
+// bound of fit/biarc/reach.hpp and the certified deviation of
+// fit/biarc/deviation.hpp:
 //  - the joint set agrees with the full single-joint test (BiarcCheck) on a
 //    dense scan of J, on random pairs of random paths;
 //  - a deliberately narrow valid interval, between all the joints the old
@@ -19,10 +19,10 @@
 #include <vector>
 
 #include "bridge/biarc_bridge.hpp"
-#include "kerf/fit/biarc_deviation.hpp"
-#include "kerf/fit/biarc_joints.hpp"
-#include "kerf/fit/biarc_reach.hpp"
-#include "kerf/fit/tangent.hpp"
+#include "kerf/fit/biarc/deviation.hpp"
+#include "kerf/fit/biarc/joints.hpp"
+#include "kerf/fit/biarc/reach.hpp"
+#include "kerf/fit/biarc/tangent.hpp"
 #include "rng.hpp"
 
 namespace {

@@ -12,8 +12,8 @@
 #include "biarc_checker.hpp"
 #include "biarc_twin.hpp"
 #include "bridge/biarc_bridge.hpp"
-#include "kerf/fit/biarc.hpp"
-#include "kerf/fit/tangent.hpp"
+#include "kerf/fit/biarc/arc.hpp"
+#include "kerf/fit/biarc/tangent.hpp"
 #include "rng.hpp"
 
 namespace {
@@ -42,7 +42,7 @@ std::uint32_t checked_fit(const std::vector<VPoint>& p, const std::vector<VPoint
                           double tol, std::vector<VBiarc>* out = nullptr) {
   CoreBiarcFitter core(p, tangents, tol);
   const auto fit = core.fit();
-  // The reach bound (fit/biarc_reach.hpp) skips only pairs it proves
+  // The reach bound (fit/biarc/reach.hpp) skips only pairs it proves
   // invalid: testing every pair gives the same count.
   const auto exact = core.fit({16, true});
   EXPECT_TRUE(exact.ok());

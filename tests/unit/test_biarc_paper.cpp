@@ -1,5 +1,5 @@
 // The paper's pair test (fit/biarc_visibility.hpp) against kerf's exact
-// joint sets (fit/biarc_joints.hpp) and the single-joint test (BiarcCheck):
+// joint sets (fit/biarc/joints.hpp) and the single-joint test (BiarcCheck):
 //  - Lemma 3.3: the visible intervals of each gate agree with a fine
 //    sampling of the gate (each point's own pencil arc traced and tested);
 //  - Lemma 3.4: (Out) holds on a prefix of the gates, (In) on a suffix, and
@@ -21,8 +21,8 @@
 #include <vector>
 
 #include "bridge/biarc_bridge.hpp"
-#include "kerf/fit/biarc_visibility.hpp"
-#include "kerf/fit/tangent.hpp"
+#include "biarc_visibility.hpp"
+#include "kerf/fit/biarc/tangent.hpp"
 #include "rng.hpp"
 
 namespace {
@@ -546,7 +546,7 @@ void expect_same_counts(const std::vector<VPoint>& p, double tol, const char* wh
   CoreBiarcFitter sets(p, {}, tol), paper(p, {}, tol);
   fit::BiarcOptions opts;
   const auto a = sets.fit(opts);
-  opts.method = fit::BiarcMethod::paper;
+  opts.joints = fit::biarc_paper_joints;
   const auto b = paper.fit(opts);
   ASSERT_EQ(a.ok(), b.ok()) << what;
   if (!a.ok()) return;
@@ -673,7 +673,7 @@ TEST(BiarcPaper, LemmaThreeSixA1BoundsTheReachableJoints) {
         if (best == 1e300) continue;
         const Vec2<double> xa = pr.pts[l] + pr.region.vertex(l).b * ua;
         const double kappa = 2 * t1.cross(xa - p1) / (xa - p1).norm2();
-        // The joint of the first arc of curvature kappa (fit/biarc_joints.hpp).
+        // The joint of the first arc of curvature kappa (fit/biarc/joints.hpp).
         const Vec2<double> dk{d.x * k.x - d.y * k.y, d.x * k.y + d.y * k.x};
         const double lambda = 2 * t1.cross(dk) / (kappa * d.norm2() - 2 * t1.cross(d));
         const double s_a1 = lambda >= 0 ? lambda / (1 + lambda) : (2 - lambda) / (1 - lambda);

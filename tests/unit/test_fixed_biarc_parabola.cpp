@@ -17,8 +17,8 @@
 
 #include "kerf/core/fixed.hpp"
 #include "kerf/core/fixed_convert.hpp"
-#include "kerf/fit/biarc_fit.hpp"
-#include "kerf/fit/tangent.hpp"
+#include "kerf/fit/biarc.hpp"
+#include "kerf/fit/biarc/tangent.hpp"
 
 namespace {
 

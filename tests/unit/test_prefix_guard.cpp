@@ -7,8 +7,8 @@
 #include <random>
 #include <vector>
 
-#include "kerf/fit/prefix_guard.hpp"
-#include "kerf/fit/vertex_pair.hpp"
+#include "kerf/fit/detail/prefix_guard.hpp"
+#include "kerf/fit/vertex/pair.hpp"
 
 namespace {
 

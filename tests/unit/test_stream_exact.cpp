@@ -18,7 +18,7 @@
 #include "io/band_storage.hpp"
 #include "io/fit_storage.hpp"
 #include "job/gcode_reader.hpp"
-#include "kerf/fit/band_fit.hpp"
+#include "kerf/fit/band.hpp"
 #include "kerf/fit/fit.hpp"
 #include "kerf/fit/stream.hpp"
 #include "kerf/fit/stream_band.hpp"

@@ -22,8 +22,8 @@
 
 #include "io/band_storage.hpp"
 #include "io/fit_storage.hpp"
-#include "kerf/fit/band_fit.hpp"
-#include "kerf/fit/fit_impl.hpp"
+#include "kerf/fit/band.hpp"
+#include "kerf/fit/detail/fit_impl.hpp"
 #include "kerf/fit/stream.hpp"
 #include "kerf/fit/stream_band.hpp"
 

@@ -14,7 +14,7 @@
 
 #include "band_checker.hpp"
 #include "job/gcode_reader.hpp"
-#include "kerf/fit/band_fit.hpp"
+#include "kerf/fit/band.hpp"
 #include "typed_core_helpers.hpp"
 
 namespace {

@@ -14,9 +14,10 @@
 #include <vector>
 
 #include "biarc_checker.hpp"
+#include "biarc_visibility.hpp"
 #include "io/biarc_storage.hpp"
-#include "kerf/fit/biarc_fit.hpp"
-#include "kerf/fit/tangent.hpp"
+#include "kerf/fit/biarc.hpp"
+#include "kerf/fit/biarc/tangent.hpp"
 #include "typed_core_helpers.hpp"
 
 namespace {
@@ -186,7 +187,7 @@ TYPED_TEST(TypedBiarc, ThePaperMethodIsRefusedInFixedOnly) {
   const std::vector<kerf::fit::BandWidth<S>> w(n, {from_d<S>(0.05), from_d<S>(0.05)});
   kerf::io::BasicBiarcStorage<S> storage(n);
   kerf::fit::BiarcOptions opts;
-  opts.method = kerf::fit::BiarcMethod::paper;
+  opts.joints = kerf::fit::biarc_paper_joints;
   const auto r = kerf::fit::fit_biarc_min_count<S>({p.data(), n}, {t.data(), n}, {w.data(), n}, opts,
                                                    storage.workspace(), storage.pieces());
   if constexpr (is_fixed<S>) EXPECT_EQ(r.status(), kerf::Status::invalid_argument);

@@ -6,7 +6,7 @@
 #include <random>
 #include <vector>
 
-#include "kerf/fit/vertex_pair.hpp"
+#include "kerf/fit/vertex/pair.hpp"
 
 namespace {
 

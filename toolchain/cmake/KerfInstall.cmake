@@ -42,8 +42,39 @@ set_target_properties(kerf_job PROPERTIES EXPORT_NAME job)
 install(TARGETS kerf RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT runtime)
 install(TARGETS kerf_core kerf_io kerf_job EXPORT kerfTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT dev)
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/core/include/kerf
-  DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} COMPONENT dev)
+# The core's headers a consumer compiles: the fit entry headers (fit.hpp,
+# band.hpp, biarc.hpp, stream.hpp, stream_band.hpp), what they include, and
+# the core, geometry and motion headers. The fitters' definitions
+# (fit/band/pair.hpp, fit/biarc/joints.hpp, ...) stay behind: the library
+# holds their instantiations.
+set(kerf_core_include ${PROJECT_SOURCE_DIR}/core/include)
+function(kerf_include_closure out)
+  set(todo ${ARGN})
+  set(done "")
+  while(todo)
+    list(POP_FRONT todo header)
+    if(header IN_LIST done)
+      continue()
+    endif()
+    list(APPEND done ${header})
+    file(STRINGS ${kerf_core_include}/${header} includes REGEX "^#include \"kerf/")
+    foreach(line IN LISTS includes)
+      string(REGEX REPLACE "^#include \"([^\"]+)\".*" "\\1" included "${line}")
+      list(APPEND todo ${included})
+    endforeach()
+  endwhile()
+  set(${out} ${done} PARENT_SCOPE)
+endfunction()
+file(GLOB kerf_fit_entries RELATIVE ${kerf_core_include} ${kerf_core_include}/kerf/fit/*.hpp)
+file(GLOB_RECURSE kerf_base_headers RELATIVE ${kerf_core_include}
+  ${kerf_core_include}/kerf/core/*.hpp ${kerf_core_include}/kerf/geom/*.hpp
+  ${kerf_core_include}/kerf/motion/*.hpp)
+kerf_include_closure(kerf_installed_headers ${kerf_fit_entries} ${kerf_base_headers})
+foreach(header IN LISTS kerf_installed_headers)
+  get_filename_component(header_dir ${header} DIRECTORY)
+  install(FILES ${kerf_core_include}/${header}
+    DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/${header_dir} COMPONENT dev)
+endforeach()
 file(GLOB kerf_io_headers ${PROJECT_SOURCE_DIR}/firmware/io/*.hpp)
 install(FILES ${kerf_io_headers} DESTINATION ${kerf_io_includedir}/io COMPONENT dev)
 file(GLOB kerf_job_headers ${PROJECT_SOURCE_DIR}/firmware/job/*.hpp)

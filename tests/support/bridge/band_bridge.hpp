@@ -10,7 +10,7 @@
 #include "band_twin.hpp"
 #include "bridge/fit_bridge.hpp"
 #include "io/band_storage.hpp"
-#include "kerf/fit/band_fit.hpp"
+#include "kerf/fit/band.hpp"
 
 namespace kerf_test {
 

@@ -9,7 +9,7 @@
 #include "biarc_checker.hpp"
 #include "bridge/band_bridge.hpp"
 #include "io/biarc_storage.hpp"
-#include "kerf/fit/biarc_fit.hpp"
+#include "kerf/fit/biarc.hpp"
 
 namespace kerf_test {
 

@@ -8,14 +8,14 @@
 
 #include "kerf/core/span.hpp"
 #include "kerf/core/status.hpp"
-#include "kerf/fit/angle_set.hpp"
+#include "kerf/fit/detail/angle_set.hpp"
 #include "kerf/geom/segment.hpp"
 
 namespace kerf::fit {
 
 enum class Method : std::uint8_t {
-  optimal,    // exact: any circle through the end points (fit/vertex_pair.hpp)
-  esgi_max,   // the report's first best-arc rule (fit/esgi.hpp)
+  optimal,    // exact: any circle through the end points (fit/vertex/pair.hpp)
+  esgi_max,   // the report's first best-arc rule (fit/esgi/rules.hpp)
   esgi_mean,  // the report's second best-arc rule
 };
 

@@ -4,7 +4,7 @@
 // PointWindow<S, N> takes the points one by one and hands each piece to a
 // sink as soon as it is decided. It keeps at most N points (the window) and,
 // for each, the shortest-path label of the fewest-pieces search (fit/fit.hpp,
-// fit/min_count.hpp), built incrementally: a new point m gets
+// fit/detail/min_count.hpp), built incrementally: a new point m gets
 // d(m) = 1 + min d(i) over the starts i that reach it, and pred(m) = the
 // nearest such i (the whole-input search's own rule). The feasibility test
 // and the monotone guard are the whole-input fitter's (detail::Oracle).
@@ -100,7 +100,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "kerf/fit/fit_impl.hpp"
+#include "kerf/fit/detail/fit_impl.hpp"
 
 namespace kerf::fit {
 

@@ -1,8 +1,8 @@
-// The band criterion (fit/band_fit.hpp), streamed: BandWindow<S, N> is
+// The band criterion (fit/band.hpp), streamed: BandWindow<S, N> is
 // PointWindow's engine (fit/stream.hpp) with the band pair test.
 //
 // A band gate depends on the edges on both sides of its vertex, and the
-// region's convexity narrowing (fit/band_region.hpp) halves a vertex's gate
+// region's convexity narrowing (fit/band/region.hpp) halves a vertex's gate
 // when a cell next to it is not convex, which can reach on to the next
 // vertex, and so on. The ends of a window's region are path ends (gates
 // square to the end edge), where the whole input has ordinary corners. So
@@ -24,8 +24,8 @@
 // polyline) is valid, which the engine assumes.
 #pragma once
 
-#include "kerf/fit/band_fit.hpp"
-#include "kerf/fit/prefix_guard.hpp"
+#include "kerf/fit/band.hpp"
+#include "kerf/fit/detail/prefix_guard.hpp"
 #include "kerf/fit/stream.hpp"
 
 namespace kerf::fit {

@@ -1,0 +1,188 @@
+// The exact vertex criterion for one candidate piece p_i -> p_j: does a circle
+// (or the line) through both end points pass within eps of every point in
+// between, and which one passes closest?
+//
+// Derivation (see fit/detail/chord.hpp for phi). For an inner point p with
+// v = p - mid, A = |v|^2 - h^2 and B = v.n, the power of p is linear in t:
+//   |p - c(t)|^2 - r(t)^2 = A - 2 t B.
+// The annulus condition (r - eps)^2 <= |p - c|^2 <= (r + eps)^2 reads
+//   |A - eps^2 - 2 t B| <= 2 eps r(t),
+// and multiplying by sin(phi) > 0 (r = h / sin(phi), t = h cot(phi)):
+//   |(A - eps^2) sin(phi) - 2 h B cos(phi)| <= 2 eps h,
+//   i.e. |R sin(phi - psi)| <= 2 eps h  with R cos(psi) = A - eps^2, R sin(psi) = 2 h B.
+// So each inner point allows one arc of phi, centred on psi (mod pi), of half
+// width asin(2 eps h / R); phi = 0 (the line) is allowed exactly when |B| <= eps.
+//
+// The annulus equals the true condition |d - r| <= eps whenever r >= eps. A
+// circle with r < eps also accepts points with d <= eps - r near its centre;
+// that needs h < eps (r >= h) and is added explicitly, so the test is exact.
+#pragma once
+
+#include <cstdint>
+
+#include "kerf/fit/detail/angle_set.hpp"
+#include "kerf/fit/detail/chord.hpp"
+
+namespace kerf::fit {
+
+namespace detail {
+
+// Sorts up to four intervals by lo and merges overlaps, in place.
+template <class S>
+std::size_t normalise(Interval<S>* v, std::size_t n) {
+  for (std::size_t i = 1; i < n; ++i)
+    for (std::size_t k = i; k > 0 && v[k].lo < v[k - 1].lo; --k) {
+      const Interval<S> t = v[k];
+      v[k] = v[k - 1];
+      v[k - 1] = t;
+    }
+  std::size_t out = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (out > 0 && !(v[out - 1].hi < v[i].lo))
+      v[out - 1].hi = max_of(v[out - 1].hi, v[i].hi);
+    else
+      v[out++] = v[i];
+  }
+  return out;
+}
+
+}  // namespace detail
+
+// Narrows `set` to the phi at which p is within eps of the circle.
+template <class S>
+Status constrain(AngleSet<S>& set, const Chord<S>& chord, Vec2<S> p, S eps) {
+  using M = Scalar<S>;
+  const Vec2<S> v = p - chord.mid;
+  const S h = chord.h;
+  const S a = v.norm2() - h * h - eps * eps;
+  const S b = S(2) * h * v.dot(chord.n);
+  const S r = M::sqrt(a * a + b * b);
+  const S lim = S(2) * eps * h;
+  if (!(r > lim)) return Status::ok;  // every circle through a and b passes close enough
+  const Vec2<S> psi{a / r, b / r};    // the direction (cos psi, sin psi)
+  if (!(h < eps)) return set.intersect_arc(psi, lim / r);
+
+  // Tiny circles (r < eps, i.e. sin(phi) > h / eps) also accept the point when
+  // d <= eps - r, which is R sin(phi - psi) <= -2 eps h on phi in (0, pi).
+  // Only chords shorter than 2 eps get here, so plain angles are fine.
+  Interval<S> parts[4];
+  std::size_t n = arc_parts(psi, lim / r, parts);
+  const S pi = M::pi();
+  const S half = M::asin(lim / r);
+  const S ang = M::atan2(b, a);
+  const S gamma = M::asin(h / eps);
+  for (int m = -1; m <= 0; ++m) {
+    const S lo = max_of(ang + pi + half + S(2) * pi * S(m), gamma);
+    const S hi = min_of(ang + S(2) * pi - half + S(2) * pi * S(m), pi - gamma);
+    if (!(hi < lo)) {
+      parts[n++] = {pseudo_angle(Vec2<S>{M::cos(lo), M::sin(lo)}),
+                    pseudo_angle(Vec2<S>{M::cos(hi), M::sin(hi)})};
+    }
+  }
+  n = detail::normalise(parts, n);
+  return set.intersect(parts, n);
+}
+
+// Narrows `set` to the circles through p_i and p_j within eps of every inner
+// point. Stops as soon as the set is empty. Returns false when it is (or when
+// storage ran out, which callers size so that it cannot).
+//
+// `hint`, if given, names an inner point to try first and receives the point
+// that emptied the set: the same start usually fails on the same point for
+// the next end point too, which makes a proof of infeasibility cost O(1).
+template <class S>
+bool vertex_pair_set(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, S eps, AngleSet<S>& set,
+                     std::uint32_t* hint = nullptr) {
+  set.reset();
+  if (j <= i + 1) return true;
+  if (closes_on_itself(pts[i], pts[j])) {
+    set.intersect(nullptr, 0);  // a closed loop has no unique arc
+    return false;
+  }
+  const Chord<S> chord(pts[i], pts[j]);
+  // Coarse to fine (m/2, then quarters, eighths, ...): far-apart points
+  // constrain phi most, so an infeasible pair usually fails within a few.
+  if (hint != nullptr && *hint > i && *hint < j) {
+    if (constrain(set, chord, pts[*hint], eps) != Status::ok || set.empty()) return false;
+  }
+  const std::uint32_t m = j - i - 1;
+  std::uint32_t top = 1;
+  while (top < m) top *= 2;
+  for (std::uint32_t step = top; step > 0; step /= 2) {
+    const std::uint32_t first = step == top ? 0 : step;
+    const std::uint32_t stride = step == top ? top : 2 * step;
+    for (std::uint32_t k = first; k < m; k += stride) {
+      const std::uint32_t at = i + 1 + (k + m / 2) % m;
+      if (constrain(set, chord, pts[at], eps) != Status::ok || set.empty()) {
+        if (hint != nullptr) *hint = at;
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+// A cheap sufficient test: the circle through p_i, the middle point and p_j
+// (the line if they are collinear), checked with the annulus rule in the
+// chord frame, which stays exact for huge radii. Returns its direction, or
+// (0, 0) when it does not fit.
+template <class S>
+Vec2<S> vertex_pair_witness(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, S eps) {
+  if (j == i + 1) return {S(1), S(0)};
+  if (closes_on_itself(pts[i], pts[j])) return {};
+  const Chord<S> chord(pts[i], pts[j]);
+  const Vec2<S> d = chord.direction_through(pts[(i + j + 1) / 2]);
+  if (d.norm2() == S(0)) return {};
+  // |(A - eps^2) s - 2 h B c| <= 2 eps h is the annulus (r - eps)^2 <= |p - c|^2
+  // <= (r + eps)^2 times s, a sufficient form of "within eps" for any radius.
+  const S lim = S(2) * eps * chord.h;
+  const S shift = eps * eps * d.y;
+  for (std::uint32_t k = i + 1; k < j; ++k)
+    if (Scalar<S>::abs(chord.power(d, pts[k]) - shift) > lim) return {};
+  return d;
+}
+
+// Largest distance of the inner points to the circle of direction d.
+template <class S>
+S pair_error(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, const Chord<S>& chord, Vec2<S> d) {
+  S e = S(0);
+  for (std::uint32_t k = i + 1; k < j; ++k) e = max_of(e, chord.distance(d, pts[k]));
+  return e;
+}
+
+
+// The line when it is within eps: that never raises the fit's largest error,
+// and a machine runs it without an enormous centre. Otherwise the circle with
+// the smallest largest distance, found by bisecting eps' in [0, eps] on the
+// exact test (to 1e-12 relative). Precondition: the pair is feasible at eps.
+template <class S>
+PieceFit<S> best_vertex_pair(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, S eps,
+                            AngleSet<S>& set) {
+  PieceFit<S> best;
+  const Chord<S> chord(pts[i], pts[j]);
+  best.error = pair_error(pts, i, j, chord, best.direction);
+  if (!(best.error > eps)) return best;
+  S lo = S(0);
+  S hi = eps;
+  bool found = vertex_pair_set(pts, i, j, hi, set);
+  for (int it = 0; found && it < 200 && hi - lo > hi * S(1e-12); ++it) {
+    const S mid = (lo + hi) / S(2);
+    if (vertex_pair_set(pts, i, j, mid, set)) hi = mid; else lo = mid;
+  }
+  auto consider = [&](Vec2<S> d) {
+    if (!(d.y > S(0))) return;
+    const S e = pair_error(pts, i, j, chord, d);
+    if (e < best.error) best = {false, d, e};
+  };
+  if (found && vertex_pair_set(pts, i, j, hi, set) && !set.contains_line()) {
+    const Vec2<S> d = direction_of((set[0].lo + set[0].hi) / S(2));
+    consider(d * (S(1) / d.norm()));
+  }
+  // The search accepted the pair through its witness or the exact set; if
+  // rounding at the boundary made the bisection find nothing, the witness
+  // still gives a circle within eps.
+  consider(vertex_pair_witness(pts, i, j, eps));
+  return best;
+}
+
+}  // namespace kerf::fit

@@ -1,0 +1,20 @@
+// The motion code callers link against, for each scalar type the core is
+// built for.
+#include "kerf/core/fixed.hpp"
+#include "kerf/motion/interpolator.hpp"
+#include "scalar_types.hpp"
+
+namespace kerf::motion {
+
+#define KERF_MOTION_INSTANCES(S)                                                   \
+  template class PathQueue<S>;                                                     \
+  template class Interpolator<S>;                                                  \
+  template Result<QueuedSegment<S>> prepare_segment(const PathSegment<S>&);        \
+  template Vec2<S> point_at(const QueuedSegment<S>&, S);                           \
+  template S braking_length(S, S, S);                                              \
+  template S max_step_before(S, S, S);                                             \
+  template S corner_step_limit(Vec2<S>, Vec2<S>, S, S);
+
+KERF_FOR_EACH_SCALAR(KERF_MOTION_INSTANCES)
+
+}  // namespace kerf::motion
