@@ -17,14 +17,27 @@ function(kerf_check_tier_name tier)
   endif()
 endfunction()
 
-# kerf_test_tier(<tier> [TARGET] <test>...): labels tests made with add_test.
+# What the `target` tests need. A cross build makes it part of `all` and
+# leaves the other test programs out of `all` (tests/CMakeLists.txt): its
+# presets run only the `target` tests.
+if(CMAKE_CROSSCOMPILING)
+  add_custom_target(kerf_target_tests ALL)
+else()
+  add_custom_target(kerf_target_tests)
+endif()
+
+# kerf_test_tier(<tier> [TARGET] <test>... [NEEDS <build target>...]): labels
+# tests made with add_test. NEEDS names what a `target` test runs.
 function(kerf_test_tier tier)
+  cmake_parse_arguments(PARSE_ARGV 1 arg "TARGET" "" "NEEDS")
   kerf_check_tier_name(${tier})
   set(labels ${tier})
-  set(tests ${ARGN})
-  if("TARGET" IN_LIST tests)
-    list(REMOVE_ITEM tests TARGET)
+  set(tests ${arg_UNPARSED_ARGUMENTS})
+  if(arg_TARGET)
     list(APPEND labels target)
+    if(arg_NEEDS)
+      add_dependencies(kerf_target_tests ${arg_NEEDS})
+    endif()
   endif()
   set_property(TEST ${tests} APPEND PROPERTY LABELS ${labels})
   foreach(test IN LISTS tests)
@@ -42,6 +55,7 @@ function(kerf_gtests exe tier)
   set(labels ${tier})
   if(arg_TARGET)
     list(APPEND labels target)
+    add_dependencies(kerf_target_tests ${exe})
   endif()
   get_property(calls TARGET ${exe} PROPERTY KERF_TEST_TIER)
   list(LENGTH calls n)
