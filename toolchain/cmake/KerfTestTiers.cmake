@@ -74,7 +74,9 @@ function(kerf_gtests exe tier)
   # The labels go on in a file ctest reads after the discovered list: a list
   # value (unit;target) does not survive gtest_discover_tests' PROPERTIES.
   set(labels_file ${CMAKE_CURRENT_BINARY_DIR}/${list_var}_labels.cmake)
-  file(WRITE ${labels_file} "set_tests_properties(\${${list_var}} PROPERTIES LABELS \"${labels}\")\n")
+  # (A test program a cross build leaves out is listed as <exe>_NOT_BUILT, unlabelled.)
+  file(WRITE ${labels_file} "if(DEFINED ${list_var})\n"
+       "  set_tests_properties(\${${list_var}} PROPERTIES LABELS \"${labels}\")\nendif()\n")
   set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES ${labels_file})
   set_property(TARGET ${exe} APPEND PROPERTY KERF_TEST_TIER ${tier})
 endfunction()
