@@ -1,12 +1,16 @@
 # Third-party code from Debian packages, as the targets kerf::cli11,
 # kerf::tomlplusplus, kerf::modbus and kerf::gpiod.
 
-# A header-only package. The host build uses the package's own CMake config.
-# A cross build cannot: its include folder is the host's /usr/include, which a
-# cross compiler must not search (it would find x86-64 glibc headers), so just
-# the package's header folder is exposed through a link in the build tree.
-function(kerf_header_only name package imported header_dir)
-  if(NOT CMAKE_CROSSCOMPILING)
+# A header-only package. With CONFIG, the host build uses the package's own
+# CMake config. A cross build cannot: its include folder is the host's
+# /usr/include, which a cross compiler must not search (it would find x86-64
+# glibc headers), so just the package's header folder is exposed through a
+# link in the build tree.
+function(kerf_header_only name header_dir)
+  cmake_parse_arguments(PARSE_ARGV 2 arg "" "" "CONFIG")
+  if(arg_CONFIG AND NOT CMAKE_CROSSCOMPILING)
+    list(GET arg_CONFIG 0 package)
+    list(GET arg_CONFIG 1 imported)
     find_package(${package} CONFIG REQUIRED)
     add_library(kerf::${name} ALIAS ${imported})
     return()
