@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # The full check: install packages, then run every workflow preset (configure,
-# build, test) and print one summary line "N passed, N failed" (ctest's counts
-# summed over the presets). Exits non-zero if anything failed.
+# build, test), print each preset's wall time and the total, and end with one
+# line "N passed, N failed" (ctest's counts summed over the presets). Exits
+# non-zero if anything failed. The cross presets run only the tests labelled
+# target; quick (unit and component tests of the host build) is not in the
+# default list, since host runs them all.
 #
 #   bash toolchain/check.sh                 # all presets
 #   bash toolchain/check.sh host armhf      # just these
@@ -15,6 +18,8 @@
 # one failure. Logs: build/check-logs/<preset>.log
 set -uo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
+check_start=$SECONDS
+mmss() { printf '%d:%02d' $(($1 / 60)) $(($1 % 60)); }
 
 if ! bash toolchain/setup.sh; then
   echo "check.sh: toolchain/setup.sh failed" >&2
@@ -56,12 +61,14 @@ for p in "${presets[@]}"; do
   fi
   total_pass=$((total_pass + pass))
   total_fail=$((total_fail + fail))
-  report+=("$(printf '%-11s rc=%-3s %4ss  %s passed, %s failed%s' "$p" "$rc" "$secs" "$pass" "$fail" "$note")")
+  report+=("$(printf '%-11s rc=%-3s %4ss (%5s)  %s passed, %s failed%s' "$p" "$rc" "$secs" "$(mmss "$secs")" "$pass" "$fail" "$note")")
 done
 
 echo
 echo "=== summary"
 printf '%s\n' "${report[@]}"
 ((total_fail == 0)) || status=1
+total=$((SECONDS - check_start))
+printf '%-11s        %4ss (%5s)  wall time, setup.sh included\n' total "$total" "$(mmss "$total")"
 echo "$total_pass passed, $total_fail failed"
 exit "$status"

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The main job: installs what is needed, builds the host preset, then runs
+# The main job: installs what the host build needs (setup.sh host: no cross
+# compilers, qemu or clang), builds the kerf command alone (no tests), then runs
 # `kerf sim` with no arguments: the built-in demo job (a plate with a hole, a
 # slot, a window and its outer contour, firmware/examples/demo_job.txt) on
 # the simulated machine. The controller fits each path, travels with the
@@ -9,9 +10,9 @@
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
-bash toolchain/setup.sh
+bash toolchain/setup.sh host
 cmake --preset host
-cmake --build --preset host
+cmake --build --preset host --target kerf
 kerf=$PWD/build/host/firmware/kerf
 out=build/demo
 mkdir -p "$out"

@@ -1,23 +1,33 @@
 #!/usr/bin/env bash
-# Installs every Debian 12 package that kerf's build, cross builds and tests
+# Installs the Debian 12 packages that kerf's build, cross builds and tests
 # need. Idempotent and non-interactive: when everything is already installed it
 # only runs dpkg-query and apt-cache (no apt-get update).
 #
-# To add a package: append it to PACKAGES below (one per line, keep it sorted
-# by purpose) and say why in the comment next to it.
+#   setup.sh          everything: what toolchain/check.sh (the test command) needs
+#   setup.sh host     only what the host build and `kerf sim` need (toolchain/demo.sh)
+#
+# To add a package: append it to the group below that needs it (one per line,
+# keep it sorted by purpose) and say why in the comment next to it.
 set -euo pipefail
 
-PACKAGES=(
-  # host build
-  cmake ninja-build g++ python3
-  # tests and benchmarks (GoogleTest is built from /usr/src/googletest)
-  libgtest-dev googletest libbenchmark-dev
+# The host build (configure, the kerf command, kerf sim) and its libraries.
+HOST_PACKAGES=(
+  # compiler and build; pkg-config finds libmodbus and libgpiod (KerfDeps.cmake)
+  cmake ninja-build g++ python3 pkg-config
+  # GoogleTest's sources: configuring the host preset adds its tests (built only when asked)
+  libgtest-dev googletest
   # header-only deps (exposed to cross builds by KerfDeps.cmake)
   libcli11-dev
   # hal's Modbus backend and sim's motion board (RTU and TCP)
   libmodbus-dev
   # hal's GPIO backend (libgpiod 1.6 on Debian 12) and the controller's TOML config
   libgpiod-dev libtomlplusplus-dev
+)
+
+# Everything else the tests need.
+TEST_PACKAGES=(
+  # benchmarks
+  libbenchmark-dev
   # Linux SBC cross compilers, run under qemu-user
   g++-aarch64-linux-gnu g++-arm-linux-gnueabihf qemu-user
   # Cortex-M (bare metal): compiler, C/C++ runtime, nm/size, and qemu for a later run
@@ -29,6 +39,12 @@ PACKAGES=(
   # the fuzz preset (tests/fuzz): clang, and libFuzzer plus the sanitizer runtimes
   clang libclang-rt-14-dev
 )
+
+case "${1:-all}" in
+  host) PACKAGES=("${HOST_PACKAGES[@]}") ;;
+  all) PACKAGES=("${HOST_PACKAGES[@]}" "${TEST_PACKAGES[@]}") ;;
+  *) echo "usage: setup.sh [host|all]" >&2; exit 2 ;;
+esac
 
 missing=()
 for p in "${PACKAGES[@]}"; do
@@ -53,4 +69,6 @@ fi
 
 # The aarch64 cross build's libmodbus and libgpiod: the arm64 packages,
 # extracted into build/_sysroot (never installed: see the script).
-bash "$(dirname "$0")/fetch_target_libs.sh"
+if [[ "${1:-all}" == all ]]; then
+  bash "$(dirname "$0")/fetch_target_libs.sh"
+fi

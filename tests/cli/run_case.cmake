@@ -49,54 +49,22 @@ if(EXISTS ${CASE_DIR}/rc)
   string(STRIP "${want_rc}" want_rc)
 endif()
 
-# EMULATOR is empty for native builds, a list such as "qemu-aarch64;-L;/usr/aarch64-linux-gnu"
-# for cross builds.
-execute_process(
-  COMMAND ${EMULATOR} ${KERF} ${args}
-  WORKING_DIRECTORY ${CASE_DIR}
-  INPUT_FILE ${stdin}
-  OUTPUT_VARIABLE out
-  ERROR_VARIABLE err
-  RESULT_VARIABLE rc)
-
-if(NOT EXISTS ${CASE_DIR}/expected.stdout AND NOT "$ENV{KERF_UPDATE_GOLDEN}")
-  message(FATAL_ERROR "${CASE_DIR}/expected.stdout is missing")
-endif()
 if("$ENV{KERF_UPDATE_GOLDEN}")
-  file(WRITE ${CASE_DIR}/expected.stdout "${out}")
-endif()
-file(READ ${CASE_DIR}/expected.stdout want_out)
-if(DEFINED VERSION)
-  string(REPLACE "@VERSION@" "${VERSION}" want_out "${want_out}")
-endif()
-
-set(failures "")
-if(NOT "${rc}" STREQUAL "${want_rc}")
-  string(APPEND failures "exit code: expected ${want_rc}, got ${rc}\n")
-endif()
-if(NOT "${out}" STREQUAL "${want_out}")
-  string(APPEND failures "stdout differs from expected.stdout\n")
-  if(DEFINED OUT_DIR)
-    file(WRITE ${OUT_DIR}/actual.stdout "${out}")
-    file(WRITE ${OUT_DIR}/expected.stdout "${want_out}")
-    execute_process(COMMAND diff -u ${OUT_DIR}/expected.stdout ${OUT_DIR}/actual.stdout
-                    OUTPUT_VARIABLE diff ERROR_QUIET)
-    string(APPEND failures "${diff}")
-  else()
-    string(APPEND failures "--- expected:\n${want_out}--- actual:\n${out}")
+  set(golden_file ${CASE_DIR}/expected.stdout)  # run_and_check.cmake writes it
+elseif(NOT EXISTS ${CASE_DIR}/expected.stdout)
+  message(FATAL_ERROR "${CASE_DIR}/expected.stdout is missing")
+else()
+  file(READ ${CASE_DIR}/expected.stdout want_out)
+  if(DEFINED VERSION)
+    string(REPLACE "@VERSION@" "${VERSION}" want_out "${want_out}")
   endif()
 endif()
 if(EXISTS ${CASE_DIR}/stderr.regex)
   file(READ ${CASE_DIR}/stderr.regex want_err)
   string(REGEX REPLACE "\n$" "" want_err "${want_err}")
   string(REPLACE "\\n" "\n" want_err "${want_err}")
-  if(NOT "${err}" MATCHES "${want_err}")
-    string(APPEND failures "stderr does not match stderr.regex: ${want_err}\n")
-  endif()
 endif()
 
-string(REPLACE ";" " " shown "${EMULATOR} ${KERF} ${args}")
-if(NOT failures STREQUAL "")
-  message(FATAL_ERROR "case ${CASE_DIR}\ncommand: ${shown}\n${failures}--- stderr:\n${err}")
-endif()
-message(STATUS "ok: ${shown}\n${err}")
+set(work_dir ${CASE_DIR})
+set(case_name ${CASE_DIR})
+include(${CMAKE_CURRENT_LIST_DIR}/run_and_check.cmake)

@@ -11,7 +11,7 @@ target_link_libraries(kerf_differential_tests PRIVATE kerf_io kerf_test_support 
 target_compile_definitions(kerf_differential_tests PRIVATE
   KERF_TEST_DATA_DIR="${CMAKE_CURRENT_SOURCE_DIR}/../data")
 kerf_warnings(kerf_differential_tests)
-gtest_discover_tests(kerf_differential_tests DISCOVERY_MODE PRE_TEST)
+kerf_gtests(kerf_differential_tests component)
 
 # The band fitter against the band referee (checker and twin) in tests/support.
 add_executable(kerf_band_tests
@@ -24,7 +24,7 @@ target_include_directories(kerf_band_tests PRIVATE ${PROJECT_SOURCE_DIR}/tests/s
 target_compile_definitions(kerf_band_tests PRIVATE
   KERF_TEST_DATA_DIR="${CMAKE_CURRENT_SOURCE_DIR}/../data")
 kerf_warnings(kerf_band_tests)
-gtest_discover_tests(kerf_band_tests DISCOVERY_MODE PRE_TEST)
+kerf_gtests(kerf_band_tests component)
 
 # The biarc fitter against its referee (biarc checker and twin) in tests/support.
 add_executable(kerf_biarc_tests
@@ -35,7 +35,7 @@ add_executable(kerf_biarc_tests
 target_link_libraries(kerf_biarc_tests PRIVATE kerf_io kerf_test_support GTest::gtest_main)
 target_include_directories(kerf_biarc_tests PRIVATE ${PROJECT_SOURCE_DIR}/tests/support)
 kerf_warnings(kerf_biarc_tests)
-gtest_discover_tests(kerf_biarc_tests DISCOVERY_MODE PRE_TEST)
+kerf_gtests(kerf_biarc_tests component)
 
 # The paper's biarc pair test (visibility regions, Lemmas 3.3-3.7) against
 # the exact joint sets.
@@ -46,4 +46,4 @@ add_executable(kerf_biarc_paper_tests
 target_link_libraries(kerf_biarc_paper_tests PRIVATE kerf_io kerf_test_support GTest::gtest_main)
 target_include_directories(kerf_biarc_paper_tests PRIVATE ${PROJECT_SOURCE_DIR}/tests/support)
 kerf_warnings(kerf_biarc_paper_tests)
-gtest_discover_tests(kerf_biarc_paper_tests DISCOVERY_MODE PRE_TEST)
+kerf_gtests(kerf_biarc_paper_tests component)
