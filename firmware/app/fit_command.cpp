@@ -12,7 +12,9 @@
 #include "job/fit_write.hpp"
 #include "kerf/fit/fit.hpp"
 
-namespace kerf::cli {
+namespace kerf::app {
+
+using io::kExitOk;
 
 namespace {
 
@@ -26,7 +28,7 @@ bool parse_method(const std::string& text, fit::Method& method) {
 
 }  // namespace
 
-CLI::App* add_fit_command(CLI::App& app, FitOptions& opts) {
+CLI::App* add_fit_command(CLI::App& app, job::FitOptions& opts) {
   CLI::App* fit = add_fitting_command(
       app, "fit", "Fit the fewest arcs within --tol of the points, or the smallest tol for --pieces K",
       opts.tol);
@@ -88,74 +90,74 @@ CLI::App* add_fit_command(CLI::App& app, FitOptions& opts) {
 namespace {
 
 // Checks the options that do not depend on the input; 0 when they are fine.
-int check_options(const FitOptions& opts, std::optional<Criterion> criterion, std::optional<Numeric> numeric,
-                  fit::Method& method, std::uint32_t& pieces, double& tol) {
+int check_options(const job::FitOptions& opts, std::optional<job::Criterion> criterion,
+                  std::optional<job::Numeric> numeric, fit::Method& method, std::uint32_t& pieces, double& tol) {
   std::string error;
-  const bool band = criterion == Criterion::band;
-  if (!band && criterion != Criterion::vertex) return usage_error(unknown_criterion(opts.criterion));
+  const bool band = criterion == job::Criterion::band;
+  if (!band && criterion != job::Criterion::vertex) return io::usage_error(job::unknown_criterion(opts.criterion));
   if (!parse_method(opts.method, method))
-    return usage_error("--method: unknown method " + quoted(opts.method) +
-                       " (expected optimal, esgi-max or esgi-mean)");
+    return io::usage_error("--method: unknown method " + io::quoted(opts.method) +
+                           " (expected optimal, esgi-max or esgi-mean)");
   if (band && method != fit::Method::optimal)
-    return usage_error("--method: " + quoted(opts.method) +
-                       " is a vertex-criterion rule; --criterion band is always optimal");
+    return io::usage_error("--method: " + io::quoted(opts.method) +
+                           " is a vertex-criterion rule; --criterion band is always optimal");
   if (!band && (!opts.tol_left.empty() || !opts.tol_right.empty()))
-    return usage_error("--tol-left and --tol-right need --criterion band");
-  if (!numeric) return usage_error(unknown_numeric(opts.numeric));
+    return io::usage_error("--tol-left and --tol-right need --criterion band");
+  if (!numeric) return io::usage_error(job::unknown_numeric(opts.numeric));
   if (!opts.tie_break.empty() && opts.tie_break != "smallest" && opts.tie_break != "none") {
     std::string msg = "--tie-break: expected smallest or none, got ";  // += (armhf -Wrestrict)
-    msg += quoted(opts.tie_break);
-    return usage_error(msg);
+    msg += io::quoted(opts.tie_break);
+    return io::usage_error(msg);
   }
   if (opts.tie_break == "none" && !opts.pieces.empty())
-    return usage_error("--tie-break none: needs --tol (--pieces finds the smallest tol)");
+    return io::usage_error("--tie-break none: needs --tol (--pieces finds the smallest tol)");
   if (!opts.pieces.empty()) {
-    if (!opts.tol.empty()) return usage_error("--tol and --pieces cannot be used together");
-    if (!parse_pieces(opts.pieces, pieces, error)) return usage_error(error);
+    if (!opts.tol.empty()) return io::usage_error("--tol and --pieces cannot be used together");
+    if (!io::parse_pieces(opts.pieces, pieces, error)) return io::usage_error(error);
   } else if (!band && opts.tol.empty()) {
-    return usage_error("--tol: required (or give --pieces)");
+    return io::usage_error("--tol: required (or give --pieces)");
   }
-  if (!opts.tol.empty() && !parse_length("--tol", opts.tol, false, tol, error))
-    return usage_error(error);
+  if (!opts.tol.empty() && !io::parse_length("--tol", opts.tol, false, tol, error))
+    return io::usage_error(error);
   double side = 0.0;
-  if (!opts.tol_left.empty() && !parse_length("--tol-left", opts.tol_left, true, side, error))
-    return usage_error(error);
-  if (!opts.tol_right.empty() && !parse_length("--tol-right", opts.tol_right, true, side, error))
-    return usage_error(error);
+  if (!opts.tol_left.empty() && !io::parse_length("--tol-left", opts.tol_left, true, side, error))
+    return io::usage_error(error);
+  if (!opts.tol_right.empty() && !io::parse_length("--tol-right", opts.tol_right, true, side, error))
+    return io::usage_error(error);
   return kExitOk;
 }
 
 }  // namespace
 
-int run_fit(const FitOptions& opts) {
+int run_fit(const job::FitOptions& opts) {
   // Unknown names stay empty here; each check below refuses them in its own words.
-  const std::optional<Criterion> criterion = parse_criterion(opts.criterion);
-  const std::optional<Numeric> numeric = parse_numeric(opts.numeric);
-  if (opts.stream || !opts.window.empty()) return run_fit_stream(opts, criterion, numeric);
-  if (!opts.extent.empty()) return usage_error("--extent needs --stream");
-  if (criterion == Criterion::biarc) {
-    if (!numeric) return usage_error(unknown_numeric(opts.numeric));
-    if (!opts.tie_break.empty()) return usage_error("--tie-break: for the vertex and band criteria");
+  const std::optional<job::Criterion> criterion = job::parse_criterion(opts.criterion);
+  const std::optional<job::Numeric> numeric = job::parse_numeric(opts.numeric);
+  if (opts.stream || !opts.window.empty()) return job::run_fit_stream(opts, criterion, numeric);
+  if (!opts.extent.empty()) return io::usage_error("--extent needs --stream");
+  if (criterion == job::Criterion::biarc) {
+    if (!numeric) return io::usage_error(job::unknown_numeric(opts.numeric));
+    if (!opts.tie_break.empty()) return io::usage_error("--tie-break: for the vertex and band criteria");
     return run_fit_biarc(opts, *numeric);
   }
   if (!opts.tangents.empty() || opts.tangent_format != "vector")
-    return usage_error("--tangents and --tangent-format need --criterion biarc");
+    return io::usage_error("--tangents and --tangent-format need --criterion biarc");
   fit::Method method{};
   std::uint32_t pieces = 0;
   double tol = 0.0;
   if (const int rc = check_options(opts, criterion, numeric, method, pieces, tol); rc != kExitOk) return rc;
   double feed = 1000.0;
-  if (const int rc = check_output_options(opts, feed); rc != kExitOk) return rc;
+  if (const int rc = job::check_output_options(opts, feed); rc != kExitOk) return rc;
 
-  FileFit f;
+  job::FileFit f;
   f.criterion = *criterion;
-  f.fixed = numeric == Numeric::fixed;
+  f.fixed = numeric == job::Numeric::fixed;
   f.method = method;
   f.pieces = pieces;
   f.tol = tol;
   f.tie_break = opts.tie_break != "none";
   f.feed = feed;
-  return fit_file(opts, f);
+  return job::fit_file(opts, f);
 }
 
-}  // namespace kerf::cli
+}  // namespace kerf::app

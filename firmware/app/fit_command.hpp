@@ -10,15 +10,15 @@ namespace CLI {
 class App;
 }
 
-namespace kerf::cli {
+namespace kerf::app {
 
 // `kerf fit --criterion biarc` (app/fit_biarc_command.cpp).
-int run_fit_biarc(const FitOptions& opts, Numeric numeric);
+int run_fit_biarc(const job::FitOptions& opts, job::Numeric numeric);
 
 // Adds the `fit` subcommand to app, storing into opts.
-CLI::App* add_fit_command(CLI::App& app, FitOptions& opts);
+CLI::App* add_fit_command(CLI::App& app, job::FitOptions& opts);
 
 // Runs it; returns the exit code. Output goes to stdout only on success.
-int run_fit(const FitOptions& opts);
+int run_fit(const job::FitOptions& opts);
 
-}  // namespace kerf::cli
+}  // namespace kerf::app

@@ -2,7 +2,7 @@
 
 #include <CLI/CLI.hpp>
 
-namespace kerf::cli {
+namespace kerf::app {
 
 CLI::App* add_fitting_command(CLI::App& app, const std::string& name, const std::string& help,
                               std::string& tol) {
@@ -26,4 +26,4 @@ CLI::Option* add_points_file(CLI::App* command, std::string& file) {
       ->required();
 }
 
-}  // namespace kerf::cli
+}  // namespace kerf::app

@@ -9,7 +9,7 @@ class App;
 class Option;
 }
 
-namespace kerf::cli {
+namespace kerf::app {
 
 // A command that fits points within --tol: the subcommand, --tol first.
 CLI::App* add_fitting_command(CLI::App& app, const std::string& name, const std::string& help,
@@ -17,4 +17,4 @@ CLI::App* add_fitting_command(CLI::App& app, const std::string& name, const std:
 CLI::Option* add_numeric_option(CLI::App* command, std::string& numeric);
 CLI::Option* add_points_file(CLI::App* command, std::string& file);
 
-}  // namespace kerf::cli
+}  // namespace kerf::app

@@ -20,16 +20,18 @@
 #endif
 
 int main(int argc, char** argv) {
-  using namespace kerf::cli;
+  using namespace kerf::app;
+  using kerf::io::kExitFailure;
+  using kerf::io::kExitUsage;
   try {
     CLI::App app("kerf: fit circular arcs to the points of a cut path", "kerf");
     app.set_version_flag("--version", "kerf " KERF_VERSION);
     app.require_subcommand(1);
-    FitOptions fit_opts;
+    kerf::job::FitOptions fit_opts;
     CLI::App* fit = add_fit_command(app, fit_opts);
     PlanOptions plan_opts;
     CLI::App* plan = add_plan_command(app, plan_opts);
-    SimOptions sim_opts;
+    kerf::simulated::SimOptions sim_opts;
     CLI::App* sim = add_sim_command(app, sim_opts);
     RunOptions run_opts;
     CLI::App* run = add_run_command(app, run_opts);
@@ -47,7 +49,7 @@ int main(int argc, char** argv) {
     if (plan->parsed()) return run_plan(plan_opts);
     if (weld->parsed()) return run_weld(weld_opts);
 #if KERF_HAVE_MODBUS
-    if (sim->parsed()) return run_sim(sim_opts);
+    if (sim->parsed()) return kerf::simulated::run_sim(sim_opts);
     if (run->parsed()) return run_run(run_opts);
 #else
     if (sim->parsed() || run->parsed()) {

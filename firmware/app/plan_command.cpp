@@ -9,7 +9,7 @@
 #include "io/options.hpp"
 #include "job/plan_path.hpp"
 
-namespace kerf::cli {
+namespace kerf::app {
 
 namespace {
 
@@ -46,24 +46,24 @@ CLI::App* add_plan_command(CLI::App& app, PlanOptions& opts) {
 int run_plan(const PlanOptions& opts) {
   std::string error;
   double tol = 0, feed = 0, period = 0, accel = 0, corner = 0, cpm = 0;
-  if (!parse_length("--tol", opts.tol, false, tol, error)) return usage_error(error);
-  const std::optional<Criterion> criterion = parse_criterion(opts.criterion);
-  if (!criterion) return usage_error(unknown_criterion(opts.criterion));
-  const std::optional<Numeric> numeric = parse_numeric(opts.numeric);
-  if (!numeric) return usage_error(unknown_numeric(opts.numeric));
-  if (!parse_length("--feed", opts.feed, false, feed, error) ||
-      !parse_length("--period", opts.period, false, period, error) ||
-      !parse_length("--accel", opts.accel, false, accel, error) ||
-      !parse_length("--corner", opts.corner, true, corner, error) ||
-      !parse_length("--counts-per-mm", opts.counts_per_mm, false, cpm, error))
-    return usage_error(error);
+  if (!io::parse_length("--tol", opts.tol, false, tol, error)) return io::usage_error(error);
+  const std::optional<job::Criterion> criterion = job::parse_criterion(opts.criterion);
+  if (!criterion) return io::usage_error(job::unknown_criterion(opts.criterion));
+  const std::optional<job::Numeric> numeric = job::parse_numeric(opts.numeric);
+  if (!numeric) return io::usage_error(job::unknown_numeric(opts.numeric));
+  if (!io::parse_length("--feed", opts.feed, false, feed, error) ||
+      !io::parse_length("--period", opts.period, false, period, error) ||
+      !io::parse_length("--accel", opts.accel, false, accel, error) ||
+      !io::parse_length("--corner", opts.corner, true, corner, error) ||
+      !io::parse_length("--counts-per-mm", opts.counts_per_mm, false, cpm, error))
+    return io::usage_error(error);
   double jerk = 0;
-  if (!opts.jerk.empty() && !parse_length("--jerk", opts.jerk, true, jerk, error))
-    return usage_error(error);
-  if (corner > 180) return usage_error("--corner: must be at most 180, got " + opts.corner);
-  if (opts.trace.empty()) return usage_error("--trace: required");
+  if (!opts.jerk.empty() && !io::parse_length("--jerk", opts.jerk, true, jerk, error))
+    return io::usage_error(error);
+  if (corner > 180) return io::usage_error("--corner: must be at most 180, got " + opts.corner);
+  if (opts.trace.empty()) return io::usage_error("--trace: required");
 
-  PlanRun run;
+  job::PlanRun run;
   run.file = opts.file;
   run.criterion = *criterion;
   run.numeric = *numeric;
@@ -75,7 +75,7 @@ int run_plan(const PlanOptions& opts) {
   run.config.corner_angle = corner * kPi / 180;
   run.config.counts_per_mm = {cpm, cpm};
   run.trace = opts.trace;
-  return plan_file(run);
+  return job::plan_file(run);
 }
 
-}  // namespace kerf::cli
+}  // namespace kerf::app

@@ -9,7 +9,7 @@ namespace CLI {
 class App;
 }
 
-namespace kerf::cli {
+namespace kerf::app {
 
 // The options as given, still text, checked by run_plan so that every
 // message has the "kerf: --option: ..." form.
@@ -33,4 +33,4 @@ CLI::App* add_plan_command(CLI::App& app, PlanOptions& opts);
 // Runs it; returns the exit code (see fit_command.hpp).
 int run_plan(const PlanOptions& opts);
 
-}  // namespace kerf::cli
+}  // namespace kerf::app

@@ -16,7 +16,10 @@
 #include "kerf/hal/gpio/gpiod_gpio.hpp"
 #endif
 
-namespace kerf::cli {
+namespace kerf::app {
+
+using io::kExitFailure;
+using io::kExitUsage;
 
 namespace {
 
@@ -44,9 +47,9 @@ std::unique_ptr<hal::Gpio> open_gpio(const config::Config& cfg, bool simulated, 
 
 std::unique_ptr<hal::SegmentLink> open_link(const config::Config& cfg, std::string& error) {
   if (cfg.link.kind == config::Link::Kind::can) {
-    control::CanSimOptions o = control::can_sim_options(cfg);
+    simulated::CanSimOptions o = simulated::can_sim_options(cfg);
     o.iface = cfg.link.iface;
-    return control::open_machine_can_link(o, error);
+    return simulated::open_machine_can_link(o, error);
   }
   hal::ModbusConfig lc;
   lc.transport = cfg.link.kind == config::Link::Kind::modbus_rtu ? hal::ModbusConfig::Transport::rtu
@@ -72,12 +75,12 @@ int run_run(const RunOptions& opts) {
     std::fprintf(stderr, "%s\n", error.c_str());
     return kExitUsage;
   }
-  if (opts.resume && opts.journal.empty()) return usage_error("--resume: needs --journal FILE");
+  if (opts.resume && opts.journal.empty()) return io::usage_error("--resume: needs --journal FILE");
   io::PointFile in;
-  if (!read_job(opts.job, cfg.fit.criterion, in)) return kExitUsage;
-  FittedJob fitted;
-  if (const int rc = fit_paths_or_say(in, cfg.fit.criterion, cfg.fit.tol, cfg.cut.feed / 60.0, fitted,
-                                      cfg.fit.numeric);
+  if (!job::read_job(opts.job, cfg.fit.criterion, in)) return kExitUsage;
+  control::FittedJob fitted;
+  if (const int rc = control::fit_paths_or_say(in, cfg.fit.criterion, cfg.fit.tol, cfg.cut.feed / 60.0, fitted,
+                                               cfg.fit.numeric);
       rc != 0)
     return rc;
   // The devices before the journal: a new journal replaces the old one, which
@@ -94,8 +97,8 @@ int run_run(const RunOptions& opts) {
   }
   std::unique_ptr<control::Journal> journal;
   control::ResumePoint from;
-  if (!open_journal(opts.journal, opts.resume, fitted.job, journal, from)) return kExitUsage;
+  if (!control::open_journal(opts.journal, opts.resume, fitted.job, journal, from)) return kExitUsage;
   return control::run_on_machine(fitted.job, cfg, *link, *gpio, journal.get(), from, opts.resume, opts.report);
 }
 
-}  // namespace kerf::cli
+}  // namespace kerf::app

@@ -8,10 +8,10 @@
 
 #include "app/run_options.hpp"
 
-namespace kerf::cli {
+namespace kerf::app {
 
 // Returns the exit code: 0 done, 1 stopped (fault, E-stop, signal) or a
 // device failed, 2 bad options, config or job.
 int run_run(const RunOptions& opts);
 
-}  // namespace kerf::cli
+}  // namespace kerf::app

@@ -4,7 +4,7 @@
 
 #include "app/run_options.hpp"
 
-namespace kerf::cli {
+namespace kerf::app {
 
 CLI::App* add_run_command(CLI::App& app, RunOptions& o) {
   CLI::App* r = app.add_subcommand(
@@ -31,4 +31,4 @@ CLI::Option* add_job_file(CLI::App* command, const std::string& name, std::strin
   return command->add_option(name, file, "Point file (paths separated by blank lines); - for stdin");
 }
 
-}  // namespace kerf::cli
+}  // namespace kerf::app

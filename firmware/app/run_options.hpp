@@ -8,7 +8,7 @@ class App;
 class Option;
 }
 
-namespace kerf::cli {
+namespace kerf::app {
 
 struct RunOptions {
   std::string config;   // required
@@ -27,4 +27,4 @@ void add_report_option(CLI::App* command, std::string& report);
 // The job, positional `name`; the caller gives its type name.
 CLI::Option* add_job_file(CLI::App* command, const std::string& name, std::string& file);
 
-}  // namespace kerf::cli
+}  // namespace kerf::app

@@ -5,9 +5,9 @@
 #include "app/run_options.hpp"
 #include "app/sim_options.hpp"
 
-namespace kerf::cli {
+namespace kerf::app {
 
-CLI::App* add_sim_command(CLI::App& app, SimOptions& o) {
+CLI::App* add_sim_command(CLI::App& app, simulated::SimOptions& o) {
   CLI::App* s = app.add_subcommand(
       "sim",
       "Run a job on the simulated machine (motion board over Modbus, torch and inputs on simulated GPIO). "
@@ -44,4 +44,4 @@ CLI::App* add_sim_command(CLI::App& app, SimOptions& o) {
   return s;
 }
 
-}  // namespace kerf::cli
+}  // namespace kerf::app

@@ -8,8 +8,8 @@ namespace CLI {
 class App;
 }
 
-namespace kerf::cli {
+namespace kerf::app {
 
-CLI::App* add_sim_command(CLI::App& app, SimOptions& opts);
+CLI::App* add_sim_command(CLI::App& app, simulated::SimOptions& opts);
 
-}  // namespace kerf::cli
+}  // namespace kerf::app

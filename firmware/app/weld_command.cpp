@@ -9,7 +9,7 @@
 #include "io/options.hpp"
 #include "weld/weld.hpp"
 
-namespace kerf::cli {
+namespace kerf::app {
 
 CLI::App* add_weld_command(CLI::App& app, WeldCommandOptions& opts) {
   CLI::App* weld = app.add_subcommand(
@@ -39,20 +39,20 @@ CLI::App* add_weld_command(CLI::App& app, WeldCommandOptions& opts) {
 }
 
 int run_weld(const WeldCommandOptions& opts) {
-  WeldOptions w;
+  weld::WeldOptions w;
   std::string error;
-  if (!parse_length("--tol", opts.tol, false, w.tol_mm, error)) return usage_error(error);
-  const std::optional<Criterion> criterion = parse_criterion(opts.criterion);
+  if (!io::parse_length("--tol", opts.tol, false, w.tol_mm, error)) return io::usage_error(error);
+  const std::optional<job::Criterion> criterion = job::parse_criterion(opts.criterion);
   if (!criterion)
-    return usage_error("--criterion: unknown criterion " + quoted(opts.criterion) +
-                       " (expected vertex or band)");
+    return io::usage_error("--criterion: unknown criterion " + io::quoted(opts.criterion) +
+                           " (expected vertex or band)");
   w.criterion = *criterion;
   if (!opts.decimals.empty()) {
     char* end = nullptr;
     errno = 0;
     const long d = std::strtol(opts.decimals.c_str(), &end, 10);
     if (errno != 0 || *end != '\0' || d < 0 || d > 9)
-      return usage_error("--decimals: expected a whole number from 0 to 9, got " + quoted(opts.decimals));
+      return io::usage_error("--decimals: expected a whole number from 0 to 9, got " + io::quoted(opts.decimals));
     w.decimals = static_cast<int>(d);
   }
   w.split_turns = !opts.no_split;
@@ -61,11 +61,11 @@ int run_weld(const WeldCommandOptions& opts) {
     errno = 0;
     const long n = std::strtol(opts.threads.c_str(), &end, 10);
     if (errno != 0 || end == opts.threads.c_str() || *end != '\0' || n < 0 || n > 1024)
-      return usage_error("--threads: expected a whole number from 0 (one per core) to 1024, got " +
-                         quoted(opts.threads));
+      return io::usage_error("--threads: expected a whole number from 0 (one per core) to 1024, got " +
+                             io::quoted(opts.threads));
     w.threads = static_cast<int>(n);
   }
-  return weld_file(opts.in, opts.out, w);
+  return weld::weld_file(opts.in, opts.out, w);
 }
 
-}  // namespace kerf::cli
+}  // namespace kerf::app

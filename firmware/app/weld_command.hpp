@@ -8,7 +8,7 @@ namespace CLI {
 class App;
 }
 
-namespace kerf::cli {
+namespace kerf::app {
 
 struct WeldCommandOptions {
   std::string tol;
@@ -25,4 +25,4 @@ CLI::App* add_weld_command(CLI::App& app, WeldCommandOptions& opts);
 // Returns the exit code: 0, 1 (the fit or the output failed), 2 (bad options or input).
 int run_weld(const WeldCommandOptions& opts);
 
-}  // namespace kerf::cli
+}  // namespace kerf::app

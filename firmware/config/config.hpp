@@ -44,8 +44,8 @@ struct Link {
 };
 
 struct Fit {
-  cli::Criterion criterion = cli::Criterion::band;
-  cli::Numeric numeric = cli::Numeric::floating;  // the fit's scalar type, for every criterion
+  job::Criterion criterion = job::Criterion::band;
+  job::Numeric numeric = job::Numeric::floating;  // the fit's scalar type, for every criterion
   double tol = 0.025;              // mm, > 0
 };
 

@@ -234,8 +234,8 @@ void read_name(TableReader& r, const char* key, std::optional<T> (*parse)(std::s
 }  // namespace
 
 void read_fit(TableReader& r, Fit& fit) {
-  read_name(r, "criterion", cli::parse_criterion, fit.criterion, "criterion", "vertex, band or biarc");
-  read_name(r, "numeric", cli::parse_numeric, fit.numeric, "type", "double or fixed");
+  read_name(r, "criterion", job::parse_criterion, fit.criterion, "criterion", "vertex, band or biarc");
+  read_name(r, "numeric", job::parse_numeric, fit.numeric, "type", "double or fixed");
   r.positive("tol", fit.tol);
   r.finish();
 }

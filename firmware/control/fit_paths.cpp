@@ -4,10 +4,10 @@
 
 #include <cstdio>
 
-namespace kerf::cli {
+namespace kerf::control {
 
-bool fit_paths(const io::PointFile& in, Criterion criterion, double tol, double feed_mm_s,
-               FittedJob& out, std::string& error, Status& status, Numeric numeric) {
+bool fit_paths(const io::PointFile& in, job::Criterion criterion, double tol, double feed_mm_s,
+               FittedJob& out, std::string& error, Status& status, job::Numeric numeric) {
   out = FittedJob{};
   std::vector<std::size_t> begins = in.path_begin;
   if (begins.empty()) begins.push_back(0);
@@ -21,7 +21,7 @@ bool fit_paths(const io::PointFile& in, Criterion criterion, double tol, double 
       tols.assign(in.tols.begin() + static_cast<std::ptrdiff_t>(b), in.tols.begin() + static_cast<std::ptrdiff_t>(e));
     std::vector<fit::Piece<double>> pieces;
     std::string why;
-    if (!fit_job(pts, tols, tol, criterion, pieces, why, status, numeric)) {
+    if (!job::fit_job(pts, tols, tol, criterion, pieces, why, status, numeric)) {
       error = "path " + std::to_string(p + 1) + " (line " +
               std::to_string(b < in.point_lines.size() ? in.point_lines[b] : 0) + "): " + why;
       return false;
@@ -46,8 +46,8 @@ bool fit_paths(const io::PointFile& in, Criterion criterion, double tol, double 
   return true;
 }
 
-int fit_paths_or_say(const io::PointFile& in, Criterion criterion, double tol, double feed_mm_s,
-                     FittedJob& out, Numeric numeric) {
+int fit_paths_or_say(const io::PointFile& in, job::Criterion criterion, double tol, double feed_mm_s,
+                     FittedJob& out, job::Numeric numeric) {
   std::string error;
   Status status = Status::ok;
   if (fit_paths(in, criterion, tol, feed_mm_s, out, error, status, numeric)) return 0;
@@ -71,4 +71,4 @@ bool open_journal(const std::string& path, bool resume, const control::Job& job,
   return true;
 }
 
-}  // namespace kerf::cli
+}  // namespace kerf::control

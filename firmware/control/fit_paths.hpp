@@ -14,7 +14,7 @@
 #include "kerf/core/status.hpp"
 #include "kerf/fit/fit.hpp"
 
-namespace kerf::cli {
+namespace kerf::control {
 
 struct FittedJob {
   control::Job job;
@@ -24,14 +24,14 @@ struct FittedJob {
 
 // On failure returns false with `error` ("path N (line L): reason") and `status`.
 // numeric: the fit's scalar type (job/criterion.hpp).
-bool fit_paths(const io::PointFile& in, Criterion criterion, double tol, double feed_mm_s,
+bool fit_paths(const io::PointFile& in, job::Criterion criterion, double tol, double feed_mm_s,
                FittedJob& out, std::string& error, Status& status,
-               Numeric numeric = Numeric::floating);
+               job::Numeric numeric = job::Numeric::floating);
 
 // fit_paths for a command: on failure prints "kerf: FILE: reason" and
 // returns the exit code (2 for bad input, 1 otherwise); 0 on success.
-int fit_paths_or_say(const io::PointFile& in, Criterion criterion, double tol, double feed_mm_s,
-                     FittedJob& out, Numeric numeric = Numeric::floating);
+int fit_paths_or_say(const io::PointFile& in, job::Criterion criterion, double tol, double feed_mm_s,
+                     FittedJob& out, job::Numeric numeric = job::Numeric::floating);
 
 // The job's journal for a run: none (empty path; the run starts at the
 // job's beginning), a new one, or with `resume` the one a previous run left,
@@ -40,4 +40,4 @@ int fit_paths_or_say(const io::PointFile& in, Criterion criterion, double tol, d
 bool open_journal(const std::string& path, bool resume, const control::Job& job,
                   std::unique_ptr<control::Journal>& out, control::ResumePoint& from);
 
-}  // namespace kerf::cli
+}  // namespace kerf::control

@@ -23,8 +23,8 @@ extern "C" void on_signal(int sig) { g_signal = sig; }
 
 int run_on_machine(const Job& job, const config::Config& cfg, hal::SegmentLink& link, hal::Gpio& gpio,
                    Journal* journal, const ResumePoint& from, bool resumed, const std::string& report) {
-  using cli::kExitFailure;
-  using cli::kExitOk;
+  using io::kExitFailure;
+  using io::kExitOk;
   const hal::RtSetup rt = hal::rt_setup(cfg.rt.priority, cfg.rt.lock_memory);
   if (!rt.warning.empty()) std::fprintf(stderr, "kerf: run: %s\n", rt.warning.c_str());
   struct sigaction sa {};

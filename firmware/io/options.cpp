@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 
-namespace kerf::cli {
+namespace kerf::io {
 
 std::string quoted(const std::string& s) { return "\"" + s + "\""; }
 
@@ -59,4 +59,4 @@ bool parse_pieces(const std::string& text, std::uint32_t& pieces, std::string& e
   return true;
 }
 
-}  // namespace kerf::cli
+}  // namespace kerf::io

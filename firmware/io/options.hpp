@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <string>
 
-namespace kerf::cli {
+namespace kerf::io {
 
 // Exit codes of the kerf command.
 inline constexpr int kExitOk = 0;
@@ -25,4 +25,4 @@ bool parse_length(const std::string& name, const std::string& text, bool allow_z
 // --pieces: a whole number >= 1.
 bool parse_pieces(const std::string& text, std::uint32_t& pieces, std::string& error);
 
-}  // namespace kerf::cli
+}  // namespace kerf::io

@@ -5,7 +5,7 @@
 
 #include "io/options.hpp"
 
-namespace kerf::cli {
+namespace kerf::job {
 
 bool band_widths(const WidthOptions& opts, const io::PointFile& in,
                  std::vector<fit::BandWidth<double>>& out, std::string& error) {
@@ -31,7 +31,7 @@ bool band_widths(const WidthOptions& opts, const io::PointFile& in,
     hi_y = std::max(hi_y, p.y);
   }
   double base = std::hypot(hi_x - lo_x, hi_y - lo_y);
-  if (!opts.tol.empty() && !parse_length("--tol", opts.tol, false, base, error)) return false;
+  if (!opts.tol.empty() && !io::parse_length("--tol", opts.tol, false, base, error)) return false;
   if (opts.tol.empty() && !opts.by_pieces && (opts.left.empty() || opts.right.empty())) {
     error = opts.left.empty() && opts.right.empty()
                 ? "--tol: required (or give --tol-left and --tol-right, or --pieces)"
@@ -40,8 +40,8 @@ bool band_widths(const WidthOptions& opts, const io::PointFile& in,
   }
   double left = base;
   double right = base;
-  if (!opts.left.empty() && !parse_length("--tol-left", opts.left, true, left, error)) return false;
-  if (!opts.right.empty() && !parse_length("--tol-right", opts.right, true, right, error))
+  if (!opts.left.empty() && !io::parse_length("--tol-left", opts.left, true, left, error)) return false;
+  if (!opts.right.empty() && !io::parse_length("--tol-right", opts.right, true, right, error))
     return false;
   if (!(left + right > 0.0)) {
     error = "--tol-left and --tol-right cannot both be 0";
@@ -51,4 +51,4 @@ bool band_widths(const WidthOptions& opts, const io::PointFile& in,
   return true;
 }
 
-}  // namespace kerf::cli
+}  // namespace kerf::job

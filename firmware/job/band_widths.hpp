@@ -8,7 +8,7 @@
 #include "io/point_file.hpp"
 #include "kerf/fit/band/region.hpp"
 
-namespace kerf::cli {
+namespace kerf::job {
 
 struct WidthOptions {
   std::string tol;    // both sides
@@ -23,4 +23,4 @@ struct WidthOptions {
 bool band_widths(const WidthOptions& opts, const io::PointFile& in,
                  std::vector<fit::BandWidth<double>>& out, std::string& error);
 
-}  // namespace kerf::cli
+}  // namespace kerf::job

@@ -6,7 +6,7 @@
 #include "io/biarc_storage.hpp"
 #include "kerf/core/fixed_convert.hpp"
 
-namespace kerf::cli {
+namespace kerf::job {
 
 namespace {
 
@@ -151,4 +151,4 @@ std::string check_biarcs(const std::vector<Vec2<double>>& pts,
   return {};
 }
 
-}  // namespace kerf::cli
+}  // namespace kerf::job

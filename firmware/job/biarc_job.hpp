@@ -10,7 +10,7 @@
 #include "kerf/core/status.hpp"
 #include "kerf/fit/biarc.hpp"
 
-namespace kerf::cli {
+namespace kerf::job {
 
 // Fits one path. tangents: one unit vector per point, or empty to estimate
 // them (fit/biarc/tangent.hpp). On failure returns false with `error` (no "kerf: "
@@ -37,4 +37,4 @@ std::string check_biarcs(const std::vector<Vec2<double>>& pts,
                          const std::vector<Vec2<double>>& tangents, double tol,
                          const std::vector<fit::BiarcPiece<double>>& pieces, double slack = 0.0);
 
-}  // namespace kerf::cli
+}  // namespace kerf::job

@@ -5,7 +5,7 @@
 
 #include "kerf/geom/segment.hpp"
 
-namespace kerf::cli {
+namespace kerf::job {
 
 namespace {
 
@@ -99,4 +99,4 @@ std::string check_fit(Span<const Vec2<double>> pts, Span<const fit::Piece<double
   return {};
 }
 
-}  // namespace kerf::cli
+}  // namespace kerf::job

@@ -13,7 +13,7 @@
 #include "kerf/core/span.hpp"
 #include "kerf/fit/fit.hpp"
 
-namespace kerf::cli {
+namespace kerf::job {
 
 // Empty when the fit is sound, else what is wrong. `tol` is the tolerance the
 // fit must meet; a relative 1e-6 of it (and 1e-12 of the points' extent) is
@@ -21,4 +21,4 @@ namespace kerf::cli {
 std::string check_fit(Span<const Vec2<double>> pts, Span<const fit::Piece<double>> pieces,
                       double tol);
 
-}  // namespace kerf::cli
+}  // namespace kerf::job

@@ -8,7 +8,7 @@
 #include <string>
 #include <string_view>
 
-namespace kerf::cli {
+namespace kerf::job {
 
 // vertex: arcs through input points; band: the whole arc inside the
 // tolerance band; biarc: G1 biarcs inside the band (job/fit_job.hpp).
@@ -49,4 +49,4 @@ inline std::string unknown_numeric(const std::string& text) {
   return "--numeric: unknown type \"" + text + "\" (expected double or fixed)";
 }
 
-}  // namespace kerf::cli
+}  // namespace kerf::job

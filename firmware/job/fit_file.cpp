@@ -20,7 +20,11 @@
 #include "job/fit_write.hpp"
 #include "kerf/fit/band.hpp"
 
-namespace kerf::cli {
+namespace kerf::job {
+
+using io::kExitFailure;
+using io::kExitOk;
+using io::kExitUsage;
 
 int fit_file(const FitOptions& opts, const FileFit& f) {
   const bool band = f.criterion == Criterion::band;
@@ -35,7 +39,7 @@ int fit_file(const FitOptions& opts, const FileFit& f) {
   if (band) {
     std::string error;
     const WidthOptions w{opts.tol, opts.tol_left, opts.tol_right, by_pieces};
-    if (!band_widths(w, in, widths, error)) return usage_error(error);
+    if (!band_widths(w, in, widths, error)) return io::usage_error(error);
   }
 
   const std::size_t n = in.points.size();
@@ -45,8 +49,8 @@ int fit_file(const FitOptions& opts, const FileFit& f) {
   std::vector<std::size_t> begins = in.path_begin;
   if (begins.empty()) begins.push_back(0);
   if (by_pieces && begins.size() > 1)
-    return usage_error("--pieces: " + in.file + " holds " + std::to_string(begins.size()) +
-                       " paths; a piece budget is for one path (use --tol)");
+    return io::usage_error("--pieces: " + in.file + " holds " + std::to_string(begins.size()) +
+                           " paths; a piece budget is for one path (use --tol)");
   std::vector<fit::Piece<double>> piece_store(n - 1);
   fit::Fit<double> total{};
   std::size_t used = 0;
@@ -159,10 +163,10 @@ int fit_biarc_file(const FitOptions& opts, bool fixed, double tol, bool estimate
   io::PointFile in;
   if (!read_job(opts.file, Criterion::biarc, in, {true, opts.tangent_format == "angle"})) return kExitUsage;
   if (opts.tangents == "given" && in.tangents.empty())
-    return usage_error("--tangents given: " + in.file +
-                       " has no tangent columns (x y tx ty, or x y angle with --tangent-format angle)");
+    return io::usage_error("--tangents given: " + in.file +
+                           " has no tangent columns (x y tx ty, or x y angle with --tangent-format angle)");
   if (opts.tangent_format == "angle" && in.tangents.empty())
-    return usage_error("--tangent-format angle: " + in.file + " has no third column");
+    return io::usage_error("--tangent-format angle: " + in.file + " has no third column");
   const bool given = !estimate && !in.tangents.empty();
   if (fixed && !fixed_fits(in, tol)) return kExitUsage;
 
@@ -228,4 +232,4 @@ int fit_biarc_file(const FitOptions& opts, bool fixed, double tol, bool estimate
   return kExitOk;
 }
 
-}  // namespace kerf::cli
+}  // namespace kerf::job

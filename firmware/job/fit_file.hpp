@@ -10,7 +10,7 @@
 #include "job/fit_options.hpp"
 #include "kerf/fit/fit.hpp"
 
-namespace kerf::cli {
+namespace kerf::job {
 
 struct FileFit {
   Criterion criterion = Criterion::vertex;  // vertex or band
@@ -29,4 +29,4 @@ int fit_file(const FitOptions& opts, const FileFit& f);
 // file's tangents or (estimate) estimated ones, printed as two arcs per biarc.
 int fit_biarc_file(const FitOptions& opts, bool fixed, double tol, bool estimate, double feed);
 
-}  // namespace kerf::cli
+}  // namespace kerf::job

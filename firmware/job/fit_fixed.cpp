@@ -10,7 +10,7 @@
 #include "kerf/core/fixed_convert.hpp"
 #include "kerf/fit/band.hpp"
 
-namespace kerf::cli {
+namespace kerf::job {
 
 double fixed_fit_slack(Span<const Vec2<double>> pts) {
   double big = 1.0;
@@ -119,8 +119,8 @@ bool fixed_fits(const io::PointFile& in, double tol) {
                   tol, finest);
   else
     return true;
-  usage_error(std::string("--tol: ") + buf);
+  io::usage_error(std::string("--tol: ") + buf);
   return false;
 }
 
-}  // namespace kerf::cli
+}  // namespace kerf::job

@@ -11,7 +11,7 @@
 #include "kerf/fit/band/region.hpp"
 #include "kerf/fit/fit.hpp"
 
-namespace kerf::cli {
+namespace kerf::job {
 
 // What the fixed-point pieces may exceed tol by when checked in double: the
 // rounding of the points onto the grid, and the fitter's decisions on
@@ -47,4 +47,4 @@ Result<fit::Fit<double>> fit_band_fixed(Span<const Vec2<double>> pts,
                                         std::uint32_t pieces, Span<fit::Piece<double>> out,
                                         bool tie_break = true);
 
-}  // namespace kerf::cli
+}  // namespace kerf::job

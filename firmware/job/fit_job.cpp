@@ -10,13 +10,13 @@
 #include "io/fit_storage.hpp"
 #include "kerf/fit/band.hpp"
 
-namespace kerf::cli {
+namespace kerf::job {
 
 bool read_job(const std::string& file, Criterion criterion, io::PointFile& out,
               const JobColumns& columns) {
-  if (io::is_gcode_path(file)) {  // a G-code job: its cut paths, arcs sampled
+  if (is_gcode_path(file)) {  // a G-code job: its cut paths, arcs sampled
     std::string error;
-    if (io::read_gcode_job(file, out, error)) return true;
+    if (read_gcode_job(file, out, error)) return true;
     std::fprintf(stderr, "%s\n", error.c_str());
     return false;
   }
@@ -111,4 +111,4 @@ bool fit_job(const std::vector<Vec2<double>>& pts, const std::vector<double>& to
   return true;
 }
 
-}  // namespace kerf::cli
+}  // namespace kerf::job

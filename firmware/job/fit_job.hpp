@@ -13,7 +13,7 @@
 #include "kerf/core/status.hpp"
 #include "kerf/fit/fit.hpp"
 
-namespace kerf::cli {
+namespace kerf::job {
 
 // Which extra columns the caller reads: tangents (x y tx ty, or x y angle
 // with `angles`) only `kerf fit --criterion biarc` does.
@@ -40,4 +40,4 @@ bool fit_job(const std::vector<Vec2<double>>& pts, const std::vector<double>& to
              std::string& error, Status& status, Numeric numeric = Numeric::floating,
              double tie_break = 0);
 
-}  // namespace kerf::cli
+}  // namespace kerf::job

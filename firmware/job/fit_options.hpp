@@ -4,7 +4,7 @@
 
 #include <string>
 
-namespace kerf::cli {
+namespace kerf::job {
 
 // The options as given, still text: fit_command checks them itself so that
 // every message has the same "kerf: --option: ..." form.
@@ -29,4 +29,4 @@ struct FitOptions {
   std::string file;
 };
 
-}  // namespace kerf::cli
+}  // namespace kerf::job

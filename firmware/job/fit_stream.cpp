@@ -26,7 +26,11 @@
 #include "kerf/fit/stream.hpp"
 #include "kerf/fit/stream_band.hpp"
 
-namespace kerf::cli {
+namespace kerf::job {
+
+using io::kExitFailure;
+using io::kExitOk;
+using io::kExitUsage;
 
 namespace {
 
@@ -56,7 +60,7 @@ bool parse_window(const std::string& text, std::uint32_t& out, std::string& erro
   const unsigned long long v = std::strtoull(text.c_str(), &end, 10);
   if (text[0] < '0' || text[0] > '9' || *end != '\0' || errno == ERANGE || v < 4 ||
       v > kMaxWindow) {
-    error = "--window: expected " + range + ", got " + quoted(text);
+    error = "--window: expected " + range + ", got " + io::quoted(text);
     return false;
   }
   out = static_cast<std::uint32_t>(v);
@@ -141,61 +145,61 @@ struct StreamSetup {
 int check_band_sides(const FitOptions& opts, StreamSetup& st) {
   std::string error;
   if (opts.tol.empty() && (opts.tol_left.empty() || opts.tol_right.empty()))
-    return usage_error("--tol: required (or give both --tol-left and --tol-right)");
-  if (!opts.tol.empty() && !parse_length("--tol", opts.tol, false, st.tol, error))
-    return usage_error(error);
+    return io::usage_error("--tol: required (or give both --tol-left and --tol-right)");
+  if (!opts.tol.empty() && !io::parse_length("--tol", opts.tol, false, st.tol, error))
+    return io::usage_error(error);
   st.left = st.right = st.tol;
-  if (!opts.tol_left.empty() && !parse_length("--tol-left", opts.tol_left, true, st.left, error))
-    return usage_error(error);
-  if (!opts.tol_right.empty() && !parse_length("--tol-right", opts.tol_right, true, st.right, error))
-    return usage_error(error);
-  if (!(st.left + st.right > 0.0)) return usage_error("--tol-left and --tol-right: both are 0");
+  if (!opts.tol_left.empty() && !io::parse_length("--tol-left", opts.tol_left, true, st.left, error))
+    return io::usage_error(error);
+  if (!opts.tol_right.empty() && !io::parse_length("--tol-right", opts.tol_right, true, st.right, error))
+    return io::usage_error(error);
+  if (!(st.left + st.right > 0.0)) return io::usage_error("--tol-left and --tol-right: both are 0");
   return kExitOk;
 }
 
 int check_stream_options(const FitOptions& opts, std::optional<Criterion> criterion, std::optional<Numeric> numeric,
                          StreamSetup& st) {
   std::string error;
-  if (!opts.stream) return usage_error("--window needs --stream");
-  if (!parse_window(opts.window, st.window, error)) return usage_error(error);
+  if (!opts.stream) return io::usage_error("--window needs --stream");
+  if (!parse_window(opts.window, st.window, error)) return io::usage_error(error);
   if (criterion != Criterion::vertex && criterion != Criterion::band)
-    return usage_error("--stream: fits by the vertex or band criterion, not " +
-                       quoted(opts.criterion));
+    return io::usage_error("--stream: fits by the vertex or band criterion, not " +
+                           io::quoted(opts.criterion));
   st.band = criterion == Criterion::band;
   if (!opts.pieces.empty())
-    return usage_error("--stream: needs --tol; a piece budget (--pieces) needs the whole input");
-  if (!numeric) return usage_error(unknown_numeric(opts.numeric));
+    return io::usage_error("--stream: needs --tol; a piece budget (--pieces) needs the whole input");
+  if (!numeric) return io::usage_error(unknown_numeric(opts.numeric));
   st.fixed = numeric == Numeric::fixed;
-  if (!opts.extent.empty() && !parse_length("--extent", opts.extent, false, st.extent, error))
-    return usage_error(error);
+  if (!opts.extent.empty() && !io::parse_length("--extent", opts.extent, false, st.extent, error))
+    return io::usage_error(error);
   if (st.fixed && opts.extent.empty())
-    return usage_error("--stream --numeric fixed: needs --extent E (the largest |x| or |y| of the input, mm)");
+    return io::usage_error("--stream --numeric fixed: needs --extent E (the largest |x| or |y| of the input, mm)");
   if (st.fixed && st.extent >= kFixedLimit)
-    return usage_error("--extent: out of the fixed-point fit's range (< 2^30 = 1073741824)");
+    return io::usage_error("--extent: out of the fixed-point fit's range (< 2^30 = 1073741824)");
   if (opts.tie_break == "smallest")
-    return usage_error("--tie-break smallest: needs the whole input (--stream writes --tie-break none)");
+    return io::usage_error("--tie-break smallest: needs the whole input (--stream writes --tie-break none)");
   if (!opts.tie_break.empty() && opts.tie_break != "none")
-    return usage_error(join("--tie-break: expected smallest or none, got ", quoted(opts.tie_break)));
-  if (opts.format != "esgi") return usage_error("--stream: writes the esgi format only");
+    return io::usage_error(join("--tie-break: expected smallest or none, got ", io::quoted(opts.tie_break)));
+  if (opts.format != "esgi") return io::usage_error("--stream: writes the esgi format only");
   if (opts.output != "-")
-    return usage_error("--stream: writes to stdout as it goes (an -o file could not be written atomically)");
-  if (!opts.feed.empty()) return usage_error("--stream: --feed is for --format gcode");
+    return io::usage_error("--stream: writes to stdout as it goes (an -o file could not be written atomically)");
+  if (!opts.feed.empty()) return io::usage_error("--stream: --feed is for --format gcode");
   if (opts.method == "optimal") st.method = fit::Method::optimal;
   else if (opts.method == "esgi-max") st.method = fit::Method::esgi_max;
   else if (opts.method == "esgi-mean") st.method = fit::Method::esgi_mean;
   else
-    return usage_error("--method: unknown method " + quoted(opts.method) +
-                       " (expected optimal, esgi-max or esgi-mean)");
+    return io::usage_error("--method: unknown method " + io::quoted(opts.method) +
+                           " (expected optimal, esgi-max or esgi-mean)");
   if (st.band) {
     if (st.method != fit::Method::optimal)
-      return usage_error("--method: " + quoted(opts.method) +
-                         " is a vertex-criterion rule; --criterion band is always optimal");
+      return io::usage_error("--method: " + io::quoted(opts.method) +
+                             " is a vertex-criterion rule; --criterion band is always optimal");
     return check_band_sides(opts, st);
   }
   if (!opts.tol_left.empty() || !opts.tol_right.empty())
-    return usage_error("--tol-left and --tol-right need --criterion band");
-  if (opts.tol.empty()) return usage_error("--tol: required");
-  if (!parse_length("--tol", opts.tol, false, st.tol, error)) return usage_error(error);
+    return io::usage_error("--tol-left and --tol-right need --criterion band");
+  if (opts.tol.empty()) return io::usage_error("--tol: required");
+  if (!io::parse_length("--tol", opts.tol, false, st.tol, error)) return io::usage_error(error);
   return kExitOk;
 }
 
@@ -296,8 +300,8 @@ int run_band(const FitOptions& opts, const StreamSetup& st, PointStream& in) {
   using S = typename W::Value;
   const std::unique_ptr<W> w(new W);  // before any point: the only heap the fit uses
   if (w->start(scalar<S>(st.left), scalar<S>(st.right), st.window) != Status::ok)
-    return usage_error(join("--window: the band criterion needs at least ", std::to_string(W::kMinWindow)));
-  if (!scale(*w, st)) return usage_error("--extent: expected a length > 0");
+    return io::usage_error(join("--window: the band criterion needs at least ", std::to_string(W::kMinWindow)));
+  if (!scale(*w, st)) return io::usage_error("--extent: expected a length > 0");
   const double widest = std::max(st.left, st.right);
   return run_window(*w, in, "band", opts.method, st.window, widest, io::format_number(widest), st.extent);
 }
@@ -307,8 +311,8 @@ int run_vertex(const FitOptions& opts, const StreamSetup& st, PointStream& in) {
   using S = typename W::Value;
   const std::unique_ptr<W> w(new W);
   if (w->start(scalar<S>(st.tol), st.method, st.window) != Status::ok)
-    return usage_error(join("--window: the vertex criterion needs at least ", std::to_string(W::kMinWindow)));
-  if (!scale(*w, st)) return usage_error("--extent: expected a length > 0");
+    return io::usage_error(join("--window: the vertex criterion needs at least ", std::to_string(W::kMinWindow)));
+  if (!scale(*w, st)) return io::usage_error("--extent: expected a length > 0");
   return run_window(*w, in, "vertex", opts.method, st.window, st.tol, io::format_number(st.tol), st.extent);
 }
 
@@ -323,7 +327,7 @@ bool fixed_tol_ok(const StreamSetup& st) {
                 "--tol: %.6g is finer than the fixed-point fit resolves at --extent %.6g (at least "
                 "%.3g; or use --numeric double)",
                 tol, st.extent, finest);
-  usage_error(buf);
+  io::usage_error(buf);
   return false;
 }
 
@@ -344,4 +348,4 @@ int run_fit_stream(const FitOptions& opts, std::optional<Criterion> criterion, s
   return st.fixed ? run_vertex<FixedWindow>(opts, st, in) : run_vertex<Window>(opts, st, in);
 }
 
-}  // namespace kerf::cli
+}  // namespace kerf::job

@@ -7,10 +7,10 @@
 #include "job/criterion.hpp"
 #include "job/fit_options.hpp"
 
-namespace kerf::cli {
+namespace kerf::job {
 
 // Returns the exit code (io/options.hpp); output goes to stdout. criterion,
 // numeric: opts' names as parsed, empty when unknown (refused here).
 int run_fit_stream(const FitOptions& opts, std::optional<Criterion> criterion, std::optional<Numeric> numeric);
 
-}  // namespace kerf::cli
+}  // namespace kerf::job

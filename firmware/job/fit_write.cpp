@@ -10,7 +10,10 @@
 #include "io/fit_svg.hpp"
 #include "io/output_file.hpp"
 
-namespace kerf::cli {
+namespace kerf::job {
+
+using io::kExitFailure;
+using io::kExitOk;
 
 std::string count(std::size_t n, const char* one, const char* many) {
   std::string s = std::to_string(n);
@@ -63,14 +66,14 @@ bool known_fit_format(const std::string& format) {
 
 int check_output_options(const FitOptions& opts, double& feed) {
   if (!known_fit_format(opts.format))
-    return usage_error("--format: unknown format " + quoted(opts.format) +
-                       " (expected esgi, json, gcode or svg)");
+    return io::usage_error("--format: unknown format " + io::quoted(opts.format) +
+                           " (expected esgi, json, gcode or svg)");
   if (!opts.feed.empty() && opts.format != "gcode")
-    return usage_error("--feed: only for --format gcode");
+    return io::usage_error("--feed: only for --format gcode");
   std::string error;
-  if (!opts.feed.empty() && !parse_length("--feed", opts.feed, false, feed, error))
-    return usage_error(error);
-  if (opts.output.empty()) return usage_error("--output: empty file name");
+  if (!opts.feed.empty() && !io::parse_length("--feed", opts.feed, false, feed, error))
+    return io::usage_error(error);
+  if (opts.output.empty()) return io::usage_error("--output: empty file name");
   return kExitOk;
 }
 
@@ -123,4 +126,4 @@ int write_fit(const FitOptions& opts, const FitToWrite& w, std::string& note) {
   return kExitOk;
 }
 
-}  // namespace kerf::cli
+}  // namespace kerf::job

@@ -10,7 +10,7 @@
 #include "io/fit_output.hpp"
 #include "io/point_file.hpp"
 
-namespace kerf::cli {
+namespace kerf::job {
 
 // True for the names --format accepts.
 bool known_fit_format(const std::string& format);
@@ -41,4 +41,4 @@ void print_fit_summary(const io::PointFile& in, std::size_t paths, const std::st
 // measured deviation after rounding).
 int write_fit(const FitOptions& opts, const FitToWrite& w, std::string& note);
 
-}  // namespace kerf::cli
+}  // namespace kerf::job

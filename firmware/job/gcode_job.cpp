@@ -9,7 +9,7 @@
 
 #include "job/gcode_reader.hpp"
 
-namespace kerf::io {
+namespace kerf::job {
 
 namespace {
 
@@ -57,8 +57,8 @@ void sample_arc(Vec2<double> from, Vec2<double> to, Vec2<double> c, bool ccw, do
 
 }  // namespace
 
-bool gcode_job_from(const GcodeFile& g, PointFile& out, std::string& error) {
-  out = PointFile{};
+bool gcode_job_from(const GcodeFile& g, io::PointFile& out, std::string& error) {
+  out = io::PointFile{};
   out.file = g.file;
   auto refuse = [&](std::size_t line, const std::string& why) {
     out.ok = false;
@@ -141,10 +141,10 @@ bool gcode_job_from(const GcodeFile& g, PointFile& out, std::string& error) {
   return true;
 }
 
-bool read_gcode_job(const std::string& path, PointFile& out, std::string& error) {
+bool read_gcode_job(const std::string& path, io::PointFile& out, std::string& error) {
   const GcodeFile g = read_gcode(path);
   if (!g.ok) {
-    out = PointFile{};
+    out = io::PointFile{};
     out.file = g.file;
     out.line = g.line;
     out.reason = g.reason;
@@ -164,4 +164,4 @@ bool is_gcode_path(const std::string& path) {
   return false;
 }
 
-}  // namespace kerf::io
+}  // namespace kerf::job

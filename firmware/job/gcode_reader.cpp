@@ -11,7 +11,7 @@
 #include <cstdlib>
 #include <cstring>
 
-namespace kerf::io {
+namespace kerf::job {
 
 static_assert(sizeof(GWord) <= 16, "a word is written for every letter of a file");
 
@@ -155,7 +155,7 @@ bool split_words(GBlock& b, Scratch& sc, std::string& reason) {
       }
       w.pos = static_cast<std::uint32_t>(i);
       w.len = static_cast<std::uint32_t>(end - i);
-      if (!std::isfinite(w.value) || std::fabs(w.value) > kMaxCoordinate)
+      if (!std::isfinite(w.value) || std::fabs(w.value) > io::kMaxCoordinate)
         return reason = "number out of range: \"" + std::string(s.substr(i, end - i)) + "\"", false;
       if ((letter == 'X' || letter == 'Y') && num.after_point > b.decimals) b.decimals = num.after_point;
       sc.words.push_back(w);
@@ -341,7 +341,7 @@ void make_room(std::vector<T>& v, std::size_t& mapped, std::size_t n) {
   }
   if (v.size() + n > mapped) {
     mapped = std::min(v.capacity(), v.size() + std::max<std::size_t>(n, (256u << 10) / sizeof(T)));
-    prefault(v.data() + v.size(), (mapped - v.size()) * sizeof(T));
+    io::prefault(v.data() + v.size(), (mapped - v.size()) * sizeof(T));
   }
 }
 
@@ -417,7 +417,7 @@ GcodeFile parse_source(std::string text_in, std::string display_name) {
   while (i < text.size()) {
     ++line;
     const std::size_t j = ends.from(i);
-    if (j - i > kMaxLineBytes) {
+    if (j - i > io::kMaxLineBytes) {
       refuse("line longer than 65536 bytes (not a G-code file?)");
       return f;
     }
@@ -489,7 +489,7 @@ GcodeFile read_gcode(const std::string& path) {
     const std::size_t have = text.size();
     if (text.capacity() == have) text.reserve(2 * have + kChunk);
     const std::size_t chunk = std::min(kChunk, text.capacity() - have);
-    prefault(text.data() + have, chunk);
+    io::prefault(text.data() + have, chunk);
     text.resize(have + chunk);
     const std::size_t n = std::fread(text.data() + have, 1, chunk, in);
     text.resize(have + n);
@@ -498,7 +498,7 @@ GcodeFile read_gcode(const std::string& path) {
     std::size_t k = have + n;
     while (k > have && text[k - 1] != '\n' && text[k - 1] != '\r') --k;
     line_bytes = k > have ? have + n - k : line_bytes + n;
-    too_long = line_bytes > kMaxLineBytes;
+    too_long = line_bytes > io::kMaxLineBytes;
     if (n < chunk) break;
   }
   const bool bad = std::ferror(in) != 0;
@@ -514,4 +514,4 @@ std::string describe_error(const GcodeFile& f) {
   return f.line == 0 ? f.file + ": " + f.reason : f.file + ":" + std::to_string(f.line) + ": " + f.reason;
 }
 
-}  // namespace kerf::io
+}  // namespace kerf::job

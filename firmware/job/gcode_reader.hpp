@@ -26,7 +26,7 @@
 #include "kerf/geom/vec2.hpp"
 #include "io/point_file.hpp"
 
-namespace kerf::io {
+namespace kerf::job {
 
 inline constexpr double kMmPerInch = 25.4;
 
@@ -114,11 +114,11 @@ std::string describe_error(const GcodeFile& f);
 // split into paths at rapids and at torch-off; arcs are sampled into points
 // (chord error below 0.001 mm). Coordinates in mm. Unknown words are refused.
 // False with "FILE:LINE: reason" in error. (job/gcode_job.cpp)
-bool read_gcode_job(const std::string& path, PointFile& out, std::string& error);
+bool read_gcode_job(const std::string& path, io::PointFile& out, std::string& error);
 
 // True for the usual G-code extensions (.nc .ngc .gcode .gco .gc .tap .cnc),
 // in any case: how `kerf sim`/`kerf run` can tell a G-code job from a point file.
 bool is_gcode_path(const std::string& path);
-bool gcode_job_from(const GcodeFile& g, PointFile& out, std::string& error);
+bool gcode_job_from(const GcodeFile& g, io::PointFile& out, std::string& error);
 
-}  // namespace kerf::io
+}  // namespace kerf::job

@@ -12,7 +12,11 @@
 #include "io/point_file.hpp"
 #include "job/fit_job.hpp"
 
-namespace kerf::cli {
+namespace kerf::job {
+
+using io::kExitFailure;
+using io::kExitOk;
+using io::kExitUsage;
 
 namespace {
 
@@ -141,11 +145,11 @@ int plan_file(const PlanRun& run) {
 
   // Refused before running: runs whose trace would not fit in memory.
   if (motion::Interpolator<double>::jerk_window_size(run.config) > kMaxJerkWindow)
-    return usage_error("--jerk: too small for --accel and --period (the S-curve would span more "
-                       "than " + std::to_string(kMaxJerkWindow) + " periods)");
+    return io::usage_error("--jerk: too small for --accel and --period (the S-curve would span more "
+                           "than " + std::to_string(kMaxJerkWindow) + " periods)");
   if (fitted_length(path) / (run.feed / 60 * run.config.period) > static_cast<double>(kMaxSetpoints))
-    return usage_error("--period: the run would take more than " +
-                       std::to_string(kMaxSetpoints) + " periods");
+    return io::usage_error("--period: the run would take more than " +
+                           std::to_string(kMaxSetpoints) + " periods");
   std::string trace = "t_s,s_mm,x_mm,y_mm,x_counts,y_counts,segment\n";
   PlanSummary sum;
   if (!run_plan_path(path, run.feed / 60, run.config, trace, sum, error)) {
@@ -179,4 +183,4 @@ int plan_file(const PlanRun& run) {
   return std::fflush(to) == 0 ? kExitOk : kExitFailure;
 }
 
-}  // namespace kerf::cli
+}  // namespace kerf::job

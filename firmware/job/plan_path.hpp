@@ -10,7 +10,7 @@
 #include "kerf/geom/segment.hpp"
 #include "kerf/motion/interpolator.hpp"
 
-namespace kerf::cli {
+namespace kerf::job {
 
 // Fits the points (tols: the file's per-point column, or empty) into
 // segments with the named criterion (job/fit_job.hpp). On failure, returns
@@ -64,4 +64,4 @@ struct PlanRun {
 // Returns the exit code (io/options.hpp).
 int plan_file(const PlanRun& run);
 
-}  // namespace kerf::cli
+}  // namespace kerf::job

@@ -7,7 +7,7 @@
 
 #include "io/point_file.hpp"
 
-namespace kerf::cli {
+namespace kerf::job {
 
 namespace {
 
@@ -138,4 +138,4 @@ PointStream::Next PointStream::next(Vec2<double>& p) {
   }
 }
 
-}  // namespace kerf::cli
+}  // namespace kerf::job

@@ -12,7 +12,7 @@
 
 #include "kerf/geom/vec2.hpp"
 
-namespace kerf::cli {
+namespace kerf::job {
 
 class PointStream {
  public:
@@ -46,4 +46,4 @@ class PointStream {
   char buf_[4096] = {};
 };
 
-}  // namespace kerf::cli
+}  // namespace kerf::job

@@ -2,7 +2,7 @@
 
 #include "simulated/sim_machine.hpp"
 
-namespace kerf::control {
+namespace kerf::simulated {
 
 hal::BoardStatus CanPlant::truth() {
   hal::BoardStatus s;
@@ -27,4 +27,4 @@ std::unique_ptr<CanPlant> make_can_plant(const CanSimOptions& opts, std::string&
   return std::make_unique<CanPlant>(std::move(link));
 }
 
-}  // namespace kerf::control
+}  // namespace kerf::simulated

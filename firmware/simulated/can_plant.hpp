@@ -10,7 +10,7 @@
 #include "simulated/can_sim_link.hpp"
 #include "simulated/sim_plant.hpp"
 
-namespace kerf::control {
+namespace kerf::simulated {
 
 class CanPlant final : public SimPlant {
  public:
@@ -31,4 +31,4 @@ class CanPlant final : public SimPlant {
 // Null with the reason in `error` when the drives cannot be brought up.
 std::unique_ptr<CanPlant> make_can_plant(const CanSimOptions& opts, std::string& error);
 
-}  // namespace kerf::control
+}  // namespace kerf::simulated

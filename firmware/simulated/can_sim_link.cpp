@@ -15,7 +15,7 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
-namespace kerf::control {
+namespace kerf::simulated {
 
 const char* to_string(CanFaultKind k) {
   switch (k) {
@@ -275,4 +275,4 @@ std::unique_ptr<CanSimLink> make_can_sim_link(const CanSimOptions& opts, std::st
   return l;
 }
 
-}  // namespace kerf::control
+}  // namespace kerf::simulated

@@ -20,7 +20,7 @@
 #include "kerf/hal/can/csp_segment_link.hpp"
 #include "kerf/hal/segment_link.hpp"
 
-namespace kerf::control {
+namespace kerf::simulated {
 
 enum class CanFaultKind : std::uint8_t { heartbeat_loss, emcy, bus_off, enable_refused };
 const char* to_string(CanFaultKind k);
@@ -74,4 +74,4 @@ std::unique_ptr<CanSimLink> make_can_sim_link(const CanSimOptions& opts, std::st
 // thread of its own. Null with the reason when anything fails.
 std::unique_ptr<hal::SegmentLink> open_machine_can_link(const CanSimOptions& opts, std::string& error);
 
-}  // namespace kerf::control
+}  // namespace kerf::simulated

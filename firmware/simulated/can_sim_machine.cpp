@@ -3,7 +3,7 @@
 
 #include "simulated/can_plant.hpp"
 
-namespace kerf::control {
+namespace kerf::simulated {
 
 namespace {
 
@@ -26,8 +26,9 @@ CanMachineConfig can_machine_config(const config::Config& cfg) {
   return m;
 }
 
-SimMachineResult run_can_sim_machine(const Job& job, const ControllerConfig& ccfg, const CanMachineConfig& mcfg,
-                                     hal::Gpio& gpio, Journal* journal, const ResumePoint& from) {
+SimMachineResult run_can_sim_machine(const control::Job& job, const control::ControllerConfig& ccfg,
+                                     const CanMachineConfig& mcfg, hal::Gpio& gpio, control::Journal* journal,
+                                     const control::ResumePoint& from) {
   SimMachineResult res;
   std::unique_ptr<CanPlant> plant = make_can_plant(mcfg.can, res.setup_error);
   if (!plant) return res;
@@ -41,7 +42,8 @@ SimMachineResult run_can_sim_machine(const Job& job, const ControllerConfig& ccf
   CanSimLink* link = &plant->can();
   // The controller names the fault bits; the link knows which drive and why.
   // Its text counts the link's sequence numbers; the report counts job segments.
-  if (res.board.state == hal::BoardState::fault && res.run.state == State::fault && *link->last_error() != '\0') {
+  if (res.board.state == hal::BoardState::fault && res.run.state == control::State::fault &&
+      *link->last_error() != '\0') {
     std::string why = link->last_error();
     why = why.substr(0, why.find("; last completed segment"));
     res.run.reason += ": " + why + "; last completed job segment " +
@@ -52,4 +54,4 @@ SimMachineResult run_can_sim_machine(const Job& job, const ControllerConfig& ccf
   return res;
 }
 
-}  // namespace kerf::control
+}  // namespace kerf::simulated

@@ -12,7 +12,7 @@
 #include "simulated/can_sim_link.hpp"
 #include "simulated/sim_machine.hpp"
 
-namespace kerf::control {
+namespace kerf::simulated {
 
 struct CanFault {
   CanFaultKind kind = CanFaultKind::heartbeat_loss;
@@ -30,7 +30,8 @@ struct CanMachineConfig {
 // The CAN settings and the controller period from a machine configuration.
 CanMachineConfig can_machine_config(const config::Config& cfg);
 
-SimMachineResult run_can_sim_machine(const Job& job, const ControllerConfig& ccfg, const CanMachineConfig& mcfg,
-                                     hal::Gpio& gpio, Journal* journal, const ResumePoint& from);
+SimMachineResult run_can_sim_machine(const control::Job& job, const control::ControllerConfig& ccfg,
+                                     const CanMachineConfig& mcfg, hal::Gpio& gpio, control::Journal* journal,
+                                     const control::ResumePoint& from);
 
-}  // namespace kerf::control
+}  // namespace kerf::simulated

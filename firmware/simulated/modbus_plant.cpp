@@ -9,7 +9,7 @@
 #include "kerf/hal/modbus/modbus_link.hpp"
 #include "kerf/sim/board_server.hpp"
 
-namespace kerf::control {
+namespace kerf::simulated {
 
 namespace {
 
@@ -75,12 +75,13 @@ std::unique_ptr<SimPlant> make_modbus_plant(const SimMachineConfig& cfg, double 
   return plant;
 }
 
-SimMachineResult run_sim_machine(const Job& job, const ControllerConfig& ccfg, const SimMachineConfig& mcfg,
-                                 hal::Gpio& gpio, Journal* journal, const ResumePoint& from) {
+SimMachineResult run_sim_machine(const control::Job& job, const control::ControllerConfig& ccfg,
+                                 const SimMachineConfig& mcfg, hal::Gpio& gpio, control::Journal* journal,
+                                 const control::ResumePoint& from) {
   SimMachineResult res;
   std::unique_ptr<SimPlant> plant = make_modbus_plant(mcfg, ccfg.link_watchdog_s, res.setup_error);
   if (!plant) return res;
   return run_sim_machine(job, ccfg, mcfg, *plant, gpio, journal, from);
 }
 
-}  // namespace kerf::control
+}  // namespace kerf::simulated

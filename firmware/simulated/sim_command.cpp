@@ -23,7 +23,11 @@
 #include "simulated/sim_output.hpp"
 #include "kerf/sim/scripted_gpio.hpp"
 
-namespace kerf::cli {
+namespace kerf::simulated {
+
+using io::kExitFailure;
+using io::kExitOk;
+using io::kExitUsage;
 
 namespace {
 
@@ -38,13 +42,13 @@ constexpr const char* kFaultKinds =
 // KIND@SECONDS[:DURATION]: a GPIO event for the scripted inputs, or a fault
 // on the board's side.
 bool parse_fault(const std::string& text, const std::string& link, std::vector<sim::GpioEvent>& gpio,
-                 std::vector<control::BoardFault>& board, std::vector<control::CanFault>& can, std::string& error) {
+                 std::vector<BoardFault>& board, std::vector<CanFault>& can, std::string& error) {
   const bool rtu = link == "modbus-rtu", on_can = link == "can";
   const std::size_t at = text.find('@');
   const std::string kind = text.substr(0, at);
   sim::GpioEvent g;
-  control::BoardFault b;
-  control::CanFault c;
+  BoardFault b;
+  CanFault c;
   bool is_gpio = true, is_can = false;
   if (kind == "estop") g.kind = sim::GpioEvent::Kind::estop;
   else if (kind == "arc-lost") g.kind = sim::GpioEvent::Kind::arc_lost;
@@ -54,42 +58,42 @@ bool parse_fault(const std::string& text, const std::string& link, std::vector<s
   else if (kind == "cycle-start") g.kind = sim::GpioEvent::Kind::cycle_start;
   else {
     is_gpio = false;
-    if (kind == "drive-fault") b.kind = control::BoardFaultKind::drive_fault;
-    else if (kind == "link-drop") b.kind = control::BoardFaultKind::link_drop;
-    else if (kind == "link-stall") b.kind = control::BoardFaultKind::link_stall;
-    else if (kind == "modbus-exception") b.kind = control::BoardFaultKind::modbus_exception;
-    else if (kind == "crc-error") b.kind = control::BoardFaultKind::crc_error;
-    else if (control::parse_can_fault(kind, c.kind)) is_can = true;
+    if (kind == "drive-fault") b.kind = BoardFaultKind::drive_fault;
+    else if (kind == "link-drop") b.kind = BoardFaultKind::link_drop;
+    else if (kind == "link-stall") b.kind = BoardFaultKind::link_stall;
+    else if (kind == "modbus-exception") b.kind = BoardFaultKind::modbus_exception;
+    else if (kind == "crc-error") b.kind = BoardFaultKind::crc_error;
+    else if (parse_can_fault(kind, c.kind)) is_can = true;
     else {
-      error = "--fault: unknown kind " + quoted(kind) + " (expected " + kFaultKinds + ")";
+      error = "--fault: unknown kind " + io::quoted(kind) + " (expected " + kFaultKinds + ")";
       return false;
     }
   }
   if (on_can && !is_gpio && !is_can) {
-    if (b.kind != control::BoardFaultKind::drive_fault) {
+    if (b.kind != BoardFaultKind::drive_fault) {
       error = "--fault: " + kind + " is a Modbus fault; on --link can: heartbeat-loss, emcy, bus-off, enable-refused";
       return false;
     }
     is_can = true;  // a drive fault on CAN is the drive's EMCY
-    c.kind = control::CanFaultKind::emcy;
+    c.kind = CanFaultKind::emcy;
   }
   if (is_can && !on_can) {
     error = "--fault: " + kind + " needs --link can";
     return false;
   }
-  if (!is_gpio && !is_can && b.kind == control::BoardFaultKind::crc_error && !rtu) {
+  if (!is_gpio && !is_can && b.kind == BoardFaultKind::crc_error && !rtu) {
     error = "--fault: crc-error needs --link modbus-rtu (TCP frames carry no CRC)";
     return false;
   }
   if (at == std::string::npos) {
-    error = "--fault: expected KIND@SECONDS[:DURATION], got " + quoted(text);
+    error = "--fault: expected KIND@SECONDS[:DURATION], got " + io::quoted(text);
     return false;
   }
   const std::string rest = text.substr(at + 1);
   const std::size_t colon = rest.find(':');
   double t = 0.0, duration = 0.0;
-  if (!parse_length("--fault", rest.substr(0, colon), true, t, error)) return false;
-  if (colon != std::string::npos && !parse_length("--fault", rest.substr(colon + 1), false, duration, error))
+  if (!io::parse_length("--fault", rest.substr(0, colon), true, t, error)) return false;
+  if (colon != std::string::npos && !io::parse_length("--fault", rest.substr(colon + 1), false, duration, error))
     return false;
   if (is_gpio) {
     g.t_s = t;
@@ -130,47 +134,47 @@ int run_sim(const SimOptions& given) {
   }
   std::string link = opts.link.empty() ? config::to_string(cfg.link.kind) : opts.link;
   if (link != "modbus-tcp" && link != "modbus-rtu" && link != "can")
-    return usage_error("--link: unknown link " + quoted(link) + " (expected modbus-tcp, modbus-rtu or can)");
+    return io::usage_error("--link: unknown link " + io::quoted(link) + " (expected modbus-tcp, modbus-rtu or can)");
   const bool rtu = link == "modbus-rtu", can = link == "can";
   if (!can && (!opts.axes.empty() || !opts.sync_ms.empty() || !opts.iface.empty()))
-    return usage_error(std::string(!opts.axes.empty() ? "--axes" : !opts.sync_ms.empty() ? "--sync-ms" : "--iface") +
-                       ": only with --link can");
-  const std::optional<Criterion> criterion =
-      opts.criterion.empty() ? cfg.fit.criterion : parse_criterion(opts.criterion);
-  if (!criterion) return usage_error(unknown_criterion(opts.criterion));
-  const std::optional<Numeric> numeric = opts.numeric.empty() ? cfg.fit.numeric : parse_numeric(opts.numeric);
-  if (!numeric) return usage_error(unknown_numeric(opts.numeric));
+    return io::usage_error(std::string(!opts.axes.empty() ? "--axes" : !opts.sync_ms.empty() ? "--sync-ms" : "--iface") +
+                           ": only with --link can");
+  const std::optional<job::Criterion> criterion =
+      opts.criterion.empty() ? cfg.fit.criterion : job::parse_criterion(opts.criterion);
+  if (!criterion) return io::usage_error(job::unknown_criterion(opts.criterion));
+  const std::optional<job::Numeric> numeric = opts.numeric.empty() ? cfg.fit.numeric : job::parse_numeric(opts.numeric);
+  if (!numeric) return io::usage_error(job::unknown_numeric(opts.numeric));
   double tol = cfg.fit.tol, feed = cfg.cut.feed, speed = 0.0, link_timeout = cfg.link.timeout;
-  if ((!opts.tol.empty() && !parse_length("--tol", opts.tol, false, tol, error)) ||
-      (!opts.feed.empty() && !parse_length("--feed", opts.feed, false, feed, error)) ||
-      !parse_length("--speed", opts.speed, true, speed, error) ||
-      (!opts.link_timeout.empty() && !parse_length("--link-timeout", opts.link_timeout, false, link_timeout, error)))
-    return usage_error(error);
+  if ((!opts.tol.empty() && !io::parse_length("--tol", opts.tol, false, tol, error)) ||
+      (!opts.feed.empty() && !io::parse_length("--feed", opts.feed, false, feed, error)) ||
+      !io::parse_length("--speed", opts.speed, true, speed, error) ||
+      (!opts.link_timeout.empty() && !io::parse_length("--link-timeout", opts.link_timeout, false, link_timeout, error)))
+    return io::usage_error(error);
   if (feed > cfg.machine.max_feed)
-    return usage_error("--feed: " + opts.feed + " mm/min is above the machine's max_feed");
-  if (opts.resume && opts.journal.empty()) return usage_error("--resume: needs --journal FILE");
+    return io::usage_error("--feed: " + opts.feed + " mm/min is above the machine's max_feed");
+  if (opts.resume && opts.journal.empty()) return io::usage_error("--resume: needs --journal FILE");
 
   sim::ScriptedGpioOptions gopts;
   // The simulated machine has the config's limit switches, or X and Y ones.
   gopts.limit_count = cfg.gpio.limits.empty() ? 2 : cfg.gpio.limits.size();
   std::vector<sim::GpioEvent> events;
-  std::vector<control::BoardFault> board_faults;
-  std::vector<control::CanFault> can_faults;
+  std::vector<BoardFault> board_faults;
+  std::vector<CanFault> can_faults;
   for (const std::string& text : opts.faults)
-    if (!parse_fault(text, link, events, board_faults, can_faults, error)) return usage_error(error);
-  control::CanMachineConfig can_cfg = control::can_machine_config(cfg);
+    if (!parse_fault(text, link, events, board_faults, can_faults, error)) return io::usage_error(error);
+  CanMachineConfig can_cfg = can_machine_config(cfg);
   if (can) {
     double axes = 0.0, sync_ms = 0.0;
     if (!opts.axes.empty()) {
-      if (!parse_length("--axes", opts.axes, false, axes, error)) return usage_error(error);
-      if (axes != 2.0 && axes != 3.0) return usage_error("--axes: the CAN link drives 2 or 3 axes, got " + opts.axes);
+      if (!io::parse_length("--axes", opts.axes, false, axes, error)) return io::usage_error(error);
+      if (axes != 2.0 && axes != 3.0) return io::usage_error("--axes: the CAN link drives 2 or 3 axes, got " + opts.axes);
       can_cfg.can.axes = static_cast<std::size_t>(axes);
       if (can_cfg.can.node_ids.size() != can_cfg.can.axes) can_cfg.can.node_ids.clear();  // 1..axes
     }
     if (!opts.sync_ms.empty()) {
-      if (!parse_length("--sync-ms", opts.sync_ms, false, sync_ms, error)) return usage_error(error);
+      if (!io::parse_length("--sync-ms", opts.sync_ms, false, sync_ms, error)) return io::usage_error(error);
       if (sync_ms < 1.0 || sync_ms > 10.0 || sync_ms != std::floor(sync_ms))
-        return usage_error("--sync-ms: a whole number of ms in 1..10, got " + opts.sync_ms);
+        return io::usage_error("--sync-ms: a whole number of ms in 1..10, got " + opts.sync_ms);
       can_cfg.can.sync_ms = sync_ms;
     }
     can_cfg.can.iface = opts.iface;
@@ -189,23 +193,23 @@ int run_sim(const SimOptions& given) {
       std::fprintf(stderr, "%s\n", io::describe_error(in).c_str());
       return kExitFailure;
     }
-  } else if (!read_job(opts.file, *criterion, in)) {
+  } else if (!job::read_job(opts.file, *criterion, in)) {
     return kExitUsage;
   }
-  FittedJob fitted;
-  if (const int rc = fit_paths_or_say(in, *criterion, tol, feed / 60.0, fitted, *numeric); rc != 0) return rc;
+  control::FittedJob fitted;
+  if (const int rc = control::fit_paths_or_say(in, *criterion, tol, feed / 60.0, fitted, *numeric); rc != 0) return rc;
 
   std::unique_ptr<control::Journal> journal;
   control::ResumePoint from;
-  if (!open_journal(opts.journal, opts.resume, fitted.job, journal, from)) return kExitUsage;
+  if (!control::open_journal(opts.journal, opts.resume, fitted.job, journal, from)) return kExitUsage;
 
   sim::ScriptedGpio gpio(gopts);
-  if (!gpio.add(events, error)) return usage_error("--fault: " + error);
+  if (!gpio.add(events, error)) return io::usage_error("--fault: " + error);
 
   control::ControllerConfig ccfg = control::controller_config(cfg);
   ccfg.link_timeout_s = link_timeout;
   ccfg.link_watchdog_s = link_timeout / 2.0;
-  control::SimMachineConfig mcfg = control::sim_machine_config(cfg);
+  SimMachineConfig mcfg = sim_machine_config(cfg);
   mcfg.rtu = rtu;
   mcfg.speed = speed;
   mcfg.faults = board_faults;
@@ -224,7 +228,7 @@ int run_sim(const SimOptions& given) {
   // resumed run starts there too and travels to its resume point.
   mcfg.start = fitted.job.paths.front().start;
 
-  control::SimMachineResult res;
+  SimMachineResult res;
   if (can) {
     can_cfg.can.start = mcfg.start;
     can_cfg.speed = speed;
@@ -232,9 +236,9 @@ int run_sim(const SimOptions& given) {
     // The controller cycles in whole SYNC periods.
     const double sync_s = can_cfg.can.sync_ms / 1000.0;
     can_cfg.cycle_s = std::max(sync_s, std::round(mcfg.cycle_s / sync_s) * sync_s);
-    res = control::run_can_sim_machine(fitted.job, ccfg, can_cfg, gpio, journal.get(), from);
+    res = run_can_sim_machine(fitted.job, ccfg, can_cfg, gpio, journal.get(), from);
   } else {
-    res = control::run_sim_machine(fitted.job, ccfg, mcfg, gpio, journal.get(), from);
+    res = run_sim_machine(fitted.job, ccfg, mcfg, gpio, journal.get(), from);
   }
   if (!res.setup_error.empty()) {
     std::fprintf(stderr, "kerf: sim: %s\n", res.setup_error.c_str());
@@ -247,7 +251,7 @@ int run_sim(const SimOptions& given) {
   sum.executed = res.executed.size();
   sum.torch_on = gpio.torch();
   sum.board_duplicates = res.board.duplicates;
-  sum.max_path_deviation_mm = io::max_path_deviation(res.trace, fitted.pieces);
+  sum.max_path_deviation_mm = max_path_deviation(res.trace, fitted.pieces);
   sum.duration_s = res.sim_s;
   sum.wall_s = res.wall_s;
   sum.rt = res.rt;
@@ -272,7 +276,7 @@ int run_sim(const SimOptions& given) {
     for (const sim::TraceSample& t : res.trace) plot.trace.push_back({t.t_s, t.pos, t.seq, t.torch});
     plot.title = "kerf sim: " + in.file + " (" + sum.state + ")";
   }
-  if (!write_or_say("--trace", opts.trace, io::format_trace_csv(res.trace)) ||
+  if (!write_or_say("--trace", opts.trace, format_trace_csv(res.trace)) ||
       !write_or_say("--report", opts.report, control::format_run_json(sum)) ||
       (!opts.plot.empty() && !write_or_say("--plot", opts.plot, io::format_run_svg(plot))))
     return kExitFailure;
@@ -287,4 +291,4 @@ int run_sim(const SimOptions& given) {
   return kExitOk;
 }
 
-}  // namespace kerf::cli
+}  // namespace kerf::simulated

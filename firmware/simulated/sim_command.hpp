@@ -7,9 +7,9 @@
 
 #include "simulated/sim_options.hpp"
 
-namespace kerf::cli {
+namespace kerf::simulated {
 
 // Returns the exit code: 0 done, 1 stopped by a fault or E-stop, 2 bad input.
 int run_sim(const SimOptions& opts);
 
-}  // namespace kerf::cli
+}  // namespace kerf::simulated

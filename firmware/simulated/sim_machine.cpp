@@ -8,7 +8,7 @@
 #include "kerf/hal/rt_loop.hpp"
 #include "simulated/sim_plant.hpp"
 
-namespace kerf::control {
+namespace kerf::simulated {
 
 const char* to_string(BoardFaultKind k) {
   switch (k) {
@@ -36,15 +36,16 @@ SimMachineConfig sim_machine_config(const config::Config& cfg) {
   return m;
 }
 
-SimMachineResult run_sim_machine(const Job& job, const ControllerConfig& ccfg, const SimMachineConfig& mcfg,
-                                 SimPlant& plant, hal::Gpio& gpio, Journal* journal, const ResumePoint& from) {
+SimMachineResult run_sim_machine(const control::Job& job, const control::ControllerConfig& ccfg,
+                                 const SimMachineConfig& mcfg, SimPlant& plant, hal::Gpio& gpio,
+                                 control::Journal* journal, const control::ResumePoint& from) {
   SimMachineResult res;
   using clock = std::chrono::steady_clock;
   const auto wall0 = clock::now();
   const double servo = plant.tick_s();
   const long ticks_per_cycle = std::max(1L, std::lround(mcfg.cycle_s / servo));
   hal::SegmentLink& link = plant.link();
-  Controller ctl(job, ccfg, link, gpio, journal);
+  control::Controller ctl(job, ccfg, link, gpio, journal);
   ctl.start(from);
   std::vector<BoardFault> faults = mcfg.faults;
   std::stable_sort(faults.begin(), faults.end(),
@@ -120,4 +121,4 @@ SimMachineResult run_sim_machine(const Job& job, const ControllerConfig& ccfg, c
   return res;
 }
 
-}  // namespace kerf::control
+}  // namespace kerf::simulated

@@ -18,11 +18,11 @@
 #include "kerf/sim/motion_board.hpp"
 #include "kerf/sim/motion_executor.hpp"
 
-namespace kerf::control {
+namespace kerf::simulated {
 class SimPlant;
 }
 
-namespace kerf::control {
+namespace kerf::simulated {
 
 // Faults the board side can suffer; GPIO faults go through the Gpio script.
 // The Modbus link's faults, a drive fault, and the CAN bus's and drives'
@@ -51,7 +51,7 @@ struct SimMachineConfig {
 
 struct SimMachineResult {
   std::string setup_error;              // the board or the link could not be started
-  RunReport run;
+  control::RunReport run;
   // One sample per servo period; `seq` is the job segment + 1 being run (0
   // for a rapid or none), `torch` the torch output.
   std::vector<sim::TraceSample> trace;
@@ -68,10 +68,12 @@ struct SimMachineResult {
 SimMachineConfig sim_machine_config(const config::Config& cfg);
 
 // On the Modbus board (TCP or RTU, as mcfg.rtu says).
-SimMachineResult run_sim_machine(const Job& job, const ControllerConfig& ccfg, const SimMachineConfig& mcfg,
-                                 hal::Gpio& gpio, Journal* journal, const ResumePoint& from);
+SimMachineResult run_sim_machine(const control::Job& job, const control::ControllerConfig& ccfg,
+                                 const SimMachineConfig& mcfg, hal::Gpio& gpio, control::Journal* journal,
+                                 const control::ResumePoint& from);
 // On any plant (sim_plant.hpp); mcfg's motion and rtu settings are the plant's business then.
-SimMachineResult run_sim_machine(const Job& job, const ControllerConfig& ccfg, const SimMachineConfig& mcfg,
-                                 SimPlant& plant, hal::Gpio& gpio, Journal* journal, const ResumePoint& from);
+SimMachineResult run_sim_machine(const control::Job& job, const control::ControllerConfig& ccfg,
+                                 const SimMachineConfig& mcfg, SimPlant& plant, hal::Gpio& gpio,
+                                 control::Journal* journal, const control::ResumePoint& from);
 
-}  // namespace kerf::control
+}  // namespace kerf::simulated

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace kerf::cli {
+namespace kerf::simulated {
 
 struct SimOptions {
   std::string config;               // TOML; empty: the built-in defaults
@@ -30,4 +30,4 @@ struct SimOptions {
   std::string file;                 // empty: the built-in demo job
 };
 
-}  // namespace kerf::cli
+}  // namespace kerf::simulated

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
-namespace kerf::io {
+namespace kerf::simulated {
 
 double max_path_deviation(const std::vector<sim::TraceSample>& trace,
                           const std::vector<fit::Piece<double>>& pieces) {
@@ -34,4 +34,4 @@ std::string format_trace_csv(const std::vector<sim::TraceSample>& trace) {
   return out;
 }
 
-}  // namespace kerf::io
+}  // namespace kerf::simulated

@@ -9,7 +9,7 @@
 #include "kerf/fit/fit.hpp"
 #include "simulated/sim_machine.hpp"
 
-namespace kerf::io {
+namespace kerf::simulated {
 
 // Largest distance of an executed sample (running job segment k + 1) from
 // fitted piece k or a piece next to it.
@@ -18,4 +18,4 @@ double max_path_deviation(const std::vector<sim::TraceSample>& trace,
 
 std::string format_trace_csv(const std::vector<sim::TraceSample>& trace);
 
-}  // namespace kerf::io
+}  // namespace kerf::simulated

@@ -9,7 +9,7 @@
 
 #include "kerf/hal/segment_link.hpp"
 
-namespace kerf::control {
+namespace kerf::simulated {
 
 struct BoardFault;
 struct SimMachineConfig;
@@ -32,4 +32,4 @@ class SimPlant {
 std::unique_ptr<SimPlant> make_modbus_plant(const SimMachineConfig& cfg, double link_watchdog_s,
                                             std::string& error);
 
-}  // namespace kerf::control
+}  // namespace kerf::simulated

@@ -11,19 +11,19 @@
 #include "weld/weld_plan.hpp"
 #include "io/prefault.hpp"
 
-namespace kerf::cli {
+namespace kerf::weld {
 
 namespace {
 
-using weld_detail::P;
-using weld_detail::PartPlan;
-using weld_detail::Planned;
-using weld_detail::Run;
-using weld_detail::Written;
+using detail::P;
+using detail::PartPlan;
+using detail::Planned;
+using detail::Run;
+using detail::Written;
 
 // Inserts "G1 " after a leading N word (or at the start): a line that relied
 // on the modal G1 which a written arc has replaced.
-std::string with_g1(const io::GBlock& b) {
+std::string with_g1(const job::GBlock& b) {
   if (!b.words.empty() && b.words.front().letter == 'N') {
     const std::size_t at = b.words.front().pos + b.words.front().len;
     std::string s(b.text.substr(0, at));
@@ -38,8 +38,8 @@ std::string with_g1(const io::GBlock& b) {
   return s;
 }
 
-std::string_view word_text(const io::GBlock& b, char letter) {
-  for (const io::GWord& w : b.words)
+std::string_view word_text(const job::GBlock& b, char letter) {
+  for (const job::GWord& w : b.words)
     if (w.letter == letter) return b.text.substr(w.pos, w.len);
   return {};
 }
@@ -48,7 +48,7 @@ class Emitter {
  public:
   explicit Emitter(std::string& out) : out_(out) {}
 
-  void verbatim(const io::GBlock& b) {
+  void verbatim(const job::GBlock& b) {
     if (b.moves && b.motion_word) arc_modal_ = false;
     if (b.moves && !b.motion_word && arc_modal_) out_ += with_g1(b);
     else out_ += b.text;
@@ -67,7 +67,7 @@ class Emitter {
 
 // Writes the input lines and the plans, in file order; keeps the stats.
 struct Writer {
-  const io::GcodeFile& g;
+  const job::GcodeFile& g;
   const WeldOptions& opts;
   WeldStats& stats;
   Emitter emit;
@@ -76,7 +76,7 @@ struct Writer {
   P offset{};
 
   // Writes an input line as it is.
-  void pass(const io::GBlock& b) {
+  void pass(const job::GBlock& b) {
     emit.verbatim(b);
     if (!b.moves && b.unknown.empty() && word_text(b, 'X').empty() && word_text(b, 'Y').empty()) return;
     if (b.moves) ++stats.output_moves;
@@ -86,7 +86,7 @@ struct Writer {
   }
 
   // Writes pl, welded as `pieces` (planned from `offset`), ending at `end`.
-  void write(const io::GPolyline& pl, const Run& r, const std::vector<Planned>& pieces, P end) {
+  void write(const job::GPolyline& pl, const Run& r, const std::vector<Planned>& pieces, P end) {
     ++stats.polylines;
     offset = end - r.pts.back();
     std::size_t next_block = pl.first_block;
@@ -105,7 +105,7 @@ struct Writer {
         continue;
       }
       stats.max_deviation_mm = std::max(stats.max_deviation_mm, w.deviation * r.unit);
-      const io::GBlock& eb = g.blocks[block];
+      const job::GBlock& eb = g.blocks[block];
       std::string line;
       if (const std::string_view n = word_text(eb, 'N'); !n.empty()) {
         line = n;
@@ -127,7 +127,7 @@ struct Writer {
       if (arc) ++stats.arcs;
       // The comments of the replaced lines stay, in order, after the piece.
       for (std::size_t i = next_block; i <= end_block; ++i) {
-        const io::GBlock& b = g.blocks[i];
+        const job::GBlock& b = g.blocks[i];
         if (&b == &eb) continue;
         if (b.only_comment()) {
           emit.verbatim(b);
@@ -175,10 +175,10 @@ class PlanPool {
  public:
   static constexpr std::size_t kPooledPoints = 32;
 
-  PlanPool(const io::GcodeFile& g, const WeldOptions& opts, int decimals, unsigned threads)
+  PlanPool(const job::GcodeFile& g, const WeldOptions& opts, int decimals, unsigned threads)
       : opts_(opts), decimals_(decimals), runs_(g.polylines.size()) {
     parallel_for(runs_.size(), threads,
-                 [&](std::size_t p) { weld_detail::prepare(g.polylines[p], opts, decimals, runs_[p]); });
+                 [&](std::size_t p) { detail::prepare(g.polylines[p], opts, decimals, runs_[p]); });
     first_part_.reserve(runs_.size());
     for (std::size_t p = 0; p < runs_.size(); ++p) {
       first_part_.push_back(task_of_.size());
@@ -230,7 +230,7 @@ class PlanPool {
     if (t >= tasks_.size()) return false;
     const Run& r = runs_[tasks_[t].polyline];
     try {
-      weld_detail::plan_part(r, tasks_[t].part, r.part_start(tasks_[t].part), opts_, decimals_, plans_[t]);
+      detail::plan_part(r, tasks_[t].part, r.part_start(tasks_[t].part), opts_, decimals_, plans_[t]);
     } catch (...) {
       plans_[t].exception = std::current_exception();
     }
@@ -259,20 +259,20 @@ class PlanPool {
 // without it. The vertex criterion's pieces pass the band check after
 // rounding more often when they hug the points, and 1e-3 keeps the corpus's
 // counts (tests/gcode WeldCounts); coarser (1e-2) wrote more moves.
-double tie_break_for(Criterion criterion) { return criterion == Criterion::band ? 0.1 : 1e-3; }
+double tie_break_for(job::Criterion criterion) { return criterion == job::Criterion::band ? 0.1 : 1e-3; }
 
 unsigned weld_threads(int requested) {
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
   return requested <= 0 ? cores : std::min(cores, static_cast<unsigned>(requested));
 }
 
-bool weld_gcode(const io::GcodeFile& g, const WeldOptions& opts, std::string& out,
+bool weld_gcode(const job::GcodeFile& g, const WeldOptions& opts, std::string& out,
                 WeldStats& stats, std::string& error) {
   stats = WeldStats{};
   stats.decimals = opts.decimals >= 0 ? opts.decimals : std::max<int>(3, static_cast<int>(g.decimals));
   out.clear();
   std::size_t bytes = 0;
-  for (const io::GBlock& b : g.blocks) bytes += b.text.size() + b.end.size();
+  for (const job::GBlock& b : g.blocks) bytes += b.text.size() + b.end.size();
   out.reserve(bytes + bytes / 8);  // arcs shorten the text; a "G1 " added after one lengthens it
   io::prefault(out.data(), bytes);
   Writer w{g, opts, stats, Emitter(out), {}};
@@ -284,13 +284,13 @@ bool weld_gcode(const io::GcodeFile& g, const WeldOptions& opts, std::string& ou
   std::vector<Planned> pieces;
   std::size_t next = 0;
   for (std::size_t p = 0; p < g.polylines.size(); ++p) {
-    const io::GPolyline& pl = g.polylines[p];
+    const job::GPolyline& pl = g.polylines[p];
     for (; next < pl.first_block; ++next) w.pass(g.blocks[next]);
     next = pl.last_block + 1;
     Run& r = pool ? pool->run(p) : local;
     if (!pool) {
       r = Run{};
-      weld_detail::prepare(pl, opts, stats.decimals, r);
+      detail::prepare(pl, opts, stats.decimals, r);
     }
     if (!r.welded) {
       for (std::size_t i = pl.first_block; i <= pl.last_block; ++i) w.pass(g.blocks[i]);
@@ -302,10 +302,10 @@ bool weld_gcode(const io::GcodeFile& g, const WeldOptions& opts, std::string& ou
       PartPlan* made = pool ? pool->wait(p, j) : nullptr;
       if (made) {
         if (made->exception) std::rethrow_exception(made->exception);
-        if (!same_point(made->from_in, from)) weld_detail::plan_part(r, j, from, opts, stats.decimals, *made);
+        if (!same_point(made->from_in, from)) detail::plan_part(r, j, from, opts, stats.decimals, *made);
       } else {
         made = &part;
-        weld_detail::plan_part(r, j, from, opts, stats.decimals, part);
+        detail::plan_part(r, j, from, opts, stats.decimals, part);
       }
       if (!made->ok) {
         error = g.file + ":" + std::to_string(g.blocks[pl.first_block].line) + ": " + made->error;
@@ -322,8 +322,8 @@ bool weld_gcode(const io::GcodeFile& g, const WeldOptions& opts, std::string& ou
     r = Run{};
   }
   for (; next < g.blocks.size(); ++next) w.pass(g.blocks[next]);
-  for (const io::GBlock& b : g.blocks) stats.input_moves += b.moves ? 1 : 0;
+  for (const job::GBlock& b : g.blocks) stats.input_moves += b.moves ? 1 : 0;
   return true;
 }
 
-}  // namespace kerf::cli
+}  // namespace kerf::weld

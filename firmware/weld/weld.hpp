@@ -21,11 +21,11 @@
 #include "job/criterion.hpp"
 #include "job/gcode_reader.hpp"
 
-namespace kerf::cli {
+namespace kerf::weld {
 
 struct WeldOptions {
   double tol_mm = 0.025;
-  Criterion criterion = Criterion::band;  // vertex or band
+  job::Criterion criterion = job::Criterion::band;  // vertex or band
   int decimals = -1;               // < 0: as many as the file's X/Y words use (at least 3)
   bool split_turns = true;         // fit separately at turns sharper than 90 degrees
   double jitter = 0.02;            // fit without points within jitter * tol of their chord (0: keep all)
@@ -53,14 +53,14 @@ struct WeldStats {
 };
 
 // The tie-break precision weld uses for `criterion` (opts.tie_break < 0).
-double tie_break_for(Criterion criterion);
+double tie_break_for(job::Criterion criterion);
 
 // The threads weld_gcode plans on for opts.threads == requested.
 unsigned weld_threads(int requested);
 
 // Welds g into `out`. False with `error` when a fit fails (a bug or a numeric
 // breakdown): then nothing is to be written.
-bool weld_gcode(const io::GcodeFile& g, const WeldOptions& opts, std::string& out,
+bool weld_gcode(const job::GcodeFile& g, const WeldOptions& opts, std::string& out,
                 WeldStats& stats, std::string& error);
 
 // `kerf weld` once its options are checked (app/weld_command.cpp): reads
@@ -69,4 +69,4 @@ bool weld_gcode(const io::GcodeFile& g, const WeldOptions& opts, std::string& ou
 // Returns the exit code (io/options.hpp).
 int weld_file(const std::string& in, const std::string& out, WeldOptions w);
 
-}  // namespace kerf::cli
+}  // namespace kerf::weld

@@ -12,13 +12,17 @@
 #include "job/gcode_reader.hpp"
 #include "weld/weld.hpp"
 
-namespace kerf::cli {
+namespace kerf::weld {
+
+using io::kExitFailure;
+using io::kExitOk;
+using io::kExitUsage;
 
 int weld_file(const std::string& in, const std::string& out, WeldOptions w) {
   const auto t0 = std::chrono::steady_clock::now();
-  const io::GcodeFile g = io::read_gcode(in);
+  const job::GcodeFile g = job::read_gcode(in);
   if (!g.ok) {
-    std::fprintf(stderr, "kerf: %s\n", io::describe_error(g).c_str());
+    std::fprintf(stderr, "kerf: %s\n", job::describe_error(g).c_str());
     return kExitUsage;
   }
   // Progress on a terminal only, at most five times a second.
@@ -58,4 +62,4 @@ int weld_file(const std::string& in, const std::string& out, WeldOptions w) {
   return kExitOk;
 }
 
-}  // namespace kerf::cli
+}  // namespace kerf::weld

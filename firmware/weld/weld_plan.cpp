@@ -8,7 +8,7 @@
 #include "job/fit_job.hpp"
 #include "kerf/geom/segment.hpp"
 
-namespace kerf::cli::weld_detail {
+namespace kerf::weld::detail {
 
 namespace {
 
@@ -169,7 +169,7 @@ struct Planner {
     const double fine = opts.tie_break < 0 ? tie_break_for(opts.criterion) : opts.tie_break;
     // The vertex criterion's fast pieces leave the band often (refits): it
     // would plan most parts twice.
-    const bool two_pass = opts.tie_break < 0 && fine < 1 && opts.criterion == Criterion::band;
+    const bool two_pass = opts.tie_break < 0 && fine < 1 && opts.criterion == job::Criterion::band;
     const std::size_t begin = r.cuts[j], k = r.cuts[j + 1];
     std::vector<Planned>& first = out.pieces;
     P first_from = from;
@@ -200,7 +200,7 @@ struct Planner {
                               r.simple.begin() + static_cast<std::ptrdiff_t>(end) + 1);
     std::vector<fit::Piece<double>> pieces;
     Status status = Status::ok;
-    if (!fit_job(part, {}, r.fit_tol - r.moved, opts.criterion, pieces, error, status, Numeric::floating, tie_break))
+    if (!job::fit_job(part, {}, r.fit_tol - r.moved, opts.criterion, pieces, error, status, job::Numeric::floating, tie_break))
       return false;
     for (fit::Piece<double>& pc : pieces) {
       pc.first = static_cast<std::uint32_t>(r.kept_index[pc.first + begin]);
@@ -266,7 +266,7 @@ struct Planner {
         std::vector<fit::Piece<double>> again;
         Status status = Status::ok;
         // A finer tie-break than the first fit: rare, and its pieces then hug the input.
-        if (!fit_job(part, {}, fit_tol / 2, Criterion::band, again, error, status, Numeric::floating, 1e-3)) return false;
+        if (!job::fit_job(part, {}, fit_tol / 2, job::Criterion::band, again, error, status, job::Numeric::floating, 1e-3)) return false;
         for (fit::Piece<double>& p : again) {
           p.first += pc.first;
           p.last += pc.first;
@@ -285,7 +285,7 @@ struct Planner {
 
 }  // namespace
 
-void prepare(const io::GPolyline& pl, const WeldOptions& opts, int decimals, Run& r) {
+void prepare(const job::GPolyline& pl, const WeldOptions& opts, int decimals, Run& r) {
   r.unit = pl.inches ? 25.4 : 1.0;
   r.tol = opts.tol_mm / r.unit;
   for (std::size_t k = 0; k < pl.points.size(); ++k) {
@@ -316,4 +316,4 @@ void plan_part(const Run& r, std::size_t j, P from, const WeldOptions& opts, int
   Planner{opts, decimals, {}}.plan(r, j, from, out);
 }
 
-}  // namespace kerf::cli::weld_detail
+}  // namespace kerf::weld::detail

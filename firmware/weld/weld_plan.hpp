@@ -13,7 +13,7 @@
 #include "job/gcode_reader.hpp"
 #include "kerf/fit/fit.hpp"
 
-namespace kerf::cli::weld_detail {
+namespace kerf::weld::detail {
 
 using P = Vec2<double>;
 
@@ -47,7 +47,7 @@ struct Run {
 };
 
 // Prepares pl; the parts are cut at turns sharper than 90 degrees (opts.split_turns).
-void prepare(const io::GPolyline& pl, const WeldOptions& opts, int decimals, Run& r);
+void prepare(const job::GPolyline& pl, const WeldOptions& opts, int decimals, Run& r);
 
 // What planning one part gives: planned apart from the output, as the parts
 // are planned on several threads and written in file order.
@@ -65,4 +65,4 @@ struct PartPlan {
 // weld/weld_plan.cpp); out.ok false with out.error when a fit fails.
 void plan_part(const Run& r, std::size_t j, P from, const WeldOptions& opts, int decimals, PartPlan& out);
 
-}  // namespace kerf::cli::weld_detail
+}  // namespace kerf::weld::detail

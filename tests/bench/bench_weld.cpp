@@ -134,9 +134,9 @@ std::size_t greedy_moves(const std::vector<P>& p, double tol) {
   return moves;
 }
 
-std::size_t greedy_file(const kerf::io::GcodeFile& g, double tol_mm) {
+std::size_t greedy_file(const kerf::job::GcodeFile& g, double tol_mm) {
   std::size_t moves = 0, replaced = 0;
-  for (const kerf::io::GPolyline& pl : g.polylines) {
+  for (const kerf::job::GPolyline& pl : g.polylines) {
     std::vector<P> p;
     for (const P& q : pl.points)
       if (p.empty() || !(p.back() == q)) p.push_back(q);
@@ -144,7 +144,7 @@ std::size_t greedy_file(const kerf::io::GcodeFile& g, double tol_mm) {
     moves += p.size() < 2 || pl.relative ? pl.points.size() - 1 : greedy_moves(p, tol_mm / (pl.inches ? 25.4 : 1.0));
   }
   std::size_t all = 0;
-  for (const kerf::io::GBlock& b : g.blocks) all += b.moves ? 1 : 0;
+  for (const kerf::job::GBlock& b : g.blocks) all += b.moves ? 1 : 0;
   return all - replaced + moves;
 }
 
@@ -218,16 +218,16 @@ bool whole_process(const std::string& kerf, const std::string& path, std::size_t
 
 // One line of the "threads" figures (see the top of this file); false when
 // a weld failed or the two outputs differ.
-bool threads_figure(const kerf::io::GcodeFile& g, kerf::cli::WeldOptions o, int repeat) {
+bool threads_figure(const kerf::job::GcodeFile& g, kerf::weld::WeldOptions o, int repeat) {
   double best[2] = {1e300, 1e300};
   std::string out[2];
   for (int r = 0; r < std::max(repeat, 5); ++r) {
     for (int k = 0; k < 2; ++k) {
       o.threads = k + 1;
       std::string once, error;
-      kerf::cli::WeldStats st;
+      kerf::weld::WeldStats st;
       const auto t0 = std::chrono::steady_clock::now();
-      if (!kerf::cli::weld_gcode(g, o, once, st, error)) {
+      if (!kerf::weld::weld_gcode(g, o, once, st, error)) {
         std::fprintf(stderr, "%s\n", error.c_str());
         return false;
       }
@@ -237,7 +237,7 @@ bool threads_figure(const kerf::io::GcodeFile& g, kerf::cli::WeldOptions o, int 
   }
   const double lines = static_cast<double>(g.blocks.size());
   const std::string name = g.file.substr(g.file.find_last_of('/') + 1);
-  std::printf("%-46s %-7s %8.1f %12.0f %8.1f %12.0f %6.2fx %5s\n", name.c_str(), kerf::cli::to_string(o.criterion),
+  std::printf("%-46s %-7s %8.1f %12.0f %8.1f %12.0f %6.2fx %5s\n", name.c_str(), kerf::job::to_string(o.criterion),
               1e3 * best[0], lines / best[0], 1e3 * best[1], lines / best[1], best[0] / best[1],
               out[0] == out[1] ? "yes" : "NO");
   return out[0] == out[1];
@@ -249,8 +249,8 @@ int main(int argc, char** argv) {
   double tol = 0.025;
   std::vector<std::string> criteria{"band", "vertex"};
   bool split = true;
-  double jitter = kerf::cli::WeldOptions{}.jitter;
-  double tie_break = kerf::cli::WeldOptions{}.tie_break;
+  double jitter = kerf::weld::WeldOptions{}.jitter;
+  double tie_break = kerf::weld::WeldOptions{}.tie_break;
   std::string dump;  // a directory to write each output to
   bool with_greedy = true;
   int repeat = 3;
@@ -293,16 +293,16 @@ int main(int argc, char** argv) {
     ss << in.rdbuf();
     const std::string text = ss.str();
     double t0 = cpu_seconds();
-    const kerf::io::GcodeFile g = kerf::io::parse_gcode(text, path);
+    const kerf::job::GcodeFile g = kerf::job::parse_gcode(text, path);
     const double read_s = cpu_seconds() - t0;
     double warm_read_s = read_s;
     for (int r = 1; r < repeat; ++r) {
       const double t = cpu_seconds();
-      const kerf::io::GcodeFile again = kerf::io::parse_gcode(text, path);
+      const kerf::job::GcodeFile again = kerf::job::parse_gcode(text, path);
       warm_read_s = std::min(warm_read_s, cpu_seconds() - t);
     }
     if (!g.ok) {
-      std::fprintf(stderr, "%s\n", kerf::io::describe_error(g).c_str());
+      std::fprintf(stderr, "%s\n", kerf::job::describe_error(g).c_str());
       return 1;
     }
     if (text.size() >= largest_bytes) {
@@ -316,20 +316,20 @@ int main(int argc, char** argv) {
     }
     const std::size_t greedy = with_greedy ? greedy_file(g, tol) : 0;
     for (const std::string& c : criteria) {
-      kerf::cli::WeldOptions o;
+      kerf::weld::WeldOptions o;
       o.threads = 1;  // CPU time below: one thread's
       o.tol_mm = tol;
-      o.criterion = *kerf::cli::parse_criterion(c);
+      o.criterion = *kerf::job::parse_criterion(c);
       o.split_turns = split;
       o.jitter = jitter;
       o.tie_break = tie_break;
       std::string out, error;
-      kerf::cli::WeldStats st;
+      kerf::weld::WeldStats st;
       double weld_s = 0, warm_s = 1e300;
       for (int r = 0; r < repeat; ++r) {
         std::string once;
         t0 = cpu_seconds();
-        if (!kerf::cli::weld_gcode(g, o, once, st, error)) {
+        if (!kerf::weld::weld_gcode(g, o, once, st, error)) {
           std::fprintf(stderr, "%s\n", error.c_str());
           return 1;
         }
@@ -360,19 +360,19 @@ int main(int argc, char** argv) {
     return 1;
   if (with_threads) {
     std::printf("\nthreads: weld wall time, fastest of %d runs each, threads=1 and threads=2 (%u cores)\n",
-                std::max(repeat, 5), kerf::cli::weld_threads(0));
+                std::max(repeat, 5), kerf::weld::weld_threads(0));
     std::printf("%-46s %-7s %8s %12s %8s %12s %7s %5s\n", "file", "crit", "1: ms", "1: lines/s", "2: ms",
                 "2: lines/s", "2 / 1", "same");
     for (const std::string& path : files) {
-      const kerf::io::GcodeFile g = kerf::io::read_gcode(path);  // not timed here
+      const kerf::job::GcodeFile g = kerf::job::read_gcode(path);  // not timed here
       if (!g.ok) {
-        std::fprintf(stderr, "%s\n", kerf::io::describe_error(g).c_str());
+        std::fprintf(stderr, "%s\n", kerf::job::describe_error(g).c_str());
         return 1;
       }
       for (const std::string& c : criteria) {
-        kerf::cli::WeldOptions o;
+        kerf::weld::WeldOptions o;
         o.tol_mm = tol;
-        o.criterion = *kerf::cli::parse_criterion(c);
+        o.criterion = *kerf::job::parse_criterion(c);
         o.split_turns = split;
         o.jitter = jitter;
         o.tie_break = tie_break;

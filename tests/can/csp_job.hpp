@@ -24,11 +24,11 @@ struct DemoJob {
 inline DemoJob demo_job(double feed) {
   DemoJob j;
   const std::string file = std::string(KERF_EXAMPLES_DIR) + "/parabola.txt";
-  if (!cli::read_job(file, cli::Criterion::band, j.points)) throw std::runtime_error("cannot read " + file);
+  if (!job::read_job(file, job::Criterion::band, j.points)) throw std::runtime_error("cannot read " + file);
   std::vector<fit::Piece<double>> pieces;
   std::string err;
   Status st{};
-  if (!cli::fit_job(j.points.points, {}, j.tol, cli::Criterion::band, pieces, err, st)) throw std::runtime_error(err);
+  if (!job::fit_job(j.points.points, {}, j.tol, job::Criterion::band, pieces, err, st)) throw std::runtime_error(err);
   std::uint32_t seq = 0;
   for (const auto& p : pieces) {
     j.path.push_back(p.segment);

@@ -14,9 +14,9 @@ using control::State;
 
 TEST(CanMachine, CutsEveryPathOnceOverCsp) {
   FakeGpio gpio;
-  control::CanMachineConfig m;
+  simulated::CanMachineConfig m;
   m.can.axes = 3;
-  const auto r = control::run_can_sim_machine(two_paths(), fast_cut(), m, gpio, nullptr, {});
+  const auto r = simulated::run_can_sim_machine(two_paths(), fast_cut(), m, gpio, nullptr, {});
   ASSERT_EQ(r.setup_error, "");
   EXPECT_EQ(r.run.state, State::done) << r.run.reason;
   EXPECT_EQ(r.executed, (std::vector<std::int64_t>{0, 1, 2, 3}));
@@ -27,13 +27,13 @@ TEST(CanMachine, CutsEveryPathOnceOverCsp) {
   ASSERT_EQ(gpio.changes.size(), 4u);  // on, off, on, off
 }
 
-class CanMachineFault : public ::testing::TestWithParam<control::CanFaultKind> {};
+class CanMachineFault : public ::testing::TestWithParam<simulated::CanFaultKind> {};
 
 TEST_P(CanMachineFault, StopsWithTheTorchOffAndTheDriveNamed) {
   FakeGpio gpio;
-  control::CanMachineConfig m;
+  simulated::CanMachineConfig m;
   m.faults = {{GetParam(), 2.4}};  // during the second path (it pierces at about 2.1 s)
-  const auto r = control::run_can_sim_machine(two_paths(), fast_cut(), m, gpio, nullptr, {});
+  const auto r = simulated::run_can_sim_machine(two_paths(), fast_cut(), m, gpio, nullptr, {});
   ASSERT_EQ(r.setup_error, "");
   EXPECT_EQ(r.run.state, State::fault) << r.run.reason;
   EXPECT_EQ(r.board.state, hal::BoardState::fault);
@@ -47,10 +47,10 @@ TEST_P(CanMachineFault, StopsWithTheTorchOffAndTheDriveNamed) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Kinds, CanMachineFault,
-                         ::testing::Values(control::CanFaultKind::heartbeat_loss, control::CanFaultKind::emcy,
-                                           control::CanFaultKind::bus_off, control::CanFaultKind::enable_refused),
+                         ::testing::Values(simulated::CanFaultKind::heartbeat_loss, simulated::CanFaultKind::emcy,
+                                           simulated::CanFaultKind::bus_off, simulated::CanFaultKind::enable_refused),
                          [](const auto& i) {
-                           std::string n = control::to_string(i.param);
+                           std::string n = simulated::to_string(i.param);
                            n.erase(std::remove(n.begin(), n.end(), '-'), n.end());
                            return n;
                          });

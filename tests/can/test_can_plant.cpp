@@ -13,29 +13,29 @@ using control::State;
 
 TEST(CanPlant, RunSimMachineOnTheCanDrives) {
   std::string err;
-  control::CanSimOptions o;
-  auto plant = control::make_can_plant(o, err);
+  simulated::CanSimOptions o;
+  auto plant = simulated::make_can_plant(o, err);
   ASSERT_TRUE(plant) << err;
   EXPECT_DOUBLE_EQ(plant->tick_s(), 0.001);
   FakeGpio gpio;
-  control::SimMachineConfig m;
-  m.faults = {{control::BoardFaultKind::drive_fault, 2.4, 0.0}};
-  const auto r = control::run_sim_machine(two_paths(), fast_cut(), m, *plant, gpio, nullptr, {});
+  simulated::SimMachineConfig m;
+  m.faults = {{simulated::BoardFaultKind::drive_fault, 2.4, 0.0}};
+  const auto r = simulated::run_sim_machine(two_paths(), fast_cut(), m, *plant, gpio, nullptr, {});
   ASSERT_EQ(r.setup_error, "");
   EXPECT_EQ(r.run.state, State::fault) << r.run.reason;
   EXPECT_EQ(r.run.last_completed, 1);
   EXPECT_TRUE(r.board.faults & hal::kFaultEmcy);
-  control::BoardFault drop;
-  drop.kind = control::BoardFaultKind::link_drop;
+  simulated::BoardFault drop;
+  drop.kind = simulated::BoardFaultKind::link_drop;
   EXPECT_FALSE(plant->inject(drop));
 }
 
 TEST(CanPlant, AJobRunsToDone) {
   std::string err;
-  auto plant = control::make_can_plant({}, err);
+  auto plant = simulated::make_can_plant({}, err);
   ASSERT_TRUE(plant) << err;
   FakeGpio gpio;
-  const auto r = control::run_sim_machine(two_paths(), fast_cut(), {}, *plant, gpio, nullptr, {});
+  const auto r = simulated::run_sim_machine(two_paths(), fast_cut(), {}, *plant, gpio, nullptr, {});
   ASSERT_EQ(r.setup_error, "");
   EXPECT_EQ(r.run.state, State::done) << r.run.reason;
   EXPECT_EQ(r.executed, (std::vector<std::int64_t>{0, 1, 2, 3}));

@@ -13,7 +13,7 @@
 namespace kerf::test {
 namespace {
 
-using control::CanFaultKind;
+using simulated::CanFaultKind;
 using hal::BoardState;
 using hal::LinkError;
 
@@ -30,7 +30,7 @@ void push_lines(hal::SegmentLink& link, std::uint32_t n) {
   ASSERT_EQ(link.command(hal::Command::finish), LinkError::none);
 }
 
-BoardState run(control::CanSimLink& link, int max_ticks) {
+BoardState run(simulated::CanSimLink& link, int max_ticks) {
   hal::BoardStatus st;
   for (int i = 0; i < max_ticks; ++i) {
     link.status(st);
@@ -42,13 +42,13 @@ BoardState run(control::CanSimLink& link, int max_ticks) {
 }
 
 TEST(CanSimLink, RunsAJobAndWritesTheCandumpLog) {
-  control::CanSimOptions o;
+  simulated::CanSimOptions o;
   o.axes = 3;
   o.sync_ms = 2;
   o.start = {1.0, 2.0};
   o.candump_path = ::testing::TempDir() + "can_sim_link.candump";
   std::string err;
-  auto link = control::make_can_sim_link(o, err);
+  auto link = simulated::make_can_sim_link(o, err);
   ASSERT_TRUE(link) << err;
   EXPECT_DOUBLE_EQ(link->sync_period_s(), 0.002);
   ASSERT_NO_FATAL_FAILURE(push_lines(*link, 3));
@@ -71,9 +71,9 @@ TEST(CanSimLink, RunsAJobAndWritesTheCandumpLog) {
 TEST(CanSimLink, EveryFaultKindStopsWithTheLastSegmentNamed) {
   for (CanFaultKind k : {CanFaultKind::heartbeat_loss, CanFaultKind::emcy, CanFaultKind::bus_off,
                          CanFaultKind::enable_refused}) {
-    SCOPED_TRACE(control::to_string(k));
+    SCOPED_TRACE(simulated::to_string(k));
     std::string err;
-    auto link = control::make_can_sim_link({}, err);
+    auto link = simulated::make_can_sim_link({}, err);
     ASSERT_TRUE(link) << err;
     ASSERT_NO_FATAL_FAILURE(push_lines(*link, 4));
     for (int i = 0; i < 200; ++i) link->tick();  // into segment 2 (11.2 mm at 100 mm/s from rest)
@@ -105,7 +105,7 @@ TEST(CanSimLink, OptionsFromTheMachineConfiguration) {
   cfg.link.kind = config::Link::Kind::can;
   cfg.link.node_ids = {5, 9};
   cfg.link.sync_ms = 2;
-  const control::CanSimOptions o = control::can_sim_options(cfg);
+  const simulated::CanSimOptions o = simulated::can_sim_options(cfg);
   EXPECT_EQ(o.axes, 2u);
   EXPECT_EQ(o.node_ids, (std::vector<std::uint8_t>{5, 9}));
   EXPECT_EQ(o.sync_ms, 2.0);
@@ -116,11 +116,11 @@ TEST(CanSimLink, OptionsFromTheMachineConfiguration) {
 }
 
 TEST(CanSimLink, NodeIdsAndCountsPerAxis) {
-  control::CanSimOptions o;
+  simulated::CanSimOptions o;
   o.node_ids = {5, 9};
   o.counts_per_mm = {800.0, 1250.0};
   std::string err;
-  auto link = control::make_can_sim_link(o, err);
+  auto link = simulated::make_can_sim_link(o, err);
   ASSERT_TRUE(link) << err;
   EXPECT_EQ(link->axes().axis(0).node, 5);
   EXPECT_EQ(link->axes().axis(1).node, 9);
@@ -141,35 +141,35 @@ TEST(CanSimLink, NodeIdsAndCountsPerAxis) {
   EXPECT_NE(std::string(link->last_error()).find("axis 1 (node 9): heartbeat lost"), std::string::npos)
       << link->last_error();
   o.node_ids = {5};
-  EXPECT_FALSE(control::make_can_sim_link(o, err));
+  EXPECT_FALSE(simulated::make_can_sim_link(o, err));
   EXPECT_NE(err.find("one node id per axis"), std::string::npos) << err;
 }
 
 TEST(CanSimLink, ADriveRefusingEnableAtPowerUpIsNamed) {
-  control::CanSimOptions o;
+  simulated::CanSimOptions o;
   o.refuse_enable_axis = 1;
   std::string err;
-  EXPECT_FALSE(control::make_can_sim_link(o, err));
+  EXPECT_FALSE(simulated::make_can_sim_link(o, err));
   EXPECT_NE(err.find("axis 1 (node 2): enable refused"), std::string::npos) << err;
 }
 
 TEST(CanSimLink, BadOptionsAreRefused) {
   std::string err;
-  control::CanSimOptions o;
+  simulated::CanSimOptions o;
   o.axes = 4;
-  EXPECT_FALSE(control::make_can_sim_link(o, err));
+  EXPECT_FALSE(simulated::make_can_sim_link(o, err));
   EXPECT_NE(err.find("--axes"), std::string::npos);
   o = {};
   o.sync_ms = 11;
-  EXPECT_FALSE(control::make_can_sim_link(o, err));
+  EXPECT_FALSE(simulated::make_can_sim_link(o, err));
   EXPECT_NE(err.find("--sync-ms"), std::string::npos);
   o.sync_ms = 1.5;
-  EXPECT_FALSE(control::make_can_sim_link(o, err));
+  EXPECT_FALSE(simulated::make_can_sim_link(o, err));
   EXPECT_NE(err.find("whole number"), std::string::npos);
   CanFaultKind k{};
-  EXPECT_TRUE(control::parse_can_fault("bus-off", k));
+  EXPECT_TRUE(simulated::parse_can_fault("bus-off", k));
   EXPECT_EQ(k, CanFaultKind::bus_off);
-  EXPECT_FALSE(control::parse_can_fault("bus_off", k));
+  EXPECT_FALSE(simulated::parse_can_fault("bus_off", k));
 }
 
 TEST(SocketCan, AMissingInterfaceIsAClearError) {

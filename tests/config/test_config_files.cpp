@@ -51,9 +51,9 @@ TEST(ConfigFiles, PlasmaTableExampleLoads) {
   EXPECT_EQ(c.gpio.limits[1].chip, "gpiochip0");
   EXPECT_TRUE(c.gpio.limits[1].active_low);
 
-  EXPECT_STREQ(kerf::cli::to_string(c.fit.criterion), "band");
+  EXPECT_STREQ(kerf::job::to_string(c.fit.criterion), "band");
   EXPECT_EQ(c.fit.tol, 0.025);
-  EXPECT_STREQ(kerf::cli::to_string(c.fit.numeric), "double");
+  EXPECT_STREQ(kerf::job::to_string(c.fit.numeric), "double");
   EXPECT_EQ(c.cut.feed, 3000);
   EXPECT_EQ(c.cut.pierce_delay, 0.5);
   EXPECT_EQ(c.cut.arc_ok_timeout, 3.0);
@@ -97,9 +97,9 @@ TEST(ConfigFiles, Defaults) {
   EXPECT_EQ(c.gpio.consumer, "kerf");
   EXPECT_FALSE(c.gpio.torch.used);
   EXPECT_TRUE(c.gpio.limits.empty());
-  EXPECT_STREQ(kerf::cli::to_string(c.fit.criterion), "band");
+  EXPECT_STREQ(kerf::job::to_string(c.fit.criterion), "band");
   EXPECT_EQ(c.fit.tol, 0.025);
-  EXPECT_STREQ(kerf::cli::to_string(c.fit.numeric), "double");
+  EXPECT_STREQ(kerf::job::to_string(c.fit.numeric), "double");
   EXPECT_EQ(c.cut.feed, 3000);
   EXPECT_EQ(c.cut.pierce_delay, 0.5);
   EXPECT_EQ(c.cut.arc_ok_timeout, 3.0);
@@ -125,8 +125,8 @@ TEST(ConfigFiles, FitNumericFixed) {
   ASSERT_TRUE(parse("[link]\nkind = \"modbus-tcp\"\n[fit]\ncriterion = \"vertex\"\nnumeric = \"fixed\"\n",
                     "fixed.toml", c, error))
       << error;
-  EXPECT_STREQ(kerf::cli::to_string(c.fit.criterion), "vertex");
-  EXPECT_STREQ(kerf::cli::to_string(c.fit.numeric), "fixed");
+  EXPECT_STREQ(kerf::job::to_string(c.fit.criterion), "vertex");
+  EXPECT_STREQ(kerf::job::to_string(c.fit.numeric), "fixed");
 }
 
 // Every criterion runs in fixed point, the biarc fitter too.
@@ -136,8 +136,8 @@ TEST(ConfigFiles, FitNumericFixedBiarc) {
   ASSERT_TRUE(parse("[link]\nkind = \"modbus-tcp\"\n[fit]\ncriterion = \"biarc\"\nnumeric = \"fixed\"\n",
                     "fixed.toml", c, error))
       << error;
-  EXPECT_STREQ(kerf::cli::to_string(c.fit.criterion), "biarc");
-  EXPECT_STREQ(kerf::cli::to_string(c.fit.numeric), "fixed");
+  EXPECT_STREQ(kerf::job::to_string(c.fit.criterion), "biarc");
+  EXPECT_STREQ(kerf::job::to_string(c.fit.numeric), "fixed");
 }
 
 TEST(ConfigFiles, OtherLinksAndLinesByName) {

@@ -45,7 +45,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (const auto& t : core.tangents()) tangents.push_back({t.x, t.y});
   std::vector<kerf::fit::BiarcPiece<double>> pieces;
   for (std::uint32_t k = 0; k < r.value().pieces; ++k) pieces.push_back(core.piece(k));
-  const std::string cli = kerf::cli::check_biarcs(pts, tangents, f.tol, pieces, 0.0);
+  const std::string cli = kerf::job::check_biarcs(pts, tangents, f.tol, pieces, 0.0);
   FUZZ_CHECK(cli.empty(), cli.c_str());
   return 0;
 }

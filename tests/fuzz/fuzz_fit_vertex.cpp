@@ -44,7 +44,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (const auto& p : f.pts) pts.push_back({p.x, p.y});
   std::vector<kerf::fit::Piece<double>> fitted;
   for (std::uint32_t k = 0; k < r.value().pieces; ++k) fitted.push_back(core.piece(k));
-  const std::string bad = kerf::cli::check_fit({pts.data(), pts.size()},
+  const std::string bad = kerf::job::check_fit({pts.data(), pts.size()},
                                                {fitted.data(), fitted.size()}, f.tol);
   // kerf's own last check refuses an arc that meets its points out of order
   // (a path winding past a turn: the vertex fitter's known gap); the

@@ -58,11 +58,11 @@ std::vector<Piece> fit(const Job& j, double tol, const std::string& criterion) {
     if (criterion == "biarc") {
       std::vector<kerf::fit::BiarcPiece<double>> biarcs;
       kerf::fit::Fit<double> f{};
-      EXPECT_TRUE(kerf::cli::fit_biarc_path(pts, {}, tol, biarcs, f, error, status)) << error;
+      EXPECT_TRUE(kerf::job::fit_biarc_path(pts, {}, tol, biarcs, f, error, status)) << error;
       for (const auto& bi : biarcs)
         for (const auto& g : bi.arc) pieces.push_back({bi.first, bi.last, g, bi.error});
     } else {
-      EXPECT_TRUE(kerf::cli::fit_job(pts, {}, tol, *kerf::cli::parse_criterion(criterion), pieces, error, status)) << error;
+      EXPECT_TRUE(kerf::job::fit_job(pts, {}, tol, *kerf::job::parse_criterion(criterion), pieces, error, status)) << error;
     }
     for (Piece& pc : pieces) {
       pc.first += static_cast<std::uint32_t>(b);
@@ -108,21 +108,21 @@ std::string polyline_gcode(const Job& j, int decimals) {
 // Reads the G-code back: every feed move against the piece it was written for.
 void expect_reads_back(const std::string& text, const std::vector<Piece>& written,
                        std::size_t paths, int decimals) {
-  const kerf::io::GcodeFile f = kerf::io::parse_gcode(text, "fit.nc");
-  ASSERT_TRUE(f.ok) << kerf::io::describe_error(f);
+  const kerf::job::GcodeFile f = kerf::job::parse_gcode(text, "fit.nc");
+  ASSERT_TRUE(f.ok) << kerf::job::describe_error(f);
   const double eps = std::pow(10.0, -decimals) * 0.51;
   std::size_t k = 0, rapids = 0;
-  for (const kerf::io::GBlock& bl : f.blocks) {
+  for (const kerf::job::GBlock& bl : f.blocks) {
     if (!bl.moves) continue;
-    if (bl.motion == kerf::io::Motion::rapid) {
+    if (bl.motion == kerf::job::Motion::rapid) {
       ++rapids;
       continue;
     }
     ASSERT_LT(k, written.size()) << "more moves than pieces at line " << bl.line;
     const kerf::Segment<double>& s = written[k].segment;
-    EXPECT_EQ(bl.motion == kerf::io::Motion::linear, !s.is_arc()) << "line " << bl.line;
+    EXPECT_EQ(bl.motion == kerf::job::Motion::linear, !s.is_arc()) << "line " << bl.line;
     if (s.is_arc()) {
-      EXPECT_EQ(bl.motion == kerf::io::Motion::ccw, s.dir > 0) << "line " << bl.line;
+      EXPECT_EQ(bl.motion == kerf::job::Motion::ccw, s.dir > 0) << "line " << bl.line;
     }
     EXPECT_NEAR(bl.start[0], s.start.x, eps) << "line " << bl.line;
     EXPECT_NEAR(bl.start[1], s.start.y, eps) << "line " << bl.line;
@@ -312,8 +312,8 @@ TEST(FitGcode, CommentCannotBreakTheFile) {
   g.comment = "a\nG0 X999\rb";
   const std::string text = kerf::io::format_fit_gcode(g);
   EXPECT_EQ(text.rfind("; a?G0 X999?b\nG21 G90 G17\n", 0), 0u) << text.substr(0, 60);
-  const kerf::io::GcodeFile f = kerf::io::parse_gcode(text, "fit.nc");
-  ASSERT_TRUE(f.ok) << kerf::io::describe_error(f);
+  const kerf::job::GcodeFile f = kerf::job::parse_gcode(text, "fit.nc");
+  ASSERT_TRUE(f.ok) << kerf::job::describe_error(f);
 }
 
 }  // namespace

@@ -19,8 +19,8 @@
 
 namespace {
 
-using kerf::io::GcodeFile;
-using kerf::io::parse_gcode;
+using kerf::job::GcodeFile;
+using kerf::job::parse_gcode;
 
 std::string corpus(const std::string& name) {
   std::ifstream in(std::string(KERF_TEST_DATA_DIR) + "/gcode/" + name, std::ios::binary);
@@ -30,22 +30,22 @@ std::string corpus(const std::string& name) {
 }
 
 std::string weld(const std::string& text, double tol, const std::string& criterion,
-                 kerf::cli::WeldStats& stats, int decimals = -1) {
+                 kerf::weld::WeldStats& stats, int decimals = -1) {
   const GcodeFile g = parse_gcode(text, "t.nc");
-  EXPECT_TRUE(g.ok) << kerf::io::describe_error(g);
-  kerf::cli::WeldOptions o;
+  EXPECT_TRUE(g.ok) << kerf::job::describe_error(g);
+  kerf::weld::WeldOptions o;
   o.tol_mm = tol;
-  o.criterion = *kerf::cli::parse_criterion(criterion);
+  o.criterion = *kerf::job::parse_criterion(criterion);
   o.decimals = decimals;
   std::string out, error;
-  EXPECT_TRUE(kerf::cli::weld_gcode(g, o, out, stats, error)) << error;
+  EXPECT_TRUE(kerf::weld::weld_gcode(g, o, out, stats, error)) << error;
   return out;
 }
 
 std::string error_of(const std::string& text) {
   const GcodeFile g = parse_gcode(text, "bad.nc");
   EXPECT_FALSE(g.ok);
-  return kerf::io::describe_error(g);
+  return kerf::job::describe_error(g);
 }
 
 // Points of a circle, counter-clockwise, as G1 lines.
@@ -66,12 +66,12 @@ TEST(GcodeReader, Dialects) {
       "%\r\nN10 g21 G90 G17 (mm)\r\nn20 g00 x0 y0\r\n\tG01\tX1.5 Y0 F100 ; cut\r\nX2 y.5\r\n"
       "(only a comment)\r\nN30 G1 X3 Y1\rM03\nG2 X5 Y1 I1 J0\nG3 X7 Y1 R1\nM05\n";
   const GcodeFile g = parse_gcode(text, "d.nc");
-  ASSERT_TRUE(g.ok) << kerf::io::describe_error(g);
+  ASSERT_TRUE(g.ok) << kerf::job::describe_error(g);
   ASSERT_EQ(g.blocks.size(), 11u);
   EXPECT_EQ(g.blocks[1].end, "\r\n");
   EXPECT_EQ(g.blocks[6].end, "\r");
   EXPECT_EQ(g.blocks[7].end, "\n");
-  EXPECT_EQ(g.blocks[4].motion, kerf::io::Motion::linear);  // bare modal line
+  EXPECT_EQ(g.blocks[4].motion, kerf::job::Motion::linear);  // bare modal line
   EXPECT_DOUBLE_EQ(g.blocks[4].end_pos[1], 0.5);
   EXPECT_TRUE(g.blocks[7].torch);
   EXPECT_DOUBLE_EQ(g.blocks[8].centre[0], 4.0);
@@ -142,7 +142,7 @@ TEST(GcodeReader, NumbersAreCorrectlyRounded) {
     for (char c : numbers[k])
       if (c != ' ') digits += c;
     const double want = std::strtod(digits.c_str(), nullptr);
-    const kerf::io::GBlock& b = g.blocks[k + 1];
+    const kerf::job::GBlock& b = g.blocks[k + 1];
     ASSERT_EQ(b.words.size(), 3u) << numbers[k];
     const double got = b.words[1].value;
     EXPECT_EQ(std::memcmp(&got, &want, sizeof got), 0) << "X" << numbers[k] << ": " << got << " != " << want;
@@ -155,7 +155,7 @@ TEST(GcodeReader, LineEndsOfEveryKind) {
   std::string cr_only;
   for (int k = 0; k < 2000; ++k) cr_only += "G1 X" + std::to_string(k) + " Y1\r";
   const GcodeFile g = parse_gcode("G0 X0 Y0\n" + cr_only + "G1 X1 Y2\r\nG1 X3 Y3", "e.nc");
-  ASSERT_TRUE(g.ok) << kerf::io::describe_error(g);
+  ASSERT_TRUE(g.ok) << kerf::job::describe_error(g);
   ASSERT_EQ(g.blocks.size(), 2003u);
   EXPECT_EQ(g.blocks[0].end, "\n");
   for (std::size_t k = 1; k <= 2000; ++k) {
@@ -175,29 +175,29 @@ TEST(GcodeReader, UnknownWordsPassWeldButNotRun) {
   EXPECT_EQ(g.blocks[2].unknown.size(), 1u);
   kerf::io::PointFile job;
   std::string error;
-  EXPECT_FALSE(kerf::io::gcode_job_from(g, job, error));
+  EXPECT_FALSE(kerf::job::gcode_job_from(g, job, error));
   EXPECT_EQ(error, "u.nc:3: unsupported word \"E1\"");
-  kerf::cli::WeldStats stats;
+  kerf::weld::WeldStats stats;
   EXPECT_EQ(weld(text, 0.01, "band", stats), text);  // nothing to weld, every line kept
 }
 
 TEST(GcodeJob, TellsGcodeFilesByName) {
-  EXPECT_TRUE(kerf::io::is_gcode_path("part.NC"));
-  EXPECT_TRUE(kerf::io::is_gcode_path("dir.v2/part.gcode"));
-  EXPECT_FALSE(kerf::io::is_gcode_path("dir.nc/points.txt"));
-  EXPECT_FALSE(kerf::io::is_gcode_path("points"));
+  EXPECT_TRUE(kerf::job::is_gcode_path("part.NC"));
+  EXPECT_TRUE(kerf::job::is_gcode_path("dir.v2/part.gcode"));
+  EXPECT_FALSE(kerf::job::is_gcode_path("dir.nc/points.txt"));
+  EXPECT_FALSE(kerf::job::is_gcode_path("points"));
 }
 
 TEST(GcodeJob, ReadsAFileAndNamesItsErrors) {
   kerf::io::PointFile job;
   std::string error;
-  EXPECT_TRUE(kerf::io::read_gcode_job(std::string(KERF_TEST_DATA_DIR) + "/gcode/cncjs_jsdc-laser.gcode", job, error));
+  EXPECT_TRUE(kerf::job::read_gcode_job(std::string(KERF_TEST_DATA_DIR) + "/gcode/cncjs_jsdc-laser.gcode", job, error));
   EXPECT_EQ(job.path_begin.size(), 5u);
   EXPECT_EQ(job.point_lines.front(), 22u);  // the first cut move (it starts where line 18 left the head)
-  EXPECT_FALSE(kerf::io::read_gcode_job("no/such.nc", job, error));
+  EXPECT_FALSE(kerf::job::read_gcode_job("no/such.nc", job, error));
   EXPECT_EQ(error, "no/such.nc: No such file or directory");
   // An FDM print: E words are not a cutting machine's.
-  EXPECT_FALSE(kerf::io::read_gcode_job(std::string(KERF_TEST_DATA_DIR) + "/gcode/cncjs_octocat.gcode", job, error));
+  EXPECT_FALSE(kerf::job::read_gcode_job(std::string(KERF_TEST_DATA_DIR) + "/gcode/cncjs_octocat.gcode", job, error));
   EXPECT_NE(error.find("cncjs_octocat.gcode:2: unsupported word \"E0\""), std::string::npos) << error;
 }
 
@@ -207,7 +207,7 @@ TEST(GcodeJob, SplitsAtRapidsAndTorchOff) {
       "M5\nG1 X40 Y40\nG20\nM3\nG1 X2 Y2\n";
   kerf::io::PointFile job;
   std::string error;
-  ASSERT_TRUE(kerf::io::gcode_job_from(parse_gcode(text, "j.nc"), job, error)) << error;
+  ASSERT_TRUE(kerf::job::gcode_job_from(parse_gcode(text, "j.nc"), job, error)) << error;
   // Split at torch-off and at the rapid; the G1 with the torch off is no cut.
   ASSERT_EQ(job.path_begin.size(), 4u);
   EXPECT_EQ(job.points.size(), 3u + 2u + 2u + 2u);
@@ -226,7 +226,7 @@ TEST(GcodeJob, AnArcOfHugeRadiusIsSampledWithinTheLimit) {
   const std::string text = "G21 G90\nG0 X0 Y0\nG1 X0 Y1\nG3 X1 Y1 I0.5 J-100000000000000\n";
   kerf::io::PointFile job;
   std::string error;
-  ASSERT_TRUE(kerf::io::gcode_job_from(parse_gcode(text, "huge.nc"), job, error)) << error;
+  ASSERT_TRUE(kerf::job::gcode_job_from(parse_gcode(text, "huge.nc"), job, error)) << error;
   ASSERT_GE(job.points.size(), 3u);
   EXPECT_LE(job.points.size(), 2u + 100000u);
   for (const auto& p : job.points) ASSERT_TRUE(std::isfinite(p.x) && std::isfinite(p.y));
@@ -244,7 +244,7 @@ TEST(Weld, CorpusFilesPassTheChecker) {
     SCOPED_TRACE(c.file);
     const std::string in = corpus(c.file);
     ASSERT_FALSE(in.empty());
-    kerf::cli::WeldStats stats;
+    kerf::weld::WeldStats stats;
     const std::string out = weld(in, 0.025, "band", stats);
     const kerf_test::WeldCheck chk = kerf_test::check_weld(in, out, 0.025);
     EXPECT_TRUE(chk.ok) << chk.why;
@@ -278,7 +278,7 @@ TEST(Weld, PocketBandAndVertex) {
   const std::string in = all.substr(0, cut);
   for (const char* criterion : {"band", "vertex"}) {
     SCOPED_TRACE(criterion);
-    kerf::cli::WeldStats stats;
+    kerf::weld::WeldStats stats;
     const std::string out = weld(in, 0.025, criterion, stats);
     const kerf_test::WeldCheck chk = kerf_test::check_weld(in, out, 0.025);
     EXPECT_TRUE(chk.ok) << chk.why;
@@ -305,7 +305,7 @@ TEST(Weld, CorpusCountsStayAsMeasured) {
     ASSERT_FALSE(in.empty());
     for (const char* criterion : {"band", "vertex"}) {
       SCOPED_TRACE(criterion);
-      kerf::cli::WeldStats stats;
+      kerf::weld::WeldStats stats;
       const std::string out = weld(in, 0.025, criterion, stats);
       EXPECT_LE(stats.output_moves, std::string(criterion) == "band" ? c.band : c.vertex);
       if (stats.arcs == 0) continue;  // nothing welded: the lines are the input's
@@ -317,7 +317,7 @@ TEST(Weld, CorpusCountsStayAsMeasured) {
 
 TEST(Weld, VertexCriterionStaysInTheBand) {
   const std::string in = corpus("cncjs_jsdc-laser.gcode");
-  kerf::cli::WeldStats stats;
+  kerf::weld::WeldStats stats;
   const std::string out = weld(in, 0.025, "vertex", stats);
   const kerf_test::WeldCheck chk = kerf_test::check_weld(in, out, 0.025);
   EXPECT_TRUE(chk.ok) << chk.why;
@@ -329,7 +329,7 @@ TEST(Weld, FullCircleInInchesKeepsUnitsAndLineEnds) {
   for (std::size_t p = lines.find('\n'); p != std::string::npos; p = lines.find('\n', p + 2))
     lines.replace(p, 1, "\r\n");
   in += lines + "G0 Z0.5\r\n";
-  kerf::cli::WeldStats stats;
+  kerf::weld::WeldStats stats;
   const std::string out = weld(in, 0.025, "band", stats);
   EXPECT_GE(stats.arcs, 2u);
   EXPECT_LE(stats.output_moves, 2u + 2u + 3u);
@@ -347,7 +347,7 @@ TEST(Weld, HairpinsAndTinyReversals) {
       "X0 Y0.1\n(hairpin done)\nX-5 Y5\nX-10 Y0\nX-5 Y-5\nX0 Y0\nG0 Z5\n";
   for (const char* criterion : {"band", "vertex"}) {
     SCOPED_TRACE(criterion);
-    kerf::cli::WeldStats stats;
+    kerf::weld::WeldStats stats;
     const std::string out = weld(in, 0.05, criterion, stats);
     const kerf_test::WeldCheck chk = kerf_test::check_weld(in, out, 0.05);
     EXPECT_TRUE(chk.ok) << chk.why << "\n" << out;
@@ -357,7 +357,7 @@ TEST(Weld, HairpinsAndTinyReversals) {
 
 TEST(Weld, ModalLineAfterAnArcGetsItsG1) {
   std::string in = "G21 G90\nG0 X1 Y0\n" + circle_lines(0, 0, 1, 60, 0.5, 4) + "X-3 Y0 E1.5\n";
-  kerf::cli::WeldStats stats;
+  kerf::weld::WeldStats stats;
   const std::string out = weld(in, 0.01, "band", stats);
   EXPECT_GE(stats.arcs, 1u);
   EXPECT_NE(out.find("\nG1 X-3 Y0 E1.5\n"), std::string::npos) << out;
@@ -371,7 +371,7 @@ TEST(Weld, CoarseDecimalsStayWithinTol) {
                          circle_lines(3, 0, 3, 100, 0.7, 5);
   for (int decimals : {1, 2, 3}) {
     SCOPED_TRACE(decimals);
-    kerf::cli::WeldStats stats;
+    kerf::weld::WeldStats stats;
     const std::string out = weld(in, 0.02, "band", stats, decimals);
     const kerf_test::WeldCheck chk = kerf_test::check_weld(in, out, 0.02);
     EXPECT_TRUE(chk.ok) << chk.why;
@@ -381,7 +381,7 @@ TEST(Weld, CoarseDecimalsStayWithinTol) {
 
 TEST(Weld, RelativeRunsAreKept) {
   const std::string in = "G21 G91\nG1 X1 Y0 F100\nX1 Y0.1\nX1 Y0.2\nX1 Y0.3\nX1 Y0.4\nG90\n";
-  kerf::cli::WeldStats stats;
+  kerf::weld::WeldStats stats;
   EXPECT_EQ(weld(in, 0.1, "band", stats), in);
   EXPECT_EQ(stats.output_moves, 5u);
 }
@@ -389,7 +389,7 @@ TEST(Weld, RelativeRunsAreKept) {
 TEST(Weld, CheckerCatchesABadArc) {
   // The referee must be able to fail: flip one arc's direction.
   const std::string in = "G21 G90\nG0 X1 Y0\n" + circle_lines(0, 0, 1, 60, 0.5, 4);
-  kerf::cli::WeldStats stats;
+  kerf::weld::WeldStats stats;
   std::string out = weld(in, 0.01, "band", stats);
   const std::size_t p = out.find("G3 ");
   ASSERT_NE(p, std::string::npos);
@@ -402,12 +402,12 @@ TEST(Weld, CheckerCatchesABadArc) {
 
 TEST(Weld, RoundTripReadsTheSamePath) {
   const std::string in = corpus("cncjs_jsdc-laser.gcode");
-  kerf::cli::WeldStats stats;
+  kerf::weld::WeldStats stats;
   const std::string out = weld(in, 0.025, "band", stats);
   kerf::io::PointFile a, b;
   std::string error;
-  ASSERT_TRUE(kerf::io::gcode_job_from(parse_gcode(in, "in"), a, error)) << error;
-  ASSERT_TRUE(kerf::io::gcode_job_from(parse_gcode(out, "out"), b, error)) << error;
+  ASSERT_TRUE(kerf::job::gcode_job_from(parse_gcode(in, "in"), a, error)) << error;
+  ASSERT_TRUE(kerf::job::gcode_job_from(parse_gcode(out, "out"), b, error)) << error;
   ASSERT_EQ(a.path_begin.size(), 5u);
   ASSERT_EQ(b.path_begin.size(), a.path_begin.size());
   for (std::size_t k = 0; k < a.path_begin.size(); ++k) {
@@ -423,7 +423,7 @@ TEST(Weld, RoundTripReadsTheSamePath) {
     }
   }
   // And welding kerf's own output again keeps every arc line as it is.
-  kerf::cli::WeldStats again;
+  kerf::weld::WeldStats again;
   const std::string twice = weld(out, 0.025, "band", again);
   EXPECT_EQ(again.arcs, 0u);
   EXPECT_LE(again.output_moves, stats.output_moves);

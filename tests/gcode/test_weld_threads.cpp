@@ -15,8 +15,8 @@
 
 namespace {
 
-using kerf::cli::WeldOptions;
-using kerf::cli::WeldStats;
+using kerf::weld::WeldOptions;
+using kerf::weld::WeldStats;
 
 struct Welded {
   bool ok = false;
@@ -27,7 +27,7 @@ struct Welded {
   bool progress_on_caller = true;  // every progress call came from the calling thread
 };
 
-Welded weld(const kerf::io::GcodeFile& g, WeldOptions o, int threads) {
+Welded weld(const kerf::job::GcodeFile& g, WeldOptions o, int threads) {
   Welded w;
   o.threads = threads;
   const std::thread::id caller = std::this_thread::get_id();
@@ -35,7 +35,7 @@ Welded weld(const kerf::io::GcodeFile& g, WeldOptions o, int threads) {
     w.progress.emplace_back(line, lines);
     if (std::this_thread::get_id() != caller) w.progress_on_caller = false;
   };
-  w.ok = kerf::cli::weld_gcode(g, o, w.text, w.stats, w.error);
+  w.ok = kerf::weld::weld_gcode(g, o, w.text, w.stats, w.error);
   return w;
 }
 
@@ -66,12 +66,12 @@ TEST(WeldThreads, CorpusIsTheSameOnOneAndFourThreads) {
   ASSERT_FALSE(files.empty());
   std::size_t arcs = 0;
   for (const std::filesystem::path& file : files) {
-    const kerf::io::GcodeFile g = kerf::io::read_gcode(file.string());
-    ASSERT_TRUE(g.ok) << kerf::io::describe_error(g);
+    const kerf::job::GcodeFile g = kerf::job::read_gcode(file.string());
+    ASSERT_TRUE(g.ok) << kerf::job::describe_error(g);
     for (const char* criterion : {"band", "vertex"}) {
       WeldOptions o;
       o.tol_mm = 0.025;
-      o.criterion = *kerf::cli::parse_criterion(criterion);
+      o.criterion = *kerf::job::parse_criterion(criterion);
       const Welded one = weld(g, o, 1);
       ASSERT_TRUE(one.ok) << one.error;
       arcs += one.stats.arcs;
@@ -86,8 +86,8 @@ TEST(WeldThreads, CorpusIsTheSameOnOneAndFourThreads) {
 // point, is made again from where the machine is.
 TEST(WeldThreads, CoarseDecimalsAreTheSame) {
   for (const char* name : {"cncjs_jsdc-laser.gcode", "cncjs_tball-engrave.gcode"}) {
-    const kerf::io::GcodeFile g = kerf::io::read_gcode(std::string(KERF_TEST_DATA_DIR) + "/gcode/" + name);
-    ASSERT_TRUE(g.ok) << kerf::io::describe_error(g);
+    const kerf::job::GcodeFile g = kerf::job::read_gcode(std::string(KERF_TEST_DATA_DIR) + "/gcode/" + name);
+    ASSERT_TRUE(g.ok) << kerf::job::describe_error(g);
     WeldOptions o;
     o.tol_mm = 0.025;
     o.decimals = 2;
@@ -112,8 +112,8 @@ TEST(WeldThreads, PlansFromWhereTheMachineIs) {
     text += '\n';
   }
   text += "M05\n";
-  const kerf::io::GcodeFile g = kerf::io::parse_gcode(text, "spiral.nc");
-  ASSERT_TRUE(g.ok) << kerf::io::describe_error(g);
+  const kerf::job::GcodeFile g = kerf::job::parse_gcode(text, "spiral.nc");
+  ASSERT_TRUE(g.ok) << kerf::job::describe_error(g);
   ASSERT_GE(g.polylines.size(), 40u);
   WeldOptions o;
   o.tol_mm = 0.5;
@@ -128,9 +128,9 @@ TEST(WeldThreads, PlansFromWhereTheMachineIs) {
 // Every polyline fails (no tol the fitters take): the error names the first
 // in file order, whichever thread failed first.
 TEST(WeldThreads, FirstErrorInFileOrder) {
-  const kerf::io::GcodeFile g =
-      kerf::io::read_gcode(std::string(KERF_TEST_DATA_DIR) + "/gcode/cncjs_tball-engrave.gcode");
-  ASSERT_TRUE(g.ok) << kerf::io::describe_error(g);
+  const kerf::job::GcodeFile g =
+      kerf::job::read_gcode(std::string(KERF_TEST_DATA_DIR) + "/gcode/cncjs_tball-engrave.gcode");
+  ASSERT_TRUE(g.ok) << kerf::job::describe_error(g);
   WeldOptions o;
   o.tol_mm = std::nan("");
   const Welded one = weld(g, o, 1);
@@ -149,9 +149,9 @@ TEST(WeldThreads, FirstErrorInFileOrder) {
 
 TEST(WeldThreads, ThreadCount) {
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-  EXPECT_EQ(kerf::cli::weld_threads(0), cores);
-  EXPECT_EQ(kerf::cli::weld_threads(1), 1u);
-  EXPECT_EQ(kerf::cli::weld_threads(1000), cores);
+  EXPECT_EQ(kerf::weld::weld_threads(0), cores);
+  EXPECT_EQ(kerf::weld::weld_threads(1), 1u);
+  EXPECT_EQ(kerf::weld::weld_threads(1000), cores);
 }
 
 }  // namespace

@@ -321,12 +321,12 @@ namespace {
 // `kerf sim --link can --iface vcan0`: the entry point with the drives on a
 // thread of this process, on their own socket.
 TEST(HilVcan, KerfSimLinkOverVcan0) {
-  control::CanSimOptions o;
+  simulated::CanSimOptions o;
   o.iface = "vcan0";
   o.sync_ms = 2;
   o.candump_path = out_dir() + "/hil_sim_link.candump";
   std::string err;
-  auto link = control::make_can_sim_link(o, err);
+  auto link = simulated::make_can_sim_link(o, err);
   ASSERT_TRUE(link) << err;
   hal::BoardStatus st;
   for (std::uint32_t k = 1; k <= 3; ++k) {
@@ -346,7 +346,7 @@ TEST(HilVcan, KerfSimLinkOverVcan0) {
   ASSERT_EQ(st.state, BoardState::done) << link->last_error();
   EXPECT_DOUBLE_EQ(st.position.x, 15.0);
   EXPECT_DOUBLE_EQ(st.position.y, 3.0);
-  link->inject(control::CanFaultKind::bus_off);
+  link->inject(simulated::CanFaultKind::bus_off);
   for (int i = 0; i < 1000 && st.state != BoardState::fault; ++i) {
     link->tick();
     link->status(st);

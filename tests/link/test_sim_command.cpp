@@ -47,8 +47,8 @@ class SimCommand : public ::testing::TestWithParam<Wire> {
     // steps: a few hundred segments, many more than the board's queue.
     for (int i = 0; i <= 600; ++i) f << i * 0.5 << ' ' << ((i % 2) != 0 ? 0.3 : 0.0) << '\n';
   }
-  cli::SimOptions options() const {
-    cli::SimOptions o;
+  simulated::SimOptions options() const {
+    simulated::SimOptions o;
     o.link = GetParam() == Wire::tcp ? "modbus-tcp" : "modbus-rtu";
     o.tol = "0.01";
     o.report = dir_ + "report.json";
@@ -59,7 +59,7 @@ class SimCommand : public ::testing::TestWithParam<Wire> {
     std::remove(o.trace.c_str());
     return o;
   }
-  static int run(const cli::SimOptions& o) { return cli::run_sim(o); }
+  static int run(const simulated::SimOptions& o) { return simulated::run_sim(o); }
   void TearDown() override {
     for (const char* f : {"points.txt", "report.json", "trace.csv"}) std::remove((dir_ + f).c_str());
   }
@@ -67,7 +67,7 @@ class SimCommand : public ::testing::TestWithParam<Wire> {
 };
 
 TEST_P(SimCommand, CleanJobIsExecutedOnceOnThePath) {
-  const cli::SimOptions o = options();
+  const simulated::SimOptions o = options();
   ASSERT_EQ(run(o), 0);
   const std::string rep = slurp(o.report);
   EXPECT_NE(rep.find("\"state\": \"done\""), std::string::npos) << rep;
@@ -106,7 +106,7 @@ TEST_P(SimCommand, CleanJobIsExecutedOnceOnThePath) {
 }
 
 TEST_P(SimCommand, ShortLinkDropIsRidden) {
-  cli::SimOptions o = options();
+  simulated::SimOptions o = options();
   o.faults = {"link-drop@1.0:0.2", "modbus-exception@1.1"};  // while cutting (the pierce takes 0.55 s)
   o.link_timeout = "2";
   ASSERT_EQ(run(o), 0);
@@ -117,7 +117,7 @@ TEST_P(SimCommand, ShortLinkDropIsRidden) {
 }
 
 TEST_P(SimCommand, LinkDownTooLongStopsAndReportsTheLastSegment) {
-  cli::SimOptions o = options();
+  simulated::SimOptions o = options();
   o.faults = {"link-stall@1.0:3"};
   ASSERT_EQ(run(o), 1);
   const std::string rep = slurp(o.report);
@@ -133,7 +133,7 @@ TEST_P(SimCommand, LinkDownTooLongStopsAndReportsTheLastSegment) {
 }
 
 TEST_P(SimCommand, CrcErrorsAreRiddenOverRtuAndRefusedOverTcp) {
-  cli::SimOptions o = options();
+  simulated::SimOptions o = options();
   o.faults = {"crc-error@1.0", "crc-error@1.5"};
   if (GetParam() == Wire::tcp) {
     ASSERT_EQ(run(o), 2);  // TCP frames carry no CRC
@@ -160,10 +160,10 @@ namespace {
 // A G-code job (by its extension): its torch-on moves, split into paths at
 // rapids, fitted and cut like a point file's paths.
 TEST(SimCommandGcode, RunsAGcodeJobPathByPath) {
-  cli::SimOptions o;
+  simulated::SimOptions o;
   o.file = std::string(KERF_GCODE_DIR) + "/cncjs_jsdc-laser.gcode";
   o.report = ::testing::TempDir() + "kerf_sim_gcode_" + std::to_string(::getpid()) + ".json";
-  ASSERT_EQ(cli::run_sim(o), 0);
+  ASSERT_EQ(simulated::run_sim(o), 0);
   const std::string rep = slurp(o.report);
   EXPECT_NE(rep.find("\"state\": \"done\""), std::string::npos) << rep;
   EXPECT_EQ(json_number(rep, "paths"), 5.0);  // J, S, D's outside and inside, C

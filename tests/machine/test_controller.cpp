@@ -45,8 +45,8 @@ control::ControllerConfig fast_cut() {
 TEST(Controller, CutsEveryPathOnceWithTheTorchOnlyOnWhileCutting) {
   const control::Job job = two_paths();
   FakeGpio gpio;
-  control::SimMachineConfig m;
-  const auto r = control::run_sim_machine(job, fast_cut(), m, gpio, nullptr, {});
+  simulated::SimMachineConfig m;
+  const auto r = simulated::run_sim_machine(job, fast_cut(), m, gpio, nullptr, {});
   ASSERT_EQ(r.setup_error, "");
   EXPECT_EQ(r.run.state, State::done) << r.run.reason;
   EXPECT_EQ(r.run.completed_this_run, 4u);
@@ -74,7 +74,7 @@ namespace kerf::test {
 namespace {
 
 // The first trace sample at or after t.
-std::size_t sample_at(const control::SimMachineResult& r, double t) {
+std::size_t sample_at(const simulated::SimMachineResult& r, double t) {
   std::size_t i = 0;
   while (i + 1 < r.trace.size() && r.trace[i].t_s < t) ++i;
   return i;
@@ -82,12 +82,12 @@ std::size_t sample_at(const control::SimMachineResult& r, double t) {
 
 // Torch off in the cycle the input tripped, motion stopped on the path
 // within the braking distance of the feed (v^2 / 2a, plus one cycle).
-void expect_safe_stop(const control::SimMachineResult& r, const FakeGpio& gpio, double trip_t) {
+void expect_safe_stop(const simulated::SimMachineResult& r, const FakeGpio& gpio, double trip_t) {
   ASSERT_FALSE(gpio.changes.empty());
   EXPECT_FALSE(gpio.changes.back().on);
   EXPECT_GE(gpio.changes.back().t, trip_t);
   EXPECT_LT(gpio.changes.back().t, trip_t + 0.002 + 1e-9) << "torch off later than one cycle";
-  const control::SimMachineConfig defaults;
+  const simulated::SimMachineConfig defaults;
   const double v = 50.0, a = defaults.motion.accel_mm_s2;
   const Vec2<double> at_trip = r.trace[sample_at(r, trip_t)].pos;
   EXPECT_LE(distance(at_trip, r.run.stopped_at), v * v / (2 * a) + v * 0.002 + 1e-6);
@@ -100,7 +100,7 @@ TEST(ControllerFaults, EStopMidArcStopsOnThePathAndKeepsTheCutPoint) {
   FakeGpio gpio;
   // Path 1 pierces at about 2.1 s; the arc takes 0.63 s.
   gpio.at(2.4, [](FakeGpio& g) { g.inputs.estop = true; });
-  const auto r = control::run_sim_machine(job, fast_cut(), {}, gpio, nullptr, {});
+  const auto r = simulated::run_sim_machine(job, fast_cut(), {}, gpio, nullptr, {});
   ASSERT_EQ(r.setup_error, "");
   EXPECT_EQ(r.run.state, State::estop);
   EXPECT_EQ(r.run.reason, "E-stop");
@@ -116,7 +116,7 @@ TEST(ControllerFaults, ArcLostWhileCuttingIsAFault) {
   const control::Job job = two_paths();
   FakeGpio gpio;
   gpio.at(0.8, [](FakeGpio& g) { g.arc_lost = true; });
-  const auto r = control::run_sim_machine(job, fast_cut(), {}, gpio, nullptr, {});
+  const auto r = simulated::run_sim_machine(job, fast_cut(), {}, gpio, nullptr, {});
   EXPECT_EQ(r.run.state, State::fault);
   EXPECT_NE(r.run.reason.find("arc-OK lost while cutting segment 0"), std::string::npos) << r.run.reason;
   expect_safe_stop(r, gpio, 0.8);
@@ -126,7 +126,7 @@ TEST(ControllerFaults, NoArcAtThePierceTimesOutWithoutMoving) {
   const control::Job job = two_paths();
   FakeGpio gpio;
   gpio.arc_works = false;
-  const auto r = control::run_sim_machine(job, fast_cut(), {}, gpio, nullptr, {});
+  const auto r = simulated::run_sim_machine(job, fast_cut(), {}, gpio, nullptr, {});
   EXPECT_EQ(r.run.state, State::fault);
   EXPECT_NE(r.run.reason.find("no arc-OK within 0.5 s"), std::string::npos) << r.run.reason;
   ASSERT_EQ(gpio.changes.size(), 2u);
@@ -141,16 +141,16 @@ TEST(ControllerFaults, LimitSwitchAndDriveFaultStopTheCut) {
     FakeGpio gpio;
     gpio.inputs.limit_count = 2;
     gpio.at(0.5, [](FakeGpio& g) { g.inputs.limit[1] = true; });
-    const auto r = control::run_sim_machine(job, fast_cut(), {}, gpio, nullptr, {});
+    const auto r = simulated::run_sim_machine(job, fast_cut(), {}, gpio, nullptr, {});
     EXPECT_EQ(r.run.state, State::fault);
     EXPECT_EQ(r.run.reason, "limit switch 1 hit");
     expect_safe_stop(r, gpio, 0.5);
   }
   {
     FakeGpio gpio;
-    control::SimMachineConfig m;
-    m.faults = {{control::BoardFaultKind::drive_fault, 0.5, 0.0}};
-    const auto r = control::run_sim_machine(job, fast_cut(), m, gpio, nullptr, {});
+    simulated::SimMachineConfig m;
+    m.faults = {{simulated::BoardFaultKind::drive_fault, 0.5, 0.0}};
+    const auto r = simulated::run_sim_machine(job, fast_cut(), m, gpio, nullptr, {});
     EXPECT_EQ(r.run.state, State::fault);
     EXPECT_NE(r.run.reason.find("drive-fault"), std::string::npos) << r.run.reason;
     expect_safe_stop(r, gpio, 0.5);
@@ -164,7 +164,7 @@ TEST(ControllerFaults, FeedHoldStopsThenRepiercesWhereItStopped) {
   gpio.at(0.7, [](FakeGpio& g) { g.inputs.hold = false; });
   gpio.at(1.5, [](FakeGpio& g) { g.inputs.cycle_start = true; });
   gpio.at(1.6, [](FakeGpio& g) { g.inputs.cycle_start = false; });
-  const auto r = control::run_sim_machine(job, fast_cut(), {}, gpio, nullptr, {});
+  const auto r = simulated::run_sim_machine(job, fast_cut(), {}, gpio, nullptr, {});
   EXPECT_EQ(r.run.state, State::done) << r.run.reason;
   EXPECT_EQ(r.executed, (std::vector<std::int64_t>{0, 1, 2, 3}));
   EXPECT_EQ(r.run.pierces, 3u);
@@ -183,9 +183,9 @@ TEST(ControllerResume, StartsAtTheCutPointAndCutsTheRestOnce) {
   control::ResumePoint from;
   from.first = 2;
   from.from = {70, -10};  // the bottom of the arc (CCW from (60, 0))
-  control::SimMachineConfig m;
+  simulated::SimMachineConfig m;
   m.start = {5, 5};  // wherever the axes were left
-  const auto r = control::run_sim_machine(job, fast_cut(), m, gpio, nullptr, from);
+  const auto r = simulated::run_sim_machine(job, fast_cut(), m, gpio, nullptr, from);
   EXPECT_EQ(r.run.state, State::done) << r.run.reason;
   EXPECT_EQ(r.executed, (std::vector<std::int64_t>{2, 3}));
   ASSERT_EQ(gpio.changes.size(), 2u);
@@ -216,7 +216,7 @@ TEST(ControllerFaults, HoldDuringTheRepierceStillResumesTheHeldPath) {
   press(1.5, &hal::GpioInputs::cycle_start);
   press(1.54, &hal::GpioInputs::hold);  // during the re-pierce's delay
   press(2.0, &hal::GpioInputs::cycle_start);
-  const auto r = control::run_sim_machine(job, fast_cut(), {}, gpio, nullptr, {});
+  const auto r = simulated::run_sim_machine(job, fast_cut(), {}, gpio, nullptr, {});
   EXPECT_EQ(r.run.state, State::done) << r.run.reason;
   EXPECT_EQ(r.executed, (std::vector<std::int64_t>{0, 1, 2, 3}));
   EXPECT_EQ(r.run.pierces, 4u);

@@ -35,13 +35,13 @@ std::string torch_pattern(const std::vector<sim::TorchChange>& changes) {
   return s;
 }
 
-bool parse_board_fault(const std::string& text, control::BoardFault& f) {
+bool parse_board_fault(const std::string& text, simulated::BoardFault& f) {
   const std::size_t at = text.find('@');
   if (at == std::string::npos) return false;
   const std::string kind = text.substr(0, at);
-  if (kind == "drive-fault") f.kind = control::BoardFaultKind::drive_fault;
-  else if (kind == "link-stall") f.kind = control::BoardFaultKind::link_stall;
-  else if (kind == "link-drop") f.kind = control::BoardFaultKind::link_drop;
+  if (kind == "drive-fault") f.kind = simulated::BoardFaultKind::drive_fault;
+  else if (kind == "link-stall") f.kind = simulated::BoardFaultKind::link_stall;
+  else if (kind == "link-drop") f.kind = simulated::BoardFaultKind::link_drop;
   else return false;
   const std::string rest = text.substr(at + 1);
   const std::size_t colon = rest.find(':');
@@ -52,7 +52,7 @@ bool parse_board_fault(const std::string& text, control::BoardFault& f) {
 
 struct Rig {
   config::Config cfg;
-  cli::FittedJob fitted;
+  control::FittedJob fitted;
   std::string journal;
 };
 
@@ -62,7 +62,7 @@ void prepare(const Scenario& sc, Rig& rig) {
   const io::PointFile in = io::read_points(sc.job);
   ASSERT_TRUE(in.ok) << io::describe_error(in);
   Status st = Status::ok;
-  ASSERT_TRUE(cli::fit_paths(in, rig.cfg.fit.criterion, sc.tol.value_or(rig.cfg.fit.tol), rig.cfg.cut.feed / 60.0,
+  ASSERT_TRUE(control::fit_paths(in, rig.cfg.fit.criterion, sc.tol.value_or(rig.cfg.fit.tol), rig.cfg.cut.feed / 60.0,
                              rig.fitted, error, st))
       << error;
   rig.journal = ::testing::TempDir() + "kerf_scenario_" + std::to_string(::getpid()) + "_" +
@@ -70,7 +70,7 @@ void prepare(const Scenario& sc, Rig& rig) {
 }
 
 // The index of the first trace sample at or after t.
-std::size_t sample_at(const control::SimMachineResult& r, double t) {
+std::size_t sample_at(const simulated::SimMachineResult& r, double t) {
   std::size_t i = 0;
   while (i + 1 < r.trace.size() && r.trace[i].t_s < t) ++i;
   return i;
@@ -94,10 +94,10 @@ TEST_P(ScenarioTest, OutcomeAsExpected) {
   std::vector<sim::GpioEvent> events;
   ASSERT_TRUE(sim::parse_gpio_script(sc.gpio_script, sc.file + " [gpio]", 2, events, error)) << error;
   ASSERT_TRUE(gpio.add(events, error)) << error;
-  control::SimMachineConfig m = control::sim_machine_config(rig.cfg);
+  simulated::SimMachineConfig m = simulated::sim_machine_config(rig.cfg);
   m.start = job.paths.front().start;
   for (const std::string& f : sc.faults) {
-    control::BoardFault bf;
+    simulated::BoardFault bf;
     ASSERT_TRUE(parse_board_fault(f, bf)) << f;
     m.faults.push_back(bf);
   }
@@ -106,7 +106,7 @@ TEST_P(ScenarioTest, OutcomeAsExpected) {
   control::ResumePoint from;
   from.from = job.paths.front().start;
   const control::ControllerConfig ccfg = control::controller_config(rig.cfg);
-  const auto r = control::run_sim_machine(job, ccfg, m, gpio, journal.get(), from);
+  const auto r = simulated::run_sim_machine(job, ccfg, m, gpio, journal.get(), from);
   ASSERT_EQ(r.setup_error, "");
 
   EXPECT_EQ(control::to_string(r.run.state), sc.expect.state) << r.run.reason;
@@ -164,9 +164,9 @@ TEST_P(ScenarioTest, OutcomeAsExpected) {
   const control::ResumePoint rp = control::resume_point(job, again->state());
   ASSERT_FALSE(rp.done);
   sim::ScriptedGpio fresh(gopts);
-  control::SimMachineConfig m2 = control::sim_machine_config(rig.cfg);
+  simulated::SimMachineConfig m2 = simulated::sim_machine_config(rig.cfg);
   m2.start = job.paths.front().start;  // powered up again at home
-  const auto r2 = control::run_sim_machine(job, ccfg, m2, fresh, again.get(), rp);
+  const auto r2 = simulated::run_sim_machine(job, ccfg, m2, fresh, again.get(), rp);
   ASSERT_EQ(r2.setup_error, "");
   EXPECT_EQ(r2.run.state, control::State::done) << r2.run.reason;
   EXPECT_EQ(again->state().executed_total, job.segment_count());

@@ -69,7 +69,7 @@ TEST(BandChainCache, SamePiecesWithAndWithoutOnTheTestCurves) {
 
 TEST(BandChainCache, SamePiecesWithAndWithoutOnTheGcodeCorpus) {
   for (const char* name : {"cncjs_jsdc-laser.gcode", "cncjs_tball-engrave.gcode"}) {
-    const kerf::io::GcodeFile g = kerf::io::read_gcode(std::string(KERF_TEST_DATA_DIR) + "/gcode/" + name);
+    const kerf::job::GcodeFile g = kerf::job::read_gcode(std::string(KERF_TEST_DATA_DIR) + "/gcode/" + name);
     ASSERT_TRUE(g.ok) << name << ":" << g.line << ": " << g.reason;
     for (std::size_t k = 0; k < g.polylines.size(); ++k) {
       std::vector<VD> p;

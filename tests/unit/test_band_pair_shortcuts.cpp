@@ -120,8 +120,8 @@ TEST(BandPairShortcuts, SameVerdictsAndRangesOnJitterAndZigzags) {
 
 TEST(BandPairShortcuts, SameVerdictsAndRangesOnCorpusPolylines) {
   Tally tally;
-  const kerf::io::GcodeFile g =
-      kerf::io::read_gcode(std::string(KERF_TEST_DATA_DIR) + "/gcode/cncjs_tball-pocket.gcode");
+  const kerf::job::GcodeFile g =
+      kerf::job::read_gcode(std::string(KERF_TEST_DATA_DIR) + "/gcode/cncjs_tball-pocket.gcode");
   ASSERT_TRUE(g.ok) << g.line << ": " << g.reason;
   std::size_t taken = 0;
   for (std::size_t k = 0; k < g.polylines.size() && taken < 4; ++k) {

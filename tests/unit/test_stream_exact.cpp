@@ -50,7 +50,7 @@ std::vector<Path> paths() {
     c.push_back({"random " + std::to_string(seed), random_curve(seed, 600), 0.05});
   for (const char* f : {"cncjs_Circle_Diamond_Square_Calibration.gcode", "cncjs_jsdc-laser.gcode",
                         "cncjs_tball-engrave.gcode"}) {
-    const kerf::io::GcodeFile g = kerf::io::read_gcode(std::string(KERF_TEST_DATA_DIR) + "/gcode/" + f);
+    const kerf::job::GcodeFile g = kerf::job::read_gcode(std::string(KERF_TEST_DATA_DIR) + "/gcode/" + f);
     EXPECT_TRUE(g.ok) << f;
     for (std::size_t p = 0; p < g.polylines.size(); ++p) {
       std::vector<V> pd;

@@ -148,7 +148,7 @@ TYPED_TEST(TypedBand, CountsMatchDoubleOnTheGcodeCorpus) {
                          "cncjs_tball-engrave.gcode"};
   const double tol = 0.025;  // kerf weld's default
   for (const char* name : files) {
-    const kerf::io::GcodeFile g = kerf::io::read_gcode(std::string(KERF_TEST_DATA_DIR) + "/gcode/" + name);
+    const kerf::job::GcodeFile g = kerf::job::read_gcode(std::string(KERF_TEST_DATA_DIR) + "/gcode/" + name);
     ASSERT_TRUE(g.ok) << name << ":" << g.line << ": " << g.reason;
     std::uint32_t total_d = 0, total_s = 0;
     std::size_t paths = 0;
