@@ -70,12 +70,6 @@ int run(const char* name, Storage<S>& st) {
 
 }  // namespace
 
-extern "C" void kerf_assert_failed(const char* expr, const char* file, int line) {
-  std::printf("%s:%d: contract violated: %s\n", file, line, expr);
-  for (;;) {
-  }
-}
-
 int main() {
 #ifndef KERF_MCU_FIXED_ONLY
   if (run<double>("double", double_storage) != 0) return 1;

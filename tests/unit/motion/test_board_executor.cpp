@@ -54,6 +54,22 @@ struct Rig {
     for (std::uint32_t k = e.completed_from + 1; k <= e.completed_to; ++k) completed.push_back(k);
     return e;
   }
+  // Lines 1 .. n, to (10 k, 0), and start (and finish: no more to come).
+  void start_lines(std::uint32_t n, bool finish) {
+    for (std::uint32_t k = 1; k <= n; ++k)
+      EXPECT_EQ(exec->accept(line(k, 10 * static_cast<int>(k))), BoardAccept::queued) << k;
+    EXPECT_TRUE(exec->command(BoardCommand::start));
+    if (finish) {
+      EXPECT_TRUE(exec->command(BoardCommand::finish));
+    }
+  }
+  // Runs to done; it must end at (x, 0) having completed `want`, in order.
+  void expect_done_at(double x, const std::vector<std::uint32_t>& want) {
+    ASSERT_TRUE(run_until([&] { return exec->state() == BoardState::done; }, 5000));
+    EXPECT_EQ(to_d(exec->position().x), x);
+    EXPECT_EQ(to_d(exec->position().y), 0.0);
+    EXPECT_EQ(completed, want);
+  }
   // Steps until pred holds (true) or n periods pass (false).
   template <class P>
   bool run_until(P pred, int n) {
@@ -146,9 +162,7 @@ TYPED_TEST(BoardExecutorTest, HoldBrakesOnThePathAndResumeFinishes) {
   using R = Rig<TypeParam>;
   R r;
   auto& e = *r.exec;
-  for (std::uint32_t k = 1; k <= 2; ++k) ASSERT_EQ(e.accept(R::line(k, 10 * static_cast<int>(k))), BoardAccept::queued);
-  ASSERT_TRUE(e.command(BoardCommand::start));
-  ASSERT_TRUE(e.command(BoardCommand::finish));
+  r.start_lines(2, true);
   ASSERT_TRUE(r.run_until([&] { return to_d(e.position().x) > 5.0; }, 5000));
   const double at_hold = to_d(e.position().x);
   ASSERT_TRUE(e.command(BoardCommand::hold));
@@ -165,17 +179,14 @@ TYPED_TEST(BoardExecutorTest, HoldBrakesOnThePathAndResumeFinishes) {
   EXPECT_LT(held, at_hold + 0.625 + 0.05 + 0.002);
   ASSERT_TRUE(e.command(BoardCommand::resume));
   EXPECT_TRUE(e.needs_step(true));
-  ASSERT_TRUE(r.run_until([&] { return e.state() == BoardState::done; }, 5000));
-  EXPECT_EQ(to_d(e.position().x), 20.0);
-  EXPECT_EQ(r.completed, (std::vector<std::uint32_t>{1, 2}));
+  r.expect_done_at(20.0, {1, 2});
 }
 
 TYPED_TEST(BoardExecutorTest, TheFaultIsLatchedWhileBrakingAndResetsAtRest) {
   using R = Rig<TypeParam>;
   R r;
   auto& e = *r.exec;
-  for (std::uint32_t k = 1; k <= 4; ++k) ASSERT_EQ(e.accept(R::line(k, 10 * static_cast<int>(k))), BoardAccept::queued);
-  ASSERT_TRUE(e.command(BoardCommand::start));
+  r.start_lines(4, false);
   ASSERT_TRUE(r.run_until([&] { return to_d(e.position().x) > 15.0; }, 5000));
   ASSERT_TRUE(e.torch());
   ASSERT_TRUE(e.command(BoardCommand::abort));
@@ -206,9 +217,7 @@ TYPED_TEST(BoardExecutorTest, TheFaultIsLatchedWhileBrakingAndResetsAtRest) {
   ASSERT_EQ(e.accept(R::line(5, 40)), BoardAccept::queued);
   ASSERT_TRUE(e.command(BoardCommand::start));
   ASSERT_TRUE(e.command(BoardCommand::finish));
-  ASSERT_TRUE(r.run_until([&] { return e.state() == BoardState::done; }, 5000));
-  EXPECT_EQ(to_d(e.position().x), 40.0);
-  EXPECT_EQ(r.completed, (std::vector<std::uint32_t>{1, 5}));
+  r.expect_done_at(40.0, {1, 5});
 }
 
 TYPED_TEST(BoardExecutorTest, AResetAtRestIsImmediateAndAFaultAfterItWantsItsOwn) {
