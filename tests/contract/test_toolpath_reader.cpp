@@ -75,6 +75,18 @@ TEST(ToolpathReader, TorchAndCutMoves) {
   EXPECT_EQ(cut_moves(dry).size(), 2u);
 }
 
+TEST(ToolpathReader, MarksWhereZMoves) {
+  const Toolpath t = parse_toolpath("G1 X1\nG1 Z-1\nG1 X2\nG3 X2 Y0 I1 J0 Z-2\nG1 X3 Z-2\n");
+  ASSERT_TRUE(t.ok) << t.error;
+  ASSERT_EQ(t.moves.size(), 4u);
+  EXPECT_FALSE(t.moves[0].after_z || t.moves[0].z_moves);
+  EXPECT_TRUE(t.moves[1].after_z);
+  EXPECT_FALSE(t.moves[1].z_moves);
+  EXPECT_TRUE(t.moves[2].z_moves);  // a helix: a full circle going down
+  EXPECT_TRUE(t.moves[2].arc);
+  EXPECT_FALSE(t.moves[3].after_z || t.moves[3].z_moves);  // Z-2 again: no change
+}
+
 TEST(ToolpathReader, WordsWithoutBlanksAndComments) {
   const Toolpath t = parse_toolpath("%\nN10G1X1.5Y-2(comment)E1.1F1800.0 ; more\n/G1 X2\n");
   ASSERT_TRUE(t.ok) << t.error;

@@ -62,6 +62,8 @@ struct State {
   bool arc_absolute = false;  // G90.1
   int motion = -1;            // 0..3
   TPoint pos;                 // machine coordinates, mm
+  double z = 0;               // program Z, mm (only whether it changes matters)
+  bool z_since_xy = false;    // Z moved on its own since the last XY move
   TPoint work[9];             // G54..G59.3 offsets, mm
   int system = 0;
   TPoint g92;
@@ -88,6 +90,8 @@ Toolpath parse_toolpath(const std::string& text) {
     ++line;
     std::string why;
     if (!words_of(raw, words, why)) return fail(why);
+    bool has_z = false;
+    double z = 0;
     bool has_x = false, has_y = false, has_i = false, has_j = false, has_r = false, has_p = false;
     double x = 0, y = 0, i = 0, j = 0, r = 0, p = 0;
     bool g53 = false, g92 = false, end = false, home = false;
@@ -96,6 +100,7 @@ Toolpath parse_toolpath(const std::string& text) {
     for (const Word& w : words) {
       switch (w.letter) {
         case 'X': has_x = true; x = w.value; break;
+        case 'Z': has_z = true; z = w.value; break;
         case 'Y': has_y = true; y = w.value; break;
         case 'I': has_i = true; i = w.value; break;
         case 'J': has_j = true; j = w.value; break;
@@ -174,6 +179,10 @@ Toolpath parse_toolpath(const std::string& text) {
       continue;
     }
     st.motion = motion;
+    const double z_to = !has_z || st.motion < 0 ? st.z : st.relative ? st.z + z * st.unit : z * st.unit;
+    const bool z_moves = z_to != st.z;
+    st.z = z_to;
+    if (!(has_x || has_y) && z_moves) st.z_since_xy = true;
     if ((has_x || has_y) && st.motion >= 0) {
       const TPoint off = g53 ? TPoint{0, 0} : offset(st);
       TPoint to = st.pos;
@@ -190,6 +199,9 @@ Toolpath parse_toolpath(const std::string& text) {
       m.end = to;
       m.torch = st.torch;
       m.line = line;
+      m.z_moves = z_moves;
+      m.after_z = st.z_since_xy;
+      st.z_since_xy = false;
       if (st.motion >= 2) {
         m.arc = true;
         m.dir = st.motion == 3 ? 1 : -1;

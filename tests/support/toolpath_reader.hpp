@@ -33,6 +33,8 @@ struct TMove {
   int dir = 0;         // arcs: +1 counter-clockwise (G3), -1 clockwise (G2)
   TPoint start, end, centre;
   bool torch = false;  // M3/M4 in force
+  bool z_moves = false;   // the block also moves Z (a helix, a ramp)
+  bool after_z = false;   // Z moved on its own since the previous XY move
   std::size_t line = 0;
 };
 
