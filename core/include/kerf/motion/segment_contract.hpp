@@ -154,13 +154,14 @@ bool arc_on_grid(Vec2<S> from, const Segment<S>& fitted, S fitted_sweep, const S
 // link's rounding (its points are grid points). Deviation from the fitted
 // piece, with q = 1 / per_mm:
 //   - ends and centre move by at most q/sqrt(2) each (the rounding itself);
-//   - a piece whose end rounds onto `from` emits nothing: it is at most
-//     q long, and the next piece starts there (merged);
+//   - a piece whose end rounds onto `from` emits nothing: it spans at most
+//     about 1.5 q, and the next piece starts there (merged);
 //   - an arc that does not survive rounding (its sweep would wrap through 0
 //     or 2 pi, or its centre lies beyond the grid) is split at its middle
 //     when its sweep exceeds pi/2, and otherwise, or when a half still does
 //     not survive, given as its chord. That happens only to arcs whose
-//     radius is a few q (their chord lies within 2 r of them) or whose
+//     radius is a few q (the chord of a sweep up to pi/2 lies within 0.3 r
+//     of the arc; the unit tests measure under 3 q in all) or whose
 //     centre is beyond the grid's range (over 2 km for 1 um counts: their
 //     sagitta on any cut is below q).
 template <class S>
