@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
-# `kerf run` end to end against kerf-board-sim (another process, Modbus TCP),
-# with the bench's simulated GPIO: SIGTERM mid-job stops it safely with the
-# progress journaled, --resume finishes the job, each segment once.
+# kerf run's loop and machine factory end to end against kerf-board-sim
+# (another process, Modbus TCP), with kerf-sim's scripted lines (`kerf-sim
+# run`): SIGTERM mid-job stops it safely with the progress journaled,
+# --resume finishes the job, each segment once.
 #
-#   run_on_bench.sh KERF BOARD_SIM JOB SIM_TOML WORKDIR
+#   run_on_bench.sh KERF_SIM BOARD_SIM JOB SIM_TOML WORKDIR
 set -euo pipefail
 kerf=$1 board=$2 job=$3 sim_toml=$4 dir=$5
 mkdir -p "$dir"
@@ -17,7 +18,7 @@ echo "$line"
 # The example simulator config, pointed at this board's port.
 sed -e "s/^port = .*/port = $port/" -e "s/^pierce_delay = .*/pierce_delay = 0.2/" "$sim_toml" >"$dir/bench.toml"
 
-"$kerf" run --config "$dir/bench.toml" --sim-gpio --journal "$dir/journal" --report "$dir/r1.json" "$job" \
+"$kerf" run --config "$dir/bench.toml" --journal "$dir/journal" --report "$dir/r1.json" "$job" \
   >"$dir/run1.out" 2>"$dir/run1.err" &
 pid=$!
 for _ in $(seq 1 400); do
@@ -31,7 +32,7 @@ wait "$pid" || rc=$?
 cat "$dir/run1.out" "$dir/run1.err"
 ((rc == 1)) || { echo "FAIL: SIGTERM should end the run with exit 1, got $rc"; exit 1; }
 
-"$kerf" run --config "$dir/bench.toml" --sim-gpio --journal "$dir/journal" --resume --report "$dir/r2.json" "$job"
+"$kerf" run --config "$dir/bench.toml" --journal "$dir/journal" --resume --report "$dir/r2.json" "$job"
 python3 - "$dir/r1.json" "$dir/r2.json" <<'PY'
 import json, sys
 r1, r2 = (json.load(open(p)) for p in sys.argv[1:3])
