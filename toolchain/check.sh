@@ -28,7 +28,7 @@ if ! bash toolchain/setup.sh; then
 fi
 
 presets=("$@")
-((${#presets[@]})) || presets=(host debug-asan aarch64 armhf cortex-m4 cortex-m0 fuzz)
+((${#presets[@]})) || presets=(host debug-asan tsan aarch64 armhf cortex-m4 cortex-m0 fuzz)
 fresh=()
 [[ "${KERF_FRESH:-1}" == 0 ]] || fresh=(--fresh)
 
