@@ -60,6 +60,13 @@ struct Rt {
   bool lock_memory = false;
 };
 
+// A bench: the machine's axes without a torch. `kerf run` then runs motion
+// only, refuses any torch output, and marks every status line and the report
+// BENCH (machine/machine_factory.hpp).
+struct Bench {
+  bool enabled = false;
+};
+
 struct Config {
   std::string file;  // where it was read from; "(defaults)" for defaults()
   Machine machine;
@@ -68,6 +75,7 @@ struct Config {
   Fit fit;
   Cut cut;
   Rt rt;
+  Bench bench;
 };
 
 // The defaults above, as a config for the simulator (kerf sim without --config).

@@ -28,6 +28,7 @@ void read_gpio(TableReader& r, hal::GpioConfig& gpio, std::vector<LineUse>& uses
 void read_fit(TableReader& r, Fit& fit);
 void read_cut(TableReader& r, Cut& cut);
 void read_rt(TableReader& r, Rt& rt);
+void read_bench(TableReader& r, Bench& bench);
 
 void check_machine(TableReader& machine, const Machine& m);
 void check_link(TableReader& link_reader, const Link& link, const TableReader& machine,
