@@ -84,6 +84,19 @@ Status Interpolator<S>::push(const PathSegment<S>& p) {
   q.turn = queue_.empty() ? S(0) : turn_chord(tail_tangent_, q.tangent_in);
   q.corner_step = queue_.empty() ? Scalar<S>::infinity()
                                  : joint_step_limit(q.turn, tail_kappa_, q.curvature, a, b);
+  // Two chords span up to two steps: the turns of joints closer than that
+  // behind this one add up (pieces shorter than a step).
+  S turns = q.turn;
+  S kappa_in = Scalar<S>::abs(tail_kappa_);
+  S behind = S(0);
+  for (std::size_t i = queue_.size(); i > 0 && q.corner_step < Scalar<S>::infinity(); --i) {
+    const QueuedSegment<S>& e = queue_[i - 1];
+    behind = behind + e.length;
+    if (!(behind < S(2) * q.corner_step) || i == 1) break;  // the front's joint is behind the head
+    turns = turns + e.turn;
+    kappa_in = max_of(kappa_in, Scalar<S>::abs(queue_[i - 2].curvature));
+    q.corner_step = min_of(q.corner_step, joint_step_limit(turns, kappa_in, q.curvature, a, b));
+  }
   const Status s = queue_.push(q);
   if (s != Status::ok) return s;
   if (q.curved()) ++curved_count_;
@@ -178,7 +191,9 @@ S Interpolator<S>::plan_step() {
     // plan keeps to w from approach(w) before it, so that the steps on both
     // sides of the point do. The end of the queue is reached exactly.
     if (w < x) {
-      const S r = rate(x, turn_run, kappa_run);
+      // The end of the queue may turn into a joint of any turn when the
+      // sender pushes more: braking there leaves the normal part its share.
+      const S r = j + 1 < n ? rate(x, turn_run, kappa_run) : min_of(rate_floor_, rate(x, turn_run, kappa_run));
       x = min_of(x, max_step_before(w > S(0) ? d - approach(w) : d, w, r));
     }
     if (j + 1 < n) {
@@ -319,7 +334,10 @@ Setpoint<S> Interpolator<S>::step() {
     tail_end_ = last_.position;
     ended = true;
   }
-  if (ended) abort_ = hold_ = false;
+  if (ended) {  // at rest: a segment pushed now starts from rest, with no joint behind it
+    abort_ = hold_ = false;
+    step_ = span_turn_ = span_kappa_ = S(0);
+  }
   if (ended) last_.state = MotionState::done;
   else if (hold_ || abort_) last_.state = at_rest ? MotionState::held : MotionState::stopping;
   else last_.state = MotionState::running;
