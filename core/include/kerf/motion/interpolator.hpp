@@ -69,6 +69,9 @@ struct MotionConfig {
   S accel{};                          // acceleration limit in the plane, mm/s^2 (> 0)
   S jerk{};                           // mm/s^3; 0: trapezoidal, > 0: S-curve (needs a window)
   S corner_angle{};                   // rad in [0, pi]; no longer used by the limits
+  // Torch-height control locks (Setpoint::thc_lock) while the speed is below
+  // this fraction of the segment's feed (times the override): velocity anti-dive.
+  S vad = S(0.9);                     // in [0, 1]
   Vec2<S> counts_per_mm{S(1), S(1)};  // per axis (> 0)
 };
 
@@ -81,6 +84,7 @@ struct Setpoint {
   std::uint64_t segment = 0;   // index of the segment (0 = first pushed since reset)
   std::uint32_t sequence = 0;  // that segment's sequence number
   MotionState state = MotionState::idle;
+  bool thc_lock = true;        // speed below vad of the cut feed: hold the torch height
 };
 
 template <class S>

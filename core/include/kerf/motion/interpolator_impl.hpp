@@ -17,7 +17,8 @@ Status Interpolator<S>::configure(const MotionConfig<S>& c) {
   using Sc = Scalar<S>;
   const bool finite = Sc::is_finite(c.period) && Sc::is_finite(c.accel) &&
                       Sc::is_finite(c.jerk) && Sc::is_finite(c.corner_angle) &&
-                      Sc::is_finite(c.counts_per_mm.x) && Sc::is_finite(c.counts_per_mm.y);
+                      Sc::is_finite(c.counts_per_mm.x) && Sc::is_finite(c.counts_per_mm.y) &&
+                      Sc::is_finite(c.vad) && !(c.vad < S(0)) && !(c.vad > S(1));
   if (!finite || !(c.period > S(0)) || !(c.accel > S(0)) || c.jerk < S(0) ||
       c.corner_angle < S(0) || c.corner_angle > Sc::pi() || !(c.counts_per_mm.x > S(0)) ||
       !(c.counts_per_mm.y > S(0)))
@@ -287,6 +288,7 @@ Setpoint<S> Interpolator<S>::step() {
   if (queue_.empty()) {
     step_ = S(0);
     last_.speed = S(0);
+    last_.thc_lock = true;
     if (last_.state != MotionState::idle) last_.state = MotionState::done;
     abort_ = false;
     return last_;
@@ -305,6 +307,7 @@ Setpoint<S> Interpolator<S>::step() {
   }
   bool ended = false;
   const QueuedSegment<S>& f = queue_.front();
+  const S cut_feed = f.path.feed * override_;  // (f is popped if the head ends here)
   last_.segment = front_index_;
   last_.sequence = f.path.sequence;
   if (plan_at_end_ && out_s_ == s_plan) {  // the head is at the end of the queue
@@ -322,6 +325,7 @@ Setpoint<S> Interpolator<S>::step() {
   }
   last_.s = out_s_;
   last_.speed = moved / config_.period;
+  last_.thc_lock = last_.speed < config_.vad * cut_feed;
   last_.counts = to_counts(last_.position, config_.counts_per_mm);
   const bool at_rest = !(step_ > S(0)) && !(moved > S(0)) && out_s_ == s_plan;
   if (abort_ && at_rest && !ended) {  // stopped on the path: drop the rest
