@@ -1,7 +1,9 @@
 // The motion code callers link against, for each scalar type the core is
 // built for.
 #include "kerf/core/fixed.hpp"
+#include "kerf/motion/board_executor.hpp"
 #include "kerf/motion/interpolator.hpp"
+#include "kerf/motion/interpolator_motion.hpp"
 #include "scalar_types.hpp"
 
 namespace kerf::motion {
@@ -16,7 +18,9 @@ namespace kerf::motion {
   template S turn_chord(Vec2<S>, Vec2<S>);                                          \
   template S joint_step_limit(S, S, S, S, S);                                      \
   template S curve_step_cap(S, S, S);                                              \
-  template S tangential_step(S, S);
+  template S tangential_step(S, S);                                                \
+  template class InterpolatorMotion<S>;                                            \
+  template class BoardExecutor<S, InterpolatorMotion<S>>;
 
 KERF_FOR_EACH_SCALAR(KERF_MOTION_INSTANCES)
 
