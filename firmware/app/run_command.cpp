@@ -32,7 +32,7 @@ int run_job(const RunOptions& opts, const char* who, RunCheck check, LinesOpener
   if (!job::read_job(opts.job, cfg.fit.criterion, in)) return kExitUsage;
   control::FittedJob fitted;
   if (const int rc = control::fit_paths_or_say(in, cfg.fit.criterion, cfg.fit.tol, cfg.cut.feed / 60.0, fitted,
-                                               cfg.fit.numeric);
+                                               cfg.fit.numeric, &cfg.cut.rules);
       rc != 0)
     return rc;
   // The devices before the journal: a new journal replaces the old one, which

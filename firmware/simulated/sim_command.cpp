@@ -197,7 +197,8 @@ int run_sim(const SimOptions& given) {
     return kExitUsage;
   }
   control::FittedJob fitted;
-  if (const int rc = control::fit_paths_or_say(in, *criterion, tol, feed / 60.0, fitted, *numeric); rc != 0) return rc;
+  if (const int rc = control::fit_paths_or_say(in, *criterion, tol, feed / 60.0, fitted, *numeric, &cfg.cut.rules); rc != 0)
+    return rc;
 
   std::unique_ptr<control::Journal> journal;
   control::ResumePoint from;
