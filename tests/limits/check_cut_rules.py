@@ -31,7 +31,7 @@ def circle(f, cx, r, n=240):
         f.write(f"{cx + r * math.cos(a):.9f} {r * math.sin(a):.9f}\n")
 
 
-def holes(kerf, src, out):
+def holes(kerf, src, out):  # kerf: the kerf-sim executable
     job = os.path.join(out, "holes.txt")
     with open(job, "w") as f:
         circle(f, 0, 10)   # 20 mm: a hole
@@ -98,9 +98,9 @@ def thc_lock(kerf, src, out):
 
 
 def main():
-    kerf, src, out = sys.argv[1:4]
+    kerf, kerf_sim, src, out = sys.argv[1:5]  # kerf plans, kerf-sim simulates
     os.makedirs(out, exist_ok=True)
-    holes(kerf, src, out)
+    holes(kerf_sim, src, out)
     thc_lock(kerf, src, out)
     if failures:
         print(f"{len(failures)} failed")
