@@ -27,7 +27,8 @@ template <class S>
 struct QueuedSegment {
   PathSegment<S> path{};
   S length{};           // mm along the path
-  S radius{};           // arcs only
+  S radius{};           // arcs only: |start - centre|
+  S radius_change{};    // arcs only: |end - centre| - radius (see point_at)
   S start_angle{};      // arcs only: angle of start - centre
   Vec2<S> tangent_in{};   // unit direction of travel at the start
   Vec2<S> tangent_out{};  // unit direction of travel at the end
