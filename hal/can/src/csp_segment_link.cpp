@@ -59,7 +59,7 @@ bool CspSegmentLink::configure(std::string& error) {
   for (int a = 0; a < 2; ++a) target_[a] = axes_.axis(static_cast<std::size_t>(a)).actual;
   position_ = {static_cast<double>(target_[0]) / cfg_.counts_per_mm.x,
                static_cast<double>(target_[1]) / cfg_.counts_per_mm.y};
-  tail_end_ = position_;
+  tail_end_ = actual_ = position_;
   return true;
 }
 
@@ -72,6 +72,7 @@ BoardStatus CspSegmentLink::status_locked() const {
   s.executing = executing_;
   s.last_executed = last_executed_;
   s.position = position_;
+  s.actual = actual_;
   s.torch = torch_;
   s.duplicates = duplicates_;
   return s;
@@ -240,8 +241,13 @@ void CspSegmentLink::cycle() {
   lock.lock();
   const AxisState& ax = axes_.axis(0);
   const AxisState& ay = axes_.axis(1);
-  position_ = {static_cast<double>(ax.actual) / cfg_.counts_per_mm.x,
-               static_cast<double>(ay.actual) / cfg_.counts_per_mm.y};
+  position_ = {static_cast<double>(tx) / cfg_.counts_per_mm.x, static_cast<double>(ty) / cfg_.counts_per_mm.y};
+  // 0x6064 from each TPDO. A drive silent for more than two SYNCs gives no
+  // feedback to judge: its setpoint stands in, and its heartbeat names it.
+  const std::uint64_t c = axes_.counters().cycles;
+  const bool fx = ax.feedback_cycle + 2 >= c, fy = ay.feedback_cycle + 2 >= c;
+  actual_ = {static_cast<double>(fx ? ax.actual : tx) / cfg_.counts_per_mm.x,
+             static_cast<double>(fy ? ay.actual : ty) / cfg_.counts_per_mm.y};
   // At rest means the drives have caught up with the last setpoint.
   settled_ = ax.actual == tx && ay.actual == ty;
   if (e != AxisError::none) fault_locked(fault_bit(e), axes_.last_error());
