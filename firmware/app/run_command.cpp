@@ -98,7 +98,9 @@ int run_run(const RunOptions& opts) {
   std::unique_ptr<control::Journal> journal;
   control::ResumePoint from;
   if (!control::open_journal(opts.journal, opts.resume, fitted.job, journal, from)) return kExitUsage;
-  return control::run_on_machine(fitted.job, cfg, *link, *gpio, journal.get(), from, opts.resume, opts.report);
+  // Simulated GPIO (a bench): the simulated operator gives the reset.
+  return control::run_on_machine(fitted.job, cfg, *link, *gpio, journal.get(), from, opts.resume, opts.report,
+                                 opts.reset || opts.sim_gpio);
 }
 
 }  // namespace kerf::app

@@ -13,6 +13,9 @@ CLI::App* add_run_command(CLI::App& app, RunOptions& o) {
   add_journal_options(r, o.journal, o.resume);
   r->add_flag("--sim-gpio", o.sim_gpio,
               "Bench mode: simulate the torch and inputs (arc-OK follows the torch). Never on a machine with a torch");
+  r->add_flag("--reset", o.reset,
+              "Reset the E-stop latch at start-up (refused while the E-stop is asserted); without it the "
+              "configured gpio.reset line must be pressed");
   add_report_option(r, o.report);
   add_job_file(r, "job", o.job)->type_name("JOB")->required();
   return r;

@@ -15,6 +15,7 @@ struct RunOptions {
   std::string journal;
   bool resume = false;
   bool sim_gpio = false;  // bench mode: the torch and inputs simulated
+  bool reset = false;     // the E-stop latch's reset edge at start-up
   std::string report;
   std::string job;      // point file (paths separated by blank lines)
 };

@@ -16,9 +16,12 @@
 
 namespace kerf::control {
 
-// Returns the exit code: 0 done, 1 stopped (fault, E-stop, signal) or the
-// report could not be written.
+// Returns the exit code: 0 done, 1 stopped (fault, E-stop, signal), the
+// report could not be written, or the E-stop latch can never be reset (no
+// `reset_at_start` and no gpio.reset line). With a reset line, a stopped run
+// waits latched for a reset and then finishes the job.
 int run_on_machine(const Job& job, const config::Config& cfg, hal::SegmentLink& link, hal::Gpio& gpio,
-                   Journal* journal, const ResumePoint& from, bool resumed, const std::string& report);
+                   Journal* journal, const ResumePoint& from, bool resumed, const std::string& report,
+                   bool reset_at_start = false);
 
 }  // namespace kerf::control

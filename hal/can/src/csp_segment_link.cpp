@@ -60,6 +60,7 @@ bool CspSegmentLink::configure(std::string& error) {
   position_ = {static_cast<double>(target_[0]) / cfg_.counts_per_mm.x,
                static_cast<double>(target_[1]) / cfg_.counts_per_mm.y};
   tail_end_ = actual_ = position_;
+  for (auto& s : sent_) s = {static_cast<std::int32_t>(target_[0]), static_cast<std::int32_t>(target_[1])};
   return true;
 }
 
@@ -241,13 +242,21 @@ void CspSegmentLink::cycle() {
   lock.lock();
   const AxisState& ax = axes_.axis(0);
   const AxisState& ay = axes_.axis(1);
-  position_ = {static_cast<double>(tx) / cfg_.counts_per_mm.x, static_cast<double>(ty) / cfg_.counts_per_mm.y};
-  // 0x6064 from each TPDO. A drive silent for more than two SYNCs gives no
-  // feedback to judge: its setpoint stands in, and its heartbeat names it.
+  // 0x6064 from each TPDO, beside the setpoint of the SYNC it was sampled
+  // at: the pair the following error compares, whatever the bus delay. A
+  // drive silent for more than two SYNCs gives nothing to judge: its latest
+  // setpoint stands in for both, and its heartbeat names it.
   const std::uint64_t c = axes_.counters().cycles;
-  const bool fx = ax.feedback_cycle + 2 >= c, fy = ay.feedback_cycle + 2 >= c;
-  actual_ = {static_cast<double>(fx ? ax.actual : tx) / cfg_.counts_per_mm.x,
-             static_cast<double>(fy ? ay.actual : ty) / cfg_.counts_per_mm.y};
+  sent_[c % sent_.size()] = {tx, ty};
+  std::int32_t cmd[2] = {tx, ty}, act[2] = {tx, ty};
+  for (int a = 0; a < 2; ++a) {
+    const AxisState& s = a == 0 ? ax : ay;
+    if (s.feedback_cycle + 2 < c) continue;
+    cmd[a] = sent_[s.feedback_cycle % sent_.size()][a];
+    act[a] = s.actual;
+  }
+  position_ = {cmd[0] / cfg_.counts_per_mm.x, cmd[1] / cfg_.counts_per_mm.y};
+  actual_ = {act[0] / cfg_.counts_per_mm.x, act[1] / cfg_.counts_per_mm.y};
   // At rest means the drives have caught up with the last setpoint.
   settled_ = ax.actual == tx && ay.actual == ty;
   if (e != AxisError::none) fault_locked(fault_bit(e), axes_.last_error());

@@ -4,9 +4,9 @@
 // setpoint goes out through a hal::AxisLink (axis 0 = x, 1 = y; further axes
 // hold their position). status() reports like the board: sequence numbers
 // are idempotent (a resend of an accepted one is dropped and counted),
-// credit is the free queue slots, last_executed / executing, position (the
-// setpoint sent) and actual (the drives' 0x6064 from their TPDO), and state
-// idle/running/hold/done/fault.
+// credit is the free queue slots, last_executed / executing, actual (the
+// drives' 0x6064 from their TPDO) and position (the setpoint of the SYNC
+// that feedback was sampled at), and state idle/running/hold/done/fault.
 //
 // Time: cycle() runs one SYNC period. Tests call it by hand (virtual time);
 // run_clock() runs it on a thread, either as fast as the job allows (only
@@ -14,6 +14,7 @@
 // paced by the AxisLink itself (SocketCAN: wall-clock SYNC).
 #pragma once
 
+#include <array>
 #include <condition_variable>
 #include <cstdint>
 #include <functional>
@@ -98,8 +99,9 @@ class CspSegmentLink final : public SegmentLink {
   bool reset_axes_ = false;  // fault reset: the drives are reset by the next cycle
   Vec2<double> tail_end_{};
   std::int64_t target_[2]{};
-  Vec2<double> position_{};  // the last setpoint, mm
-  Vec2<double> actual_{};    // the drives' reported positions, mm
+  Vec2<double> position_{};  // mm: the setpoint of the SYNC the feedback is from
+  Vec2<double> actual_{};    // mm: the drives' reported positions (0x6064)
+  std::array<std::array<std::int32_t, 2>, 4> sent_{};  // setpoints by SYNC cycle, modulo 4
   std::vector<CspSample> trace_;
   std::vector<std::uint32_t> executed_;
   char error_[240] = "";
