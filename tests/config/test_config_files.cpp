@@ -171,6 +171,30 @@ TEST(ConfigFiles, OtherLinksAndLinesByName) {
   EXPECT_EQ(c.link.unit, 2);
 }
 
+TEST(ConfigFiles, SafetyLinesAndFollowingError) {
+  Config c;
+  std::string error;
+  const char* text =
+      "[machine]\nferror = 2.0\nmin_ferror = 0.5\n"
+      "[link]\nkind = \"modbus-tcp\"\n"
+      "[gpio]\nchip = \"gpiochip0\"\n[gpio.reset]\noffset = 5\nactive_low = true\ndebounce_ms = 10\n"
+      "[gpio.watchdog]\noffset = 6\n";
+  ASSERT_TRUE(parse(text, "safety.toml", c, error)) << error;
+  EXPECT_EQ(c.machine.ferror, 2.0);
+  EXPECT_EQ(c.machine.min_ferror, 0.5);
+  EXPECT_TRUE(c.gpio.reset.used);
+  EXPECT_EQ(c.gpio.reset.offset, 5);
+  EXPECT_TRUE(c.gpio.reset.active_low);
+  EXPECT_EQ(c.gpio.reset.debounce_s, 0.01);
+  EXPECT_TRUE(c.gpio.watchdog.used);
+  EXPECT_EQ(c.gpio.watchdog.offset, 6);
+  const Config d = defaults();
+  EXPECT_EQ(d.machine.ferror, 1.0);
+  EXPECT_EQ(d.machine.min_ferror, 0.25);
+  EXPECT_FALSE(d.gpio.reset.used);
+  EXPECT_FALSE(d.gpio.watchdog.used);
+}
+
 TEST(ConfigFiles, BadFileLeavesTheConfigUntouched) {
   Config c = defaults();
   c.cut.feed = 1234;
