@@ -45,6 +45,10 @@ TEST(ConfigFiles, PlasmaTableExampleLoads) {
   EXPECT_EQ(c.gpio.arc_ok.offset, 27);
   EXPECT_EQ(c.gpio.hold.offset, 23);
   EXPECT_EQ(c.gpio.cycle_start.offset, 24);
+  EXPECT_EQ(c.gpio.reset.offset, 25);
+  EXPECT_EQ(c.gpio.watchdog.offset, 26);
+  EXPECT_EQ(c.machine.ferror, 1.0);
+  EXPECT_EQ(c.machine.min_ferror, 0.25);
   ASSERT_EQ(c.gpio.limits.size(), 2u);
   EXPECT_EQ(c.gpio.limits[0].offset, 5);
   EXPECT_EQ(c.gpio.limits[1].offset, 6);
