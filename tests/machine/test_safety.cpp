@@ -5,9 +5,11 @@
 
 #include <cmath>
 
+#include "control/machine_run.hpp"
 #include "fake_gpio.hpp"
 #include "simulated/can_sim_machine.hpp"
 #include "simulated/sim_machine.hpp"
+#include "simulated/sim_plant.hpp"
 
 namespace kerf::test {
 namespace {
@@ -194,6 +196,40 @@ TEST(FollowingError, NoFaultWithoutAStallOnEitherLink) {
   EXPECT_GT(can.run.max_ferror_mm, 0.0);
   std::printf("largest following error without a stall: modbus %.4f mm, can %.4f mm\n", modbus.run.max_ferror_mm,
               can.run.max_ferror_mm);
+}
+
+// `kerf run`'s loop (control::run_on_machine) on the simulated board, in real time.
+TEST(KerfRunLatch, RefusesToStartWhenNothingCouldResetTheLatch) {
+  FakeGpio gpio;
+  std::string error;
+  auto plant = simulated::make_modbus_plant(simulated::SimMachineConfig{}, 0.5, error);
+  ASSERT_TRUE(plant) << error;
+  config::Config cfg = config::defaults();  // no gpio.reset line
+  ::testing::internal::CaptureStderr();
+  const int rc = control::run_on_machine(l_then_arc(), cfg, plant->link(), gpio, nullptr, {}, false, "", false);
+  const std::string err = ::testing::internal::GetCapturedStderr();
+  EXPECT_EQ(rc, 1);
+  EXPECT_NE(err.find("pass --reset or configure gpio.reset"), std::string::npos) << err;
+  EXPECT_TRUE(gpio.changes.empty());
+}
+
+TEST(KerfRunLatch, StartUpResetWithTheEStopAssertedIsRefusedAndSaysSo) {
+  FakeGpio gpio;
+  gpio.inputs.estop = true;
+  std::string error;
+  auto plant = simulated::make_modbus_plant(simulated::SimMachineConfig{}, 0.5, error);
+  ASSERT_TRUE(plant) << error;
+  config::Config cfg = config::defaults();
+  ::testing::internal::CaptureStderr();
+  ::testing::internal::CaptureStdout();
+  const int rc = control::run_on_machine(l_then_arc(), cfg, plant->link(), gpio, nullptr, {}, false, "", true);
+  const std::string err = ::testing::internal::GetCapturedStderr();
+  ::testing::internal::GetCapturedStdout();
+  EXPECT_EQ(rc, 1);
+  EXPECT_NE(err.find("kerf: run: reset refused: the E-stop is still asserted"), std::string::npos) << err;
+  EXPECT_NE(err.find(": E-stop\n"), std::string::npos) << err;
+  EXPECT_TRUE(gpio.changes.empty()) << "the torch came on";
+  EXPECT_TRUE(gpio.watchdog_changes.empty()) << "the watchdog pumped while latched";
 }
 
 }  // namespace
