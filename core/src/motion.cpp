@@ -13,6 +13,8 @@ namespace kerf::motion {
   template class Interpolator<S>;                                                  \
   template Result<QueuedSegment<S>> prepare_segment(const PathSegment<S>&);        \
   template Vec2<S> point_at(const QueuedSegment<S>&, S);                           \
+  template SegmentFlaw segment_flaw(const Segment<S>&, SegmentShape<S>&);          \
+  template Emitted<S> emit_on_grid(Vec2<S>, const Segment<S>&, const SegmentGrid&); \
   template S braking_length(S, S, S);                                              \
   template S max_step_before(S, S, S);                                             \
   template S corner_step_limit(Vec2<S>, Vec2<S>, S, S);                           \
