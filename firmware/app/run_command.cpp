@@ -27,6 +27,12 @@ int run_job(const RunOptions& opts, const char* who, RunCheck check, LinesOpener
     std::fprintf(stderr, "%s: run: %s\n", who, error.c_str());
     return kExitFailure;
   }
+  // The E-stop latch starts latched: something must be able to reset it.
+  if (!opts.reset && !cfg.gpio.reset.used) {
+    std::fprintf(stderr, "%s: run: the E-stop latch starts latched and nothing could reset it: "
+                         "pass --reset or configure gpio.reset\n", who);
+    return kExitFailure;
+  }
   if (opts.resume && opts.journal.empty()) return io::usage_error("--resume: needs --journal FILE");
   io::PointFile in;
   if (!job::read_job(opts.job, cfg.fit.criterion, in)) return kExitUsage;
@@ -50,7 +56,8 @@ int run_job(const RunOptions& opts, const char* who, RunCheck check, LinesOpener
   std::unique_ptr<control::Journal> journal;
   control::ResumePoint from;
   if (!control::open_journal(opts.journal, opts.resume, fitted.job, journal, from)) return kExitUsage;
-  return machine::run_on_machine(fitted.job, cfg, *link, *gpio, journal.get(), from, opts.resume, opts.report);
+  return machine::run_on_machine(fitted.job, cfg, *link, *gpio, journal.get(), from, opts.resume, opts.report,
+                                 opts.reset);
 }
 
 int run_run(const RunOptions& opts) { return run_job(opts, "kerf", machine::check_lines, machine::open_lines); }

@@ -60,6 +60,8 @@ void read_machine(TableReader& r, Machine& m) {
   r.non_negative("jerk", m.jerk);
   r.positive_at_most("servo_period", m.servo_period, kMaxPeriod);
   r.positive_at_most("cycle", m.cycle, kMaxPeriod);
+  r.positive("ferror", m.ferror);
+  r.positive("min_ferror", m.min_ferror);
   r.finish();
 }
 
@@ -67,6 +69,10 @@ void check_machine(TableReader& machine, const Machine& m) {
   if (m.rapid_feed > m.max_feed)
     machine.problem("rapid_feed", "must be <= machine.max_feed (" + format_number(m.max_feed) +
                                       "), got " + format_number(m.rapid_feed));
+  if (m.min_ferror > m.ferror)
+    machine.problem(machine.has("min_ferror") ? "min_ferror" : "ferror",
+                    "machine.min_ferror (" + format_number(m.min_ferror) + ") must be <= machine.ferror (" +
+                        format_number(m.ferror) + ")");
 }
 
 // ---- link -------------------------------------------------------------------
