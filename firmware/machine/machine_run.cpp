@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "control/controller.hpp"
+#include "control/machine_config.hpp"
 #include "control/run_report.hpp"
 #include "io/options.hpp"
 #include "io/output_file.hpp"

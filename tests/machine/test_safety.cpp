@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "control/machine_run.hpp"
+#include "machine/machine_run.hpp"
 #include "fake_gpio.hpp"
 #include "simulated/can_sim_machine.hpp"
 #include "simulated/sim_machine.hpp"
@@ -198,21 +198,9 @@ TEST(FollowingError, NoFaultWithoutAStallOnEitherLink) {
               can.run.max_ferror_mm);
 }
 
-// `kerf run`'s loop (control::run_on_machine) on the simulated board, in real time.
-TEST(KerfRunLatch, RefusesToStartWhenNothingCouldResetTheLatch) {
-  FakeGpio gpio;
-  std::string error;
-  auto plant = simulated::make_modbus_plant(simulated::SimMachineConfig{}, 0.5, error);
-  ASSERT_TRUE(plant) << error;
-  config::Config cfg = config::defaults();  // no gpio.reset line
-  ::testing::internal::CaptureStderr();
-  const int rc = control::run_on_machine(l_then_arc(), cfg, plant->link(), gpio, nullptr, {}, false, "", false);
-  const std::string err = ::testing::internal::GetCapturedStderr();
-  EXPECT_EQ(rc, 1);
-  EXPECT_NE(err.find("pass --reset or configure gpio.reset"), std::string::npos) << err;
-  EXPECT_TRUE(gpio.changes.empty());
-}
-
+// `kerf run`'s loop (machine::run_on_machine) on the simulated board, in real time.
+// (A run that nothing could reset is refused before any device opens: the
+// CLI row run_no_reset, tests/cli/bad_input.tsv.)
 TEST(KerfRunLatch, StartUpResetWithTheEStopAssertedIsRefusedAndSaysSo) {
   FakeGpio gpio;
   gpio.inputs.estop = true;
@@ -222,7 +210,7 @@ TEST(KerfRunLatch, StartUpResetWithTheEStopAssertedIsRefusedAndSaysSo) {
   config::Config cfg = config::defaults();
   ::testing::internal::CaptureStderr();
   ::testing::internal::CaptureStdout();
-  const int rc = control::run_on_machine(l_then_arc(), cfg, plant->link(), gpio, nullptr, {}, false, "", true);
+  const int rc = machine::run_on_machine(l_then_arc(), cfg, plant->link(), gpio, nullptr, {}, false, "", true);
   const std::string err = ::testing::internal::GetCapturedStderr();
   ::testing::internal::GetCapturedStdout();
   EXPECT_EQ(rc, 1);
