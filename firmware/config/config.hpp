@@ -6,10 +6,12 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
 #include "job/criterion.hpp"
+#include "job/gcode_interp.hpp"
 #include "kerf/hal/gpio.hpp"
 
 namespace kerf::config {
@@ -27,6 +29,7 @@ struct Machine {
   double jerk = 0;             // mm/s^3, 0: trapezoidal ramps
   double servo_period = 0.001; // s, the board's interpolation period, (0, 0.1]
   double cycle = 0.002;        // s, the controller's loop period, (0, 0.1]
+  std::string state;           // the machine state file (work offsets; job/machine_state.hpp); empty: none
 };
 
 struct Link {
@@ -55,6 +58,20 @@ struct Cut {
   double arc_ok_timeout = 3.0;   // s, > 0
 };
 
+// What the G-code interpreter takes from the configuration (config/program_section.cpp):
+// [tools] N = "material", [materials.NAME] feed/pierce_delay, [mcodes.MNNN]
+// action/output/seconds, [outputs] torch/mist/flood.
+struct Program {
+  std::map<int, job::Material> tool_material;
+  std::map<int, job::UserMcode> mcodes;
+  int torch_output = -1, mist_output = -1, flood_output = -1;
+};
+
+struct Sim {
+  double operator_delay = 1.0;   // s, >= 0: the simulated operator presses cycle-start after a pause
+  double start[2] = {0, 0};      // mm, where the simulated machine stands before the first move
+};
+
 struct Rt {
   int priority = 0;      // SCHED_FIFO priority 1..99; 0: do not ask
   bool lock_memory = false;
@@ -68,7 +85,12 @@ struct Config {
   Fit fit;
   Cut cut;
   Rt rt;
+  Program program;
+  Sim sim;
 };
+
+// The interpreter's settings from a configuration (strict: kerf run).
+job::InterpSettings interp_settings(const Config& c, bool strict);
 
 // The defaults above, as a config for the simulator (kerf sim without --config).
 Config defaults();

@@ -27,13 +27,15 @@
 #include <vector>
 
 #include "control/job.hpp"
+#include "control/job_actions.hpp"
 #include "control/journal.hpp"
 #include "kerf/hal/gpio.hpp"
 #include "kerf/hal/segment_link.hpp"
 
 namespace kerf::control {
 
-enum class State : std::uint8_t { idle, ready, travel, piercing, cutting, feed_hold, done, fault, estop };
+// action: the program's actions between paths (dwell, pause, outputs, waits; control/job_actions.hpp).
+enum class State : std::uint8_t { idle, ready, travel, piercing, cutting, feed_hold, done, fault, estop, action };
 const char* to_string(State s);
 
 struct ControllerConfig {
@@ -46,6 +48,10 @@ struct ControllerConfig {
   // in Fault once the link has been down for link_timeout_s.
   double link_watchdog_s = 0.5;
   double link_timeout_s = 1.0;
+  // A pause (M0/M1) ends on cycle-start; >= 0: a simulated operator presses it this long after (kerf sim).
+  double operator_delay_s = -1.0;
+  // The program's outputs and inputs (M62..M68, M66; not owned); null: none.
+  Outputs* outputs = nullptr;
 };
 
 struct RunReport {
@@ -63,6 +69,7 @@ struct RunReport {
   Vec2<double> stopped_at{};          // board position once at rest
   std::uint64_t link_errors = 0;      // failed transactions (each retried next cycle)
   std::uint32_t pierces = 0;
+  std::vector<ActionEvent> actions;   // the program's actions run (dwell, pause, outputs, waits)
 };
 
 class Controller {
@@ -107,12 +114,18 @@ class Controller {
   void stop(State s, const std::string& why, double now_s);
   void path_finished(double now_s);
   bool link_ok(hal::LinkError e);
+  void run_actions_or_travel(double now_s);  // the actions before paths[path_], then its travel
+  void actions_done(double now_s);
+  void finish_job(double now_s);
+  double pierce_delay() const;
 
   const Job& job_;
   ControllerConfig cfg_;
   hal::SegmentLink& link_;
   hal::Gpio& gpio_;
   Journal* journal_;
+  ActionRunner actions_;
+  bool first_actions_ = true;  // run the actions before the first path (false: resumed inside it)
 
   State state_ = State::idle;
   bool finished_ = false;

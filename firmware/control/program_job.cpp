@@ -1,0 +1,61 @@
+#include "control/program_job.hpp"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "job/fit_job.hpp"
+
+namespace kerf::control {
+
+int fit_program_or_say(const job::GcodeProgram& prog, job::Criterion criterion, double tol, double feed_mm_s,
+                       double max_feed_mm_s, FittedJob& out, job::Numeric numeric) {
+  out = FittedJob{};
+  const io::PointFile& in = prog.points;
+  const std::vector<std::size_t>& begins = in.path_begin;
+  for (std::size_t p = 0; p < begins.size(); ++p) {
+    const std::size_t b = begins[p];
+    const std::size_t e = p + 1 < begins.size() ? begins[p + 1] : in.points.size();
+    const std::vector<Vec2<double>> pts(in.points.begin() + static_cast<std::ptrdiff_t>(b),
+                                        in.points.begin() + static_cast<std::ptrdiff_t>(e));
+    const job::ProgramPath& pp = prog.paths[p];
+    const double path_tol = pp.tol > 0 ? std::min(pp.tol, tol) : tol;
+    std::vector<fit::Piece<double>> pieces;
+    std::string why;
+    Status status = Status::ok;
+    if (!job::fit_job(pts, {}, path_tol, criterion, pieces, why, status, numeric)) {
+      std::fprintf(stderr, "kerf: %s: path %zu (line %zu): %s\n", in.file.c_str(), p + 1, in.point_lines[b],
+                   why.c_str());
+      return status == Status::invalid_argument || status == Status::degenerate ? 2 : 1;
+    }
+    const double feed = std::min(pp.feed_mm_min > 0 ? pp.feed_mm_min / 60.0 : feed_mm_s, max_feed_mm_s);
+    CutPath path;
+    path.start = pts.front();
+    path.torch = pp.torch;
+    path.pierce_delay_s = pp.pierce_delay_s;
+    for (const fit::Piece<double>& piece : pieces) {
+      hal::SegmentCommand c;
+      c.kind = piece.segment.kind;
+      c.end = piece.segment.end;
+      c.centre = piece.segment.centre;
+      c.dir = piece.segment.dir;
+      c.feed = feed;
+      c.torch = pp.torch;
+      path.segments.push_back(c);
+      out.pieces.push_back(piece);
+      out.piece_path.push_back(p);
+    }
+    out.job.paths.push_back(std::move(path));
+  }
+  out.job.actions = prog.actions;
+  return 0;
+}
+
+void describe_program(const job::GcodeProgram& prog, RunSummary& sum) {
+  sum.gcode = true;
+  sum.dry_run = prog.dry_run;
+  sum.notes = prog.interp.notes;
+  sum.constructs.clear();
+  for (const auto& [name, c] : prog.interp.constructs) sum.constructs.push_back({name, c.handling, c.count, c.first_line});
+}
+
+}  // namespace kerf::control
