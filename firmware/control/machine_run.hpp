@@ -11,6 +11,7 @@
 #include "config/config.hpp"
 #include "control/job.hpp"
 #include "control/journal.hpp"
+#include "job/gcode_program.hpp"
 #include "kerf/hal/gpio.hpp"
 #include "kerf/hal/segment_link.hpp"
 
@@ -19,6 +20,7 @@ namespace kerf::control {
 // Returns the exit code: 0 done, 1 stopped (fault, E-stop, signal) or the
 // report could not be written.
 int run_on_machine(const Job& job, const config::Config& cfg, hal::SegmentLink& link, hal::Gpio& gpio,
-                   Journal* journal, const ResumePoint& from, bool resumed, const std::string& report);
+                   Journal* journal, const ResumePoint& from, bool resumed, const std::string& report,
+                   const job::GcodeProgram* program = nullptr);
 
 }  // namespace kerf::control

@@ -50,6 +50,20 @@ int fit_program_or_say(const job::GcodeProgram& prog, job::Criterion criterion, 
   return 0;
 }
 
+bool machine_can_run(const job::GcodeProgram& prog, std::string& error) {
+  for (const JobAction& a : prog.actions) {
+    const char* what = a.kind == job::CanonKind::digital_out  ? "a digital output"
+                       : a.kind == job::CanonKind::analog_out ? "an analog output"
+                       : a.kind == job::CanonKind::wait_input ? "a wait on an input (M66)"
+                                                              : nullptr;
+    if (what == nullptr) continue;
+    error = prog.points.file + ":" + std::to_string(a.line) + ": " + what +
+            ": kerf run has no program output or input lines yet (only the torch); kerf sim runs it";
+    return false;
+  }
+  return true;
+}
+
 void describe_program(const job::GcodeProgram& prog, RunSummary& sum) {
   sum.gcode = true;
   sum.dry_run = prog.dry_run;

@@ -16,6 +16,12 @@ namespace kerf::control {
 int fit_program_or_say(const job::GcodeProgram& prog, job::Criterion criterion, double tol, double feed_mm_s,
                        double max_feed_mm_s, FittedJob& out, job::Numeric numeric = job::Numeric::floating);
 
+// kerf run: false with "FILE:LINE: reason" for a program that needs what
+// the machine does not have yet: program outputs and inputs (M7/M8 with a
+// gas output, M62..M65 other than the torch, M66, M67/M68 other than the feed
+// %, user M-codes that switch an output). hal::Gpio drives only the torch.
+bool machine_can_run(const job::GcodeProgram& prog, std::string& error);
+
 // The program's part of the run summary: dry run, constructs, notes.
 void describe_program(const job::GcodeProgram& prog, RunSummary& sum);
 

@@ -116,8 +116,10 @@ class Interp {
       if (w.any(*a)) return refuse(std::string("the ") + *a + " axis is not supported (a 2-axis cutter: X Y, and Z)");
     const bool analog = w.m_has(660) || w.m_has(670) || w.m_has(680);
     if (w.any('E') && !analog) return refuse("E words (extruder) are not supported");
+    // With G41/G42/G43 on the block, that G code's own reason comes first.
+    const bool comp = w.g_has(410) || w.g_has(420) || w.g_has(411) || w.g_has(421) || w.g_has(430);
     for (const char a : {'D', 'H'})
-      if (w.any(a)) return refuse(std::string(1, a) + " words (tool compensation) are not supported");
+      if (w.any(a) && !comp) return refuse(std::string(1, a) + " words (tool compensation) are not supported");
     return true;
   }
 
@@ -226,13 +228,14 @@ class Interp {
       seen(name, "run", line);
       const auto mat = s_.tool_material.find(m_.selected_tool);
       if (mat != s_.tool_material.end()) t.value = mat->second.pierce_delay_s;
-      if (mat == s_.tool_material.end()) {
+      if (mat != s_.tool_material.end()) {
+        if (mat->second.feed_mm_min > 0) m_.feed = mat->second.feed_mm_min;
+      } else if (!noted_tool_[m_.selected_tool]) {
+        noted_tool_[m_.selected_tool] = true;
         char buf[96];
         std::snprintf(buf, sizeof buf, "T%d (line %zu) maps to no material: the cut settings are kept",
                       m_.selected_tool, line);
         note(buf);
-      } else if (mat->second.feed_mm_min > 0) {
-        m_.feed = mat->second.feed_mm_min;
       }
       return true;
     }
@@ -311,7 +314,8 @@ class Interp {
         if (s_.strict_mcodes)
           return refuse(name + " is a user M-code with no action: add [mcodes." + name +
                         "] with action = \"on\", \"off\", \"dwell\" or \"ignore\" to the configuration");
-        note(name + " (line " + std::to_string(line) + ") has no configured action: ignored");
+        if (out_.constructs.count(name) == 0)  // logged once per M-code
+          note(name + " (line " + std::to_string(line) + ") has no configured action: ignored");
         seen(name, "ignored", line);
         return true;
       }
@@ -443,6 +447,7 @@ class Interp {
   Modal m_;
   std::string why_;
   bool ended_ = false;
+  std::map<int, bool> noted_tool_;  // unmapped tools already noted
 };
 
 std::string num(double v) {

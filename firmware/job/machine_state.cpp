@@ -14,9 +14,9 @@ namespace {
 const char* const kNames[kCoordSystems] = {"G54", "G55", "G56", "G57", "G58", "G59", "G59.1", "G59.2", "G59.3"};
 
 std::string trim(const std::string& s) {
-  const std::size_t a = s.find_first_not_of(" \t\r");
+  const std::size_t a = s.find_first_not_of(" \t\r\n");
   if (a == std::string::npos) return "";
-  return s.substr(a, s.find_last_not_of(" \t\r") + 1 - a);
+  return s.substr(a, s.find_last_not_of(" \t\r\n") + 1 - a);
 }
 
 // n numbers separated by blanks; false unless exactly n finite numbers.

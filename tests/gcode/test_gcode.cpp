@@ -176,7 +176,7 @@ TEST(GcodeReader, UnknownWordsPassWeldButNotRun) {
   kerf::io::PointFile job;
   std::string error;
   EXPECT_FALSE(kerf::job::gcode_job_from(g, job, error));
-  EXPECT_EQ(error, "u.nc:3: unsupported word \"E1\"");
+  EXPECT_EQ(error, "u.nc:3: E words (extruder) are not supported");
   kerf::weld::WeldStats stats;
   EXPECT_EQ(weld(text, 0.01, "band", stats), text);  // nothing to weld, every line kept
 }
@@ -198,7 +198,7 @@ TEST(GcodeJob, ReadsAFileAndNamesItsErrors) {
   EXPECT_EQ(error, "no/such.nc: No such file or directory");
   // An FDM print: E words are not a cutting machine's.
   EXPECT_FALSE(kerf::job::read_gcode_job(std::string(KERF_TEST_DATA_DIR) + "/gcode/cncjs_octocat.gcode", job, error));
-  EXPECT_NE(error.find("cncjs_octocat.gcode:2: unsupported word \"E0\""), std::string::npos) << error;
+  EXPECT_NE(error.find("cncjs_octocat.gcode:2: E words (extruder) are not supported"), std::string::npos) << error;
 }
 
 TEST(GcodeJob, SplitsAtRapidsAndTorchOff) {
