@@ -102,8 +102,8 @@ void Controller::start(const ResumePoint& from) {
   // Resumed: the outputs the program set before this path are set again;
   // its dwells, pauses and waits are not run again. The actions just
   // before the path run only when nothing of it was cut (control/README.md).
-  actions_.replay_outputs(path_);
   first_actions_ = i == 0 && distance(pierce_at_, job_.paths[path_].start) < kSamePoint;
+  actions_.replay_outputs(first_actions_ ? path_ : path_ + 1);
 }
 
 std::int64_t Controller::job_segment_of(std::uint32_t seq) const {
