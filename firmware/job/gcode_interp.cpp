@@ -49,6 +49,17 @@ struct Words {
   bool m_has(int c) const { return std::find(m.begin(), m.end(), c) != m.end(); }
 };
 
+// A word's value as written in messages: %g.
+struct WordValue {
+  char text[32];
+  operator const char*() const { return text; }
+};
+WordValue word_value(double v) {
+  WordValue w;
+  std::snprintf(w.text, sizeof w.text, "%g", v);
+  return w;
+}
+
 std::string code_name(char letter, int c10) {
   char buf[24];
   if (c10 % 10 == 0) std::snprintf(buf, sizeof buf, "%c%d", letter, c10 / 10);
@@ -104,6 +115,7 @@ class Interp {
     out_.canon.push_back(c);
     return out_.canon.back();
   }
+  static bool io_number(double v) { return v >= 0 && v <= 255 && v == std::floor(v); }
   double scale() const { return m_.inches ? kMmPerInch : 1.0; }
   // The offset from program to machine coordinates on axis k.
   double offset(int k) const {
@@ -129,6 +141,9 @@ class Interp {
     // Units first: F and lengths on this block are in the units it selects.
     for (const int c : w.g)
       if (c == 200 || c == 210) m_.inches = c == 200, seen(code_name('G', c), "recorded", line);
+    if (w.any('F') && w.at('F') < 0) return refuse("F must be >= 0");
+    if (w.any('T') && (w.at('T') < 0 || w.at('T') > 99999 || w.at('T') != std::floor(w.at('T'))))
+      return refuse("T must be a tool number 0..99999");
     if (w.any('F')) {
       m_.feed = w.at('F') * scale();
       seen("F", "run", line);
@@ -183,7 +198,7 @@ class Interp {
         case 100:
           if (!g10(w)) return false;
           non_motion_axes = true;
-          seen(name + " L" + std::to_string(static_cast<int>(std::lround(w.at('L')))), "run", line);
+          seen(name + (w.at('L') == 2 ? " L2" : " L20"), "run", line);
           break;
         case 530: g53 = true, seen(name, "run", line); break;
         case 920: case 921: case 922: case 923:
@@ -259,6 +274,7 @@ class Interp {
     }
     if (c >= 620 && c <= 650) {
       if (!w.any('P')) return refuse(name + " needs P (the output number)");
+      if (!io_number(w.at('P'))) return refuse(name + " P must be an output number 0..255");
       const int p = static_cast<int>(std::lround(w.at('P')));
       const bool on = c == 620 || c == 640;
       if (p == s_.torch_output) {
@@ -273,14 +289,18 @@ class Interp {
       return true;
     }
     if (c == 660) {
-      const int l = w.any('L') ? static_cast<int>(std::lround(w.at('L'))) : 0;
+      const double lv = w.any('L') ? w.at('L') : 0;
+      if (!(lv >= 0 && lv <= 4 && lv == std::floor(lv)))
+        return refuse("M66 L must be 0..4, got " + std::string(word_value(lv)));
+      const int l = static_cast<int>(lv);
       if (w.any('E')) {
         if (l != 0) return refuse("M66 E (analog input) supports only L0");
         seen("M66 E", "ignored", line);
         return true;
       }
       if (!w.any('P')) return refuse("M66 needs P (a digital input) or E (an analog input)");
-      if (l < 0 || l > 4) return refuse("M66 L must be 0..4, got " + std::to_string(l));
+      if (!io_number(w.at('P'))) return refuse("M66 P must be an input number 0..255");
+      if (w.any('Q') && !(w.at('Q') >= 0)) return refuse("M66 Q (the timeout) must be >= 0");
       if (l != 0 && !w.any('Q')) return refuse("M66 L" + std::to_string(l) + " needs Q (the timeout in s)");
       Canon& o = emit(CanonKind::wait_input, line);
       o.index = static_cast<int>(std::lround(w.at('P')));
@@ -291,6 +311,7 @@ class Interp {
     }
     if (c == 670 || c == 680) {
       if (!w.any('E') || !w.any('Q')) return refuse(name + " needs E (the output) and Q (the value)");
+      if (!io_number(w.at('E'))) return refuse(name + " E must be an output number 0..255");
       const int e = static_cast<int>(std::lround(w.at('E')));
       if (c == 670 && e == 3) {  // QtPlasmaC: velocity as a % of the programmed feed
         double q = w.at('Q');
@@ -337,8 +358,9 @@ class Interp {
   // makes the current point have the given coordinates in system n.
   bool g10(const Words& w) {
     if (!w.any('L')) return refuse("G10 needs L (L2 or L20)");
-    const int l = static_cast<int>(std::lround(w.at('L')));
-    if (l != 2 && l != 20) return refuse("G10 L" + std::to_string(l) + " is not supported (L2 and L20 are)");
+    const double lv = w.at('L');
+    if (lv != 2 && lv != 20) return refuse("G10 L" + std::string(word_value(lv)) + " is not supported (L2 and L20 are)");
+    const int l = static_cast<int>(lv);
     if (!w.any('P')) return refuse("G10 L" + std::to_string(l) + " needs P (0 current, 1..9 G54..G59.3)");
     const double pv = w.at('P');
     const int p = static_cast<int>(std::lround(pv));
