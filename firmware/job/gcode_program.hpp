@@ -42,7 +42,7 @@ struct GcodeProgram {
   io::PointFile points;               // the paths' points (path_begin) with their source lines
   std::vector<ProgramPath> paths;
   std::vector<ProgramAction> actions; // in program order
-  Interpretation interp;
+  Interpretation interp;              // its constructs, notes and final state (canon left empty)
   bool dry_run = false;               // no torch word in the file
 };
 
