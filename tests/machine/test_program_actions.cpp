@@ -208,5 +208,37 @@ TEST(ProgramActions, AResumeRunsTheActionsJustBeforeAnUncutPathAndSkipsEarlierOn
   }
 }
 
+// The report lists the constructs and how each was handled, and says when a
+// run was a dry run.
+TEST(ProgramReport, ListsTheConstructsAndSaysDryRun) {
+  const std::string text = "G21 G90 G54 G64 P0.01\nG1 X20 Y0 F1200\nG4 P0.1\nG1 X30\nM150\nM2\n";
+  const job::GcodeFile g = job::parse_gcode(text, "r.ngc");
+  job::Interpretation it;
+  job::GcodeProgram prog;
+  std::string error;
+  ASSERT_TRUE(job::interpret(g, {}, {}, it, error)) << error;
+  ASSERT_TRUE(job::build_program(g, {}, it, prog, error)) << error;
+  control::FittedJob f;
+  ASSERT_EQ(control::fit_program_or_say(prog, job::Criterion::band, 0.01, 50.0, 200.0, f), 0);
+  FakeGpio gpio;
+  const auto r = simulated::run_sim_machine(f.job, fast(), {}, gpio, nullptr, {});
+  ASSERT_EQ(r.run.state, State::done) << r.run.reason;
+  control::RunSummary sum = control::summarise_run(r.run, f.job.paths.size(), "modbus-tcp", false, nullptr);
+  control::describe_program(prog, sum);
+  const std::string line = control::format_run_summary(sum);
+  EXPECT_NE(line.find("; dry run (no M3/M4 in the program): torch off"), std::string::npos) << line;
+  EXPECT_NE(line.find("; 1 dwells, 0 pauses, 2 program actions"), std::string::npos) << line;
+  EXPECT_NE(line.find("kerf sim: G-code: F run (1), G1 run (2), G21 recorded (1), G4 run (1), G54 run (1), "
+                      "G64 P recorded (1), G90 recorded (1), M150 ignored (1), M2 run (1)\n"),
+            std::string::npos)
+      << line;
+  const std::string json = control::format_run_json(sum);
+  EXPECT_NE(json.find("\"dry_run\": true"), std::string::npos);
+  EXPECT_NE(json.find("{\"name\": \"M150\", \"handling\": \"ignored\", \"count\": 1, \"first_line\": 5}"),
+            std::string::npos)
+      << json;
+  EXPECT_NE(json.find("\"notes\": [\"M150 (line 5) has no configured action: ignored\"]"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace kerf::test
