@@ -275,8 +275,8 @@ int main(int argc, char** argv) {
   }
   if (files.empty())
     for (const char* f : {"cncjs_jsdc-laser.gcode", "cncjs_tball-engrave.gcode", "cncjs_tball-pocket.gcode",
-                          "cncjs_Circle_Diamond_Square_Calibration.gcode", "cncjs_sample_slic3r.gcode",
-                          "cncjs_octocat.gcode"})
+                          "cncjs_Circle_Diamond_Square_Calibration.gcode", "../print/cncjs_sample_slic3r.gcode",
+                          "../print/cncjs_octocat.gcode"})
       files.push_back(std::string(KERF_GCODE_DIR) + "/" + f);
   std::printf("tol %.4g mm, split at sharp turns: %s, jitter %.3g tol, fastest of %d runs\n", tol,
               split ? "yes" : "no", jitter, repeat);

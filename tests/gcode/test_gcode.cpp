@@ -197,7 +197,7 @@ TEST(GcodeJob, ReadsAFileAndNamesItsErrors) {
   EXPECT_FALSE(kerf::job::read_gcode_job("no/such.nc", job, error));
   EXPECT_EQ(error, "no/such.nc: No such file or directory");
   // An FDM print: E words are not a cutting machine's.
-  EXPECT_FALSE(kerf::job::read_gcode_job(std::string(KERF_TEST_DATA_DIR) + "/gcode/cncjs_octocat.gcode", job, error));
+  EXPECT_FALSE(kerf::job::read_gcode_job(std::string(KERF_TEST_DATA_DIR) + "/print/cncjs_octocat.gcode", job, error));
   EXPECT_NE(error.find("cncjs_octocat.gcode:2: E words (extruder) are not supported"), std::string::npos) << error;
 }
 
@@ -240,7 +240,7 @@ TEST(Weld, CorpusFilesPassTheChecker) {
   };
   for (const Case c : {Case{"cncjs_jsdc-laser.gcode", 0.037}, Case{"cncjs_tball-engrave.gcode", 0.025},
                        Case{"cncjs_Circle_Diamond_Square_Calibration.gcode", 0},
-                       Case{"cncjs_sample_slic3r.gcode", 0}}) {
+                       Case{"../print/cncjs_sample_slic3r.gcode", 0}}) {
     SCOPED_TRACE(c.file);
     const std::string in = corpus(c.file);
     ASSERT_FALSE(in.empty());
@@ -299,7 +299,8 @@ TEST(Weld, CorpusCountsStayAsMeasured) {
   for (const Case c : {Case{"cncjs_jsdc-laser.gcode", 78, 87}, Case{"cncjs_tball-engrave.gcode", 80, 84},
                        Case{"cncjs_tball-pocket.gcode", 710, 871},
                        Case{"cncjs_Circle_Diamond_Square_Calibration.gcode", 980, 980},
-                       Case{"cncjs_sample_slic3r.gcode", 18442, 18442}, Case{"cncjs_octocat.gcode", 23997, 23997}}) {
+                       Case{"../print/cncjs_sample_slic3r.gcode", 18442, 18442},
+                       Case{"../print/cncjs_octocat.gcode", 23997, 23997}}) {
     SCOPED_TRACE(c.file);
     const std::string in = corpus(c.file);
     ASSERT_FALSE(in.empty());
