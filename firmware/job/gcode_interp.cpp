@@ -175,6 +175,9 @@ class Interp {
         case 170: case 400: case 490: case 800: case 940: case 610: case 611:
           seen(name, "recorded", line);
           break;
+        case 430:  // a tool length offset moves only Z, which kerf does not drive
+          seen(w.any('H') ? "G43 H" : "G43", "recorded", line);
+          break;
         case 180: case 190: return refuse(name + ": only the XY plane (G17) is supported");
         case 410: case 420: case 411: case 421:
           return refuse(name + ": cutter compensation is not supported (kerf compensation does not exist yet)");
