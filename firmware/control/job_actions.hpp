@@ -1,7 +1,7 @@
 // The actions a job runs between its paths, at rest with the torch off
 // (control/job.hpp JobAction): G4 dwell, M0/M1 pause until cycle-start,
 // M62..M65 and M7/M8/M9 digital outputs, M67/M68 analog outputs, M66 wait on
-// an input with a timeout, and the recorded ones (tool change, feed %, end).
+// an input with a timeout, and the recorded ones (tool change, end).
 //
 // M66 modes (LinuxCNC's L): L0 reads the input and goes on; L1 waits for a
 // rising edge, L2 for a falling edge, L3 for high, L4 for low, each at most

@@ -27,7 +27,16 @@ int fit_program_or_say(const job::GcodeProgram& prog, job::Criterion criterion, 
                    why.c_str());
       return status == Status::invalid_argument || status == Status::degenerate ? 2 : 1;
     }
-    const double feed = std::min(pp.feed_mm_min > 0 ? pp.feed_mm_min / 60.0 : feed_mm_s, max_feed_mm_s);
+    // Each piece at the slowest feed programmed along it (mm/min per point; 0: the default).
+    auto feed_of = [&](const fit::Piece<double>& piece) {
+      double f = 0;
+      for (std::size_t k = b + piece.first + 1; k <= b + piece.last && k < prog.point_feed.size(); ++k) {
+        const double v = prog.point_feed[k] > 0 ? prog.point_feed[k] / 60.0 : feed_mm_s;
+        f = f == 0 ? v : std::min(f, v);
+      }
+      if (f == 0) f = pp.feed_mm_min > 0 ? pp.feed_mm_min / 60.0 : feed_mm_s;
+      return std::min(f, max_feed_mm_s);
+    };
     CutPath path;
     path.start = pts.front();
     path.torch = pp.torch;
@@ -38,7 +47,7 @@ int fit_program_or_say(const job::GcodeProgram& prog, job::Criterion criterion, 
       c.end = piece.segment.end;
       c.centre = piece.segment.centre;
       c.dir = piece.segment.dir;
-      c.feed = feed;
+      c.feed = feed_of(piece);
       c.torch = pp.torch;
       path.segments.push_back(c);
       out.pieces.push_back(piece);

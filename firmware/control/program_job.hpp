@@ -1,7 +1,8 @@
 // A G-code program (job/gcode_program.hpp) fitted into a controller Job:
-// each path at its own tolerance (G64 P, capped by fit.tol) and feed (F or
-// the material's, times the feed %, capped by the machine's max feed), torch
-// on or dry run, with the program's actions between the paths.
+// each path at its own tolerance (G64 P, capped by fit.tol), each segment at
+// the slowest feed programmed along it (F or the material's, times the feed
+// %, capped by the machine's max feed), torch on or dry run, with the
+// program's actions between the paths.
 #pragma once
 
 #include <string>

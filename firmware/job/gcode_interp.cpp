@@ -42,6 +42,8 @@ struct Words {
   bool has[26] = {};
   double v[26] = {};
   std::vector<int> g, m;  // codes in tenths, in the order written
+  bool has_dollar = false;
+  double dollar = 0;      // $n: the spindle (tool head) M3/M4/M5 act on
   std::size_t line = 0;
   bool any(char a) const { return has[a - 'A']; }
   double at(char a) const { return v[a - 'A']; }
@@ -83,7 +85,8 @@ class Interp {
       w.line = b.line;
       for (const GWord& word : b.words) {
         const int k = word.letter - 'A';
-        if (word.letter == 'G') w.g.push_back(code10(word.value));
+        if (word.letter == '$') w.has_dollar = true, w.dollar = word.value;
+        else if (word.letter == 'G') w.g.push_back(code10(word.value));
         else if (word.letter == 'M') w.m.push_back(code10(word.value));
         else w.has[k] = true, w.v[k] = word.value;
       }
@@ -137,6 +140,7 @@ class Interp {
 
   bool block(const Words& w) {
     if (!check_letters(w)) return false;
+    if (w.has_dollar && !w.m_has(30) && !w.m_has(40) && !w.m_has(50)) return refuse("$ (a spindle select) without M3, M4 or M5");
     const std::size_t line = w.line;
     // Units first: F and lengths on this block are in the units it selects.
     for (const int c : w.g)
@@ -172,7 +176,7 @@ class Interp {
           emit(CanonKind::dwell, line).value = w.at('P');
           seen(name, "run", line);
           break;
-        case 170: case 400: case 490: case 800: case 940: case 610: case 611:
+        case 170: case 400: case 490: case 800: case 940: case 610: case 611: case 970:
           seen(name, "recorded", line);
           break;
         case 430:  // a tool length offset moves only Z, which kerf does not drive
@@ -258,8 +262,12 @@ class Interp {
       return true;
     }
     if (c == 30 || c == 40 || c == 50) {
+      // $0 is the torch (QtPlasmaC); $-1 (all) only to switch off.
+      if (w.has_dollar && w.dollar != 0 && !(c == 50 && w.dollar == -1))
+        return refuse(name + " $" + std::string(word_value(w.dollar)) +
+                      ": only one tool head ($0, the torch) is supported (QtPlasmaC's scribe and spot are not)");
       emit(CanonKind::torch, line).index = c != 50;
-      seen(name, "run", line);
+      seen(w.has_dollar ? name + " $" : name, "run", line);
       return true;
     }
     if (c == 70 || c == 80 || c == 90) {

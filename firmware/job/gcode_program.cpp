@@ -48,13 +48,14 @@ class Builder {
     if (open_ && p.points.size() - path_start_ < 2) {  // a lone point: no path
       p.points.resize(path_start_);
       p.point_lines.resize(path_start_);
+      out_.point_feed.resize(path_start_);
     } else if (open_) {
       p.path_begin.push_back(path_start_);
       out_.paths.push_back(cur_);
     }
     open_ = false;
   }
-  void add(Vec2<double> q, std::size_t line) {
+  void add(Vec2<double> q, std::size_t line, double feed) {
     io::PointFile& p = out_.points;
     if (p.points.size() > path_start_ && p.points.back() == q) {
       ++p.duplicates_dropped;
@@ -62,6 +63,7 @@ class Builder {
     }
     p.points.push_back(q);
     p.point_lines.push_back(line);
+    out_.point_feed.push_back(feed);
   }
   void action(const Canon& c) {
     close();
@@ -83,10 +85,7 @@ class Builder {
         torch_ = c.index == 1;
         return;
       case CanonKind::tolerance: tol_ = c.value; return;
-      case CanonKind::feed_percent:
-        percent_ = c.value;
-        action(c);
-        return;
+      case CanonKind::feed_percent: percent_ = c.value; return;  // applies to the moves after it
       case CanonKind::tool:
         if (c.value >= 0) pierce_ = c.value;  // the material's pierce delay
         action(c);
@@ -112,22 +111,23 @@ class Builder {
       pos_ = to;
       return;
     }
+    const double feed = c.feed_mm_min * percent_ / 100.0;
     if (!open_) {
       open_ = true;
       path_start_ = out_.points.points.size();
       cur_ = ProgramPath{};
       cur_.torch = !out_.dry_run;
-      cur_.feed_mm_min = c.feed_mm_min * percent_ / 100.0;
+      cur_.feed_mm_min = feed;
       cur_.tol = tol_;
       cur_.pierce_delay_s = pierce_;
-      add(pos_, c.line);
+      add(pos_, c.line, feed);
     }
     if (c.kind == CanonKind::feed) {
-      add(to, c.line);
+      add(to, c.line, feed);
     } else {
       arc_.clear();
       sample_arc(pos_, to, {c.centre[0], c.centre[1]}, c.ccw, 0.001, arc_);
-      for (const Vec2<double>& q : arc_) add(q, c.line);
+      for (const Vec2<double>& q : arc_) add(q, c.line, feed);
     }
     pos_ = to;
   }

@@ -8,9 +8,10 @@
 // rapid, at torch off, at a move that changes Z (kerf drives no Z: a Z move
 // never becomes an XY segment), and at every action (dwell, pause, output,
 // wait, tool change, end): the action runs at rest between the paths.
-// Each path carries the feed (programmed F, or the material's, times the
-// QtPlasmaC feed %) and the tolerance (G64 P) and pierce delay (material) in
-// force at its first move; a change inside a path applies from the next one.
+// Each point carries the feed of the move that reaches it (programmed F, or
+// the material's, times QtPlasmaC's `M67 E3` feed %), so a feed change inside
+// a path neither splits it nor waits for the next one. Each path carries the
+// tolerance (G64 P) and pierce delay (material) in force at its first move.
 #pragma once
 
 #include <string>
@@ -23,13 +24,13 @@ namespace kerf::job {
 
 struct ProgramPath {
   bool torch = true;          // false: a dry-run path (torch off)
-  double feed_mm_min = 0;     // 0: the configuration's cut feed
+  double feed_mm_min = 0;     // at its first move; 0: the configuration's cut feed
   double pierce_delay_s = -1; // < 0: the configuration's
   double tol = 0;             // 0: the fit's
 };
 
 struct ProgramAction {
-  CanonKind kind = CanonKind::dwell;  // dwell, pause, end, digital_out, analog_out, wait_input, tool, feed_percent
+  CanonKind kind = CanonKind::dwell;  // dwell, pause, end, digital_out, analog_out, wait_input, tool
   std::size_t before_path = 0;        // runs before this path (paths.size(): after the last)
   std::size_t line = 0;
   int index = 0, mode = 0;
@@ -40,6 +41,7 @@ struct ProgramAction {
 
 struct GcodeProgram {
   io::PointFile points;               // the paths' points (path_begin) with their source lines
+  std::vector<double> point_feed;     // mm/min for each point (0: the configuration's cut feed)
   std::vector<ProgramPath> paths;
   std::vector<ProgramAction> actions; // in program order
   Interpretation interp;              // its constructs, notes and final state (canon left empty)

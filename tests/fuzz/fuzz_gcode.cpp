@@ -70,6 +70,8 @@ void check_interpretation(const GcodeFile& g) {
     return;
   }
   FUZZ_CHECK(prog.paths.size() == prog.points.path_begin.size() && !prog.paths.empty(), "paths and their points");
+  FUZZ_CHECK(prog.point_feed.size() == prog.points.points.size(), "a feed for each point");
+  for (const double f : prog.point_feed) FUZZ_CHECK(f >= 0 && std::isfinite(f), "a negative or non-finite feed");
   for (std::size_t k = 0; k < prog.paths.size(); ++k) {
     const std::size_t b = prog.points.path_begin[k];
     const std::size_t e = k + 1 < prog.paths.size() ? prog.points.path_begin[k + 1] : prog.points.points.size();

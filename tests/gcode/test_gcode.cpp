@@ -181,6 +181,22 @@ TEST(GcodeReader, UnknownWordsPassWeldButNotRun) {
   EXPECT_EQ(weld(text, 0.01, "band", stats), text);  // nothing to weld, every line kept
 }
 
+// QtPlasmaC's torch select `$0`: a word the reader keeps (weld passes the
+// line through byte for byte), the interpreter's torch.
+TEST(GcodeReader, DollarToolHeadPassesWeldAndLightsTheTorch) {
+  const std::string text = "G0 X0 Y0\nM3 $0 S1\nG1 X1 Y0 F100\nM5 $0\n";
+  const GcodeFile g = parse_gcode(text, "d.nc");
+  ASSERT_TRUE(g.ok) << g.reason;
+  ASSERT_EQ(g.blocks[1].unknown.size(), 1u);
+  EXPECT_EQ(g.blocks[1].unknown[0], "$0");
+  kerf::weld::WeldStats stats;
+  EXPECT_EQ(weld(text, 0.01, "band", stats), text);
+  kerf::io::PointFile job;
+  std::string error;
+  ASSERT_TRUE(kerf::job::gcode_job_from(g, job, error)) << error;
+  EXPECT_EQ(job.path_begin.size(), 1u);
+}
+
 TEST(GcodeJob, TellsGcodeFilesByName) {
   EXPECT_TRUE(kerf::job::is_gcode_path("part.NC"));
   EXPECT_TRUE(kerf::job::is_gcode_path("dir.v2/part.gcode"));

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -61,7 +62,10 @@ std::string format_program(const GcodeProgram& p) {
     const std::size_t b = p.points.path_begin[k];
     const std::size_t e = k + 1 < p.paths.size() ? p.points.path_begin[k + 1] : p.points.points.size();
     const ProgramPath& pp = p.paths[k];
-    s += "  PATH " + std::string(pp.torch ? "torch" : "dry") + " feed " + f4(pp.feed_mm_min) + " tol " + f4(pp.tol) +
+    double lo = 1e300, hi = 0;  // the feeds along the path
+    for (std::size_t i = b; i < e; ++i) lo = std::min(lo, p.point_feed[i]), hi = std::max(hi, p.point_feed[i]);
+    s += "  PATH " + std::string(pp.torch ? "torch" : "dry") + " feed " + f4(pp.feed_mm_min) +
+         (lo != hi ? " (" + f4(lo) + ".." + f4(hi) + ")" : "") + " tol " + f4(pp.tol) +
          " pierce " + f4(pp.pierce_delay_s) + " points " + std::to_string(e - b) + " from " +
          f4(p.points.points[b].x) + " " + f4(p.points.points[b].y) + " to " + f4(p.points.points[e - 1].x) + " " +
          f4(p.points.points[e - 1].y) + " lines " + std::to_string(p.points.point_lines[b]) + ".." +

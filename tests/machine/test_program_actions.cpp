@@ -165,6 +165,16 @@ TEST(ProgramActions, FeedPercentSlowsThePathsAfterIt) {
   EXPECT_LT(fastest, 5.0 + 0.01);
 }
 
+// Inside a cut the feed % splits nothing (no re-pierce): the segments after it run slower.
+TEST(ProgramActions, FeedPercentInsideACutSlowsItsLaterSegmentsWithoutAPierce) {
+  const control::FittedJob f = fitted("G21 G90\nG0 X0 Y0\nM3\nG1 X20 F1200\nM67 E3 Q50\nG1 Y20\nM5\n");
+  ASSERT_EQ(f.job.paths.size(), 1u);
+  ASSERT_EQ(f.job.paths[0].segments.size(), 2u);
+  EXPECT_DOUBLE_EQ(f.job.paths[0].segments[0].feed, 20.0);
+  EXPECT_DOUBLE_EQ(f.job.paths[0].segments[1].feed, 10.0);
+  EXPECT_TRUE(f.job.actions.empty());
+}
+
 TEST(ProgramActions, AFileWithoutATorchWordIsADryRun) {
   const control::FittedJob f = fitted("G21 G90\nG1 X20 Y0 F1200\nG0 X0 Y10\nG1 X20\n");
   ASSERT_EQ(f.job.paths.size(), 2u);
