@@ -67,6 +67,7 @@ void Controller::start(const ResumePoint& from) {
   report_.last_completed = static_cast<std::int64_t>(from.first) - 1;
   finished_ = false;
   have_status_ = false;
+  has_tail_ = false;
   std::size_t longest = 0;
   for (const CutPath& p : job_.paths) longest = p.segments.size() > longest ? p.segments.size() : longest;
   queue_.clear();
@@ -270,7 +271,10 @@ void Controller::begin_travel(Vec2<double> to) {
   queue_.clear();
   sent_ = 0;
   started_ = finish_sent_ = false;
-  if (distance(st_.position, to) > kSamePoint) {
+  // From the end of the last segment sent (exact), not the board's position
+  // (rounded to counts): a path that starts where the last one ended needs
+  // no travel, and a travel a fraction of a count long would be empty on the board.
+  if (distance(has_tail_ ? tail_ : st_.position, to) > kSamePoint) {
     hal::SegmentCommand c;
     c.kind = SegmentKind::line;
     c.end = to;
@@ -321,6 +325,8 @@ bool Controller::pump() {
     hal::BoardStatus s;
     if (!link_ok(link_.push(c, s))) return false;  // the same number goes again next cycle
     st_ = s;
+    tail_ = c.end;
+    has_tail_ = true;
     ++next_seq_;
     job_of_wire_.push_back(block_ == Block::cut ? static_cast<std::int64_t>(next_seg_ + sent_) : -1);
     block_last_seq_ = next_seq_;

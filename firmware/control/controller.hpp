@@ -151,6 +151,8 @@ class Controller {
   std::size_t sent_ = 0;
   bool started_ = false, finish_sent_ = false;
   std::uint32_t block_last_seq_ = 0;
+  Vec2<double> tail_{};  // where the last segment sent ends
+  bool has_tail_ = false;
 
   // Where the job stands.
   std::size_t path_ = 0;        // current path

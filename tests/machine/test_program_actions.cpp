@@ -74,6 +74,19 @@ TEST(ProgramActions, DwellHoldsTheMachineAtRestTorchOff) {
   EXPECT_EQ(r.run.pierces, 2u);
 }
 
+// A path that starts where the last one ended, off the count grid (0.2 um
+// here): no travel at all. A travel from the board's position (rounded to
+// counts) was a fraction of a count long, empty on the board: bad-segment.
+TEST(ProgramActions, APathFromTheLastOnesEndOffTheCountGridNeedsNoTravel) {
+  const control::FittedJob f =
+      fitted("G1 X129.1062 Y-33.3832 F1500\nG4 P0.1\nG1 X129.0943 Y-33.3862 F100\nG1 X129.0851 Y-33.3949\n");
+  ASSERT_EQ(f.job.paths.size(), 2u);
+  FakeGpio gpio;
+  const auto r = simulated::run_sim_machine(f.job, fast(), {}, gpio, nullptr, {});
+  ASSERT_EQ(r.run.state, State::done) << r.run.reason;
+  EXPECT_EQ(r.executed.size(), f.job.segment_count());
+}
+
 TEST(ProgramActions, PauseWaitsForCycleStart) {
   const control::FittedJob f = fitted(two_cuts("M0"));
   FakeGpio gpio;
