@@ -138,6 +138,27 @@ class Interp {
     return true;
   }
 
+  // P, Q and L only where a code on the line takes them (LinuxCNC refuses the rest too).
+  bool words_used(const Words& w) {
+    bool user_m = false, arc = false;
+    for (const int c : w.m) user_m = user_m || (c >= 1000 && c <= 1990);
+    for (const int c : w.g) arc = arc || c == 20 || c == 30;
+    arc = arc || (w.g.empty() && (m_.motion == Mode::cw || m_.motion == Mode::ccw));
+    const bool io = w.m_has(620) || w.m_has(630) || w.m_has(640) || w.m_has(650) || w.m_has(660);
+    const bool analog = w.m_has(670) || w.m_has(680);
+    const struct {
+      char letter;
+      bool used;
+    } uses[] = {{'P', io || user_m || arc || w.g_has(40) || w.g_has(100) || w.g_has(640)},
+                {'Q', w.m_has(660) || analog || user_m || w.g_has(640)},
+                {'L', w.g_has(100) || w.m_has(660)}};
+    for (const auto& u : uses)
+      if (w.any(u.letter) && !u.used)
+        return refuse(std::string(1, u.letter) + word_value(w.at(u.letter)).text +
+                      ": no G or M code on this line takes " + std::string(1, u.letter));
+    return true;
+  }
+
   bool block(const Words& w) {
     if (!check_letters(w)) return false;
     if (w.has_dollar && !w.m_has(30) && !w.m_has(40) && !w.m_has(50)) return refuse("$ (a spindle select) without M3, M4 or M5");
@@ -217,6 +238,7 @@ class Interp {
           return refuse(name + " is not supported");
       }
     }
+    if (!words_used(w)) return false;  // after the codes: an unsupported code is named first
     const bool axes = w.any('X') || w.any('Y') || w.any('Z') || w.any('I') || w.any('J') || w.any('R');
     if (w.any('K')) return refuse("K: arcs are in the XY plane (I J) only");
     if (axes && !non_motion_axes) {
@@ -452,7 +474,7 @@ class Interp {
       if (std::fabs(r1 - r0) > 0.01 + 1e-4 * r0) {
         char buf[160];
         std::snprintf(buf, sizeof buf, "the arc's end is off its circle: radius %.6g at the start, %.6g at the end",
-                      r0, r1);
+                      r0 / scale(), r1 / scale());  // in the program's units
         return refuse(buf);
       }
       return true;
