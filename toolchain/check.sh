@@ -3,8 +3,9 @@
 # build, test), print each preset's wall time and the total, and end with one
 # line "N passed, N failed" (ctest's counts summed over the presets). Exits
 # non-zero if anything failed. The cross presets run only the tests labelled
-# target; quick (unit and component tests of the host build) is not in the
-# default list, since host runs them all.
+# target, tsan only those labelled threads (under ThreadSanitizer); quick
+# (unit and component tests of the host build) is not in the default list,
+# since host runs them all.
 #
 #   bash toolchain/check.sh                 # all presets
 #   bash toolchain/check.sh host armhf      # just these
@@ -28,7 +29,7 @@ if ! bash toolchain/setup.sh; then
 fi
 
 presets=("$@")
-((${#presets[@]})) || presets=(host debug-asan aarch64 armhf cortex-m4 cortex-m0 fuzz)
+((${#presets[@]})) || presets=(host debug-asan tsan aarch64 armhf cortex-m4 cortex-m0 fuzz)
 fresh=()
 [[ "${KERF_FRESH:-1}" == 0 ]] || fresh=(--fresh)
 

@@ -4,13 +4,13 @@
 # only runs dpkg-query and apt-cache (no apt-get update).
 #
 #   setup.sh          everything: what toolchain/check.sh (the test command) needs
-#   setup.sh host     only what the host build and `kerf sim` need (toolchain/demo.sh)
+#   setup.sh host     only what the host build and `kerf-sim sim` need (toolchain/demo.sh)
 #
 # To add a package: append it to the group below that needs it (one per line,
 # keep it sorted by purpose) and say why in the comment next to it.
 set -euo pipefail
 
-# The host build (configure, the kerf command, kerf sim) and its libraries.
+# The host build (configure, the kerf and kerf-sim commands) and its libraries.
 HOST_PACKAGES=(
   # compiler and build; pkg-config finds libmodbus and libgpiod (KerfDeps.cmake)
   cmake ninja-build g++ python3 pkg-config

@@ -1,5 +1,7 @@
-// The kerf command. Exit codes: 0 success, 1 the fit or the output failed,
-// 2 bad options or bad input (the message is on stderr, stdout stays empty).
+// The kerf command: fit, plan, weld and run; it links no simulator (the
+// build checks its symbols). The simulator is kerf-sim (sim_main.cpp).
+// Exit codes: 0 success, 1 the fit or the output failed, 2 bad options or
+// bad input (the message is on stderr, stdout stays empty).
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
@@ -7,13 +9,9 @@
 
 #include "app/fit_command.hpp"
 #include "app/plan_command.hpp"
-#include "app/run_options.hpp"
-#include "app/sim_options.hpp"
-#include "app/weld_command.hpp"
-#if KERF_HAVE_MODBUS
 #include "app/run_command.hpp"
-#include "simulated/sim_command.hpp"
-#endif
+#include "app/run_options.hpp"
+#include "app/weld_command.hpp"
 
 #ifndef KERF_VERSION
 #define KERF_VERSION "unknown"
@@ -31,8 +29,10 @@ int main(int argc, char** argv) {
     CLI::App* fit = add_fit_command(app, fit_opts);
     PlanOptions plan_opts;
     CLI::App* plan = add_plan_command(app, plan_opts);
-    kerf::simulated::SimOptions sim_opts;
-    CLI::App* sim = add_sim_command(app, sim_opts);
+    // `kerf sim` moved to kerf-sim: a hint, whatever follows.
+    CLI::App* sim = app.add_subcommand("sim", "Moved: the simulator is `kerf-sim sim` (package kerf-sim)");
+    sim->prefix_command();
+    sim->set_help_flag();
     RunOptions run_opts;
     CLI::App* run = add_run_command(app, run_opts);
     WeldCommandOptions weld_opts;
@@ -48,16 +48,11 @@ int main(int argc, char** argv) {
     if (fit->parsed()) return run_fit(fit_opts);
     if (plan->parsed()) return run_plan(plan_opts);
     if (weld->parsed()) return run_weld(weld_opts);
-#if KERF_HAVE_MODBUS
-    if (sim->parsed()) return kerf::simulated::run_sim(sim_opts);
     if (run->parsed()) return run_run(run_opts);
-#else
-    if (sim->parsed() || run->parsed()) {
-      std::fprintf(stderr, "kerf: %s: this build has no libmodbus (the target's libmodbus-dev was not found)\n",
-                   sim->parsed() ? "sim" : "run");
-      return kExitFailure;
+    if (sim->parsed()) {
+      std::fprintf(stderr, "kerf: sim: the simulator is `kerf-sim sim` (package kerf-sim); kerf runs machines only\n");
+      return kExitUsage;
     }
-#endif
     return kExitUsage;  // require_subcommand(1) makes this unreachable
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "kerf: out of memory\n");

@@ -1,5 +1,4 @@
-// `kerf run`'s options. Built in every configuration, so that --help is the
-// same everywhere; running it needs the Modbus link (run_command.cpp).
+// `kerf run`'s options (kerf-sim's bench run takes the same).
 #include <CLI/CLI.hpp>
 
 #include "app/run_options.hpp"
@@ -8,11 +7,11 @@ namespace kerf::app {
 
 CLI::App* add_run_command(CLI::App& app, RunOptions& o) {
   CLI::App* r = app.add_subcommand(
-      "run", "Cut a job on the machine: the motion board over Modbus, the torch and safety inputs on GPIO");
+      "run",
+      "Cut a job on the machine: the motion board over Modbus or the drives over CAN, the torch and safety inputs on "
+      "GPIO (a bench without a torch: [bench] enabled = true in the configuration)");
   r->add_option("--config", o.config, "Machine configuration (TOML)")->type_name("FILE")->required();
   add_journal_options(r, o.journal, o.resume);
-  r->add_flag("--sim-gpio", o.sim_gpio,
-              "Bench mode: simulate the torch and inputs (arc-OK follows the torch). Never on a machine with a torch");
   add_report_option(r, o.report);
   add_job_file(r, "job", o.job)->type_name("JOB")->required();
   return r;

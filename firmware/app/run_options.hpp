@@ -14,14 +14,13 @@ struct RunOptions {
   std::string config;   // required
   std::string journal;
   bool resume = false;
-  bool sim_gpio = false;  // bench mode: the torch and inputs simulated
   std::string report;
   std::string job;      // point file (paths separated by blank lines)
 };
 
 CLI::App* add_run_command(CLI::App& app, RunOptions& opts);
 
-// The options `kerf run` and `kerf sim` share, with the same help.
+// The options `kerf run` and `kerf-sim sim` share, with the same help.
 void add_journal_options(CLI::App* command, std::string& journal, bool& resume);
 void add_report_option(CLI::App* command, std::string& report);
 // The job, positional `name`; the caller gives its type name.

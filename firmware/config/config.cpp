@@ -140,6 +140,7 @@ bool parse(const std::string& text, const std::string& display_name, Config& out
   TableReader fit = section(root, "fit", empty);
   TableReader cut = section(root, "cut", empty);
   TableReader rt = section(root, "rt", empty);
+  TableReader bench = section(root, "bench", empty);
   const bool has_link = parsed.table()["link"].is_table();
   read_program(root, c.program, c.sim);
   if (!root.has("link"))
@@ -154,6 +155,7 @@ bool parse(const std::string& text, const std::string& display_name, Config& out
   read_fit(fit, c.fit);
   read_cut(cut, c.cut);
   read_rt(rt, c.rt);
+  read_bench(bench, c.bench);
 
   if (!problems.any()) {
     check_machine(machine, c.machine);

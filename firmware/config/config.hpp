@@ -77,6 +77,13 @@ struct Rt {
   bool lock_memory = false;
 };
 
+// A bench: the machine's axes without a torch. `kerf run` then runs motion
+// only, refuses any torch output, and marks every status line and the report
+// BENCH (machine/machine_factory.hpp).
+struct Bench {
+  bool enabled = false;
+};
+
 struct Config {
   std::string file;  // where it was read from; "(defaults)" for defaults()
   Machine machine;
@@ -87,6 +94,7 @@ struct Config {
   Rt rt;
   Program program;
   Sim sim;
+  Bench bench;
 };
 
 // The interpreter's settings from a configuration (strict: kerf run).

@@ -265,4 +265,9 @@ void read_rt(TableReader& r, Rt& rt) {
   r.finish();
 }
 
+void read_bench(TableReader& r, Bench& bench) {
+  r.boolean("enabled", bench.enabled);
+  r.finish();
+}
+
 }  // namespace kerf::config

@@ -30,6 +30,7 @@ void read_cut(TableReader& r, Cut& cut);
 void read_rt(TableReader& r, Rt& rt);
 // The interpreter's sections (program_section.cpp): [tools], [materials], [mcodes], [outputs], [sim].
 void read_program(TableReader& root, Program& p, Sim& sim);
+void read_bench(TableReader& r, Bench& bench);
 
 void check_machine(TableReader& machine, const Machine& m);
 void check_link(TableReader& link_reader, const Link& link, const TableReader& machine,

@@ -27,20 +27,50 @@ bool fit_paths(const io::PointFile& in, job::Criterion criterion, double tol, do
       return false;
     }
     control::CutPath path;
-    path.start = pts.front();
-    for (const fit::Piece<double>& piece : pieces) {
-      hal::SegmentCommand c;
-      c.kind = piece.segment.kind;
-      c.end = piece.segment.end;
-      c.centre = piece.segment.centre;
-      c.dir = piece.segment.dir;
-      c.feed = feed_mm_s;
-      c.torch = true;
-      path.segments.push_back(c);
-      out.pieces.push_back(piece);
-      out.piece_path.push_back(p);
+    if (!motion::snap_to_grid(pts.front(), kLinkGrid, path.start)) {
+      error = "path " + std::to_string(p + 1) + ": its start lies beyond the link's coordinate range";
+      status = Status::invalid_argument;
+      return false;
     }
+    // Each piece as the segments the board runs (motion/segment_contract.hpp):
+    // on the link's grid, starting where the previous one ends.
+    Vec2<double> from = path.start;
+    for (const fit::Piece<double>& piece : pieces) {
+      const motion::Emitted<double> em = motion::emit_on_grid(from, piece.segment, kLinkGrid);
+      if (em.status != motion::EmitStatus::ok) {
+        error = "path " + std::to_string(p + 1) + " (line " +
+                std::to_string(piece.first + b < in.point_lines.size() ? in.point_lines[piece.first + b] : 0) +
+                "): " +
+                (em.status == motion::EmitStatus::off_grid ? "a point beyond the link's coordinate range"
+                                                           : "internal error: the fit made a segment no board runs");
+        status = Status::invalid_argument;
+        return false;
+      }
+      for (int k = 0; k < em.count; ++k) {
+        const Segment<double>& g = em.segments[k];
+        hal::SegmentCommand c;
+        c.kind = g.kind;
+        c.end = g.end;
+        c.centre = g.centre;
+        c.dir = g.dir;
+        c.feed = feed_mm_s;
+        c.torch = true;
+        path.segments.push_back(c);
+        fit::Piece<double> run = piece;
+        run.segment = g;
+        out.pieces.push_back(run);
+        out.piece_path.push_back(p);
+        from = g.end;
+      }
+      out.lines_for_arcs += static_cast<std::size_t>(em.lines_for_arcs);
+    }
+    if (path.segments.empty()) continue;  // the whole path is shorter than the grid
     out.job.paths.push_back(std::move(path));
+  }
+  if (out.job.paths.empty()) {
+    error = "every path is shorter than the link's resolution (0.001 mm)";
+    status = Status::invalid_argument;
+    return false;
   }
   status = Status::ok;
   return true;

@@ -1,6 +1,7 @@
 // A point file's cut paths fitted one by one into a controller Job: each
 // path becomes a chain of arcs and lines at the cut feed, pierced at its
-// first point. Shared by `kerf sim` and `kerf run`.
+// first point. Shared by `kerf sim` and `kerf run`. Every segment is one the
+// board runs, after the link's rounding (motion/segment_contract.hpp).
 #pragma once
 
 #include <memory>
@@ -13,6 +14,7 @@
 #include "job/criterion.hpp"
 #include "kerf/core/status.hpp"
 #include "kerf/fit/fit.hpp"
+#include "kerf/motion/segment_contract.hpp"
 
 namespace kerf::control {
 
@@ -20,7 +22,13 @@ struct FittedJob {
   control::Job job;
   std::vector<fit::Piece<double>> pieces;  // in job order
   std::vector<std::size_t> piece_path;     // the path of each piece
+  std::size_t lines_for_arcs = 0;          // arcs too small for the link's grid, run as chords
 };
+
+// The grid every segment link carries: integer micrometres in 32 bits
+// (hal/modbus/REGISTERS.md; the CAN link takes any double, so 1 um is exact
+// for it too). fit_paths emits every segment on it (motion/segment_contract.hpp).
+inline constexpr motion::SegmentGrid kLinkGrid{1000, 2147483647};
 
 // On failure returns false with `error` ("path N (line L): reason") and `status`.
 // numeric: the fit's scalar type (job/criterion.hpp).

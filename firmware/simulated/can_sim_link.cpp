@@ -39,15 +39,11 @@ bool parse_can_fault(const std::string& text, CanFaultKind& out) {
 
 namespace {
 
-std::uint8_t node_of(const CanSimOptions& o, std::size_t axis) {
-  return o.node_ids.empty() ? static_cast<std::uint8_t>(axis + 1) : o.node_ids[axis];
-}
-
 std::vector<sim::DriveConfig> drive_configs(const CanSimOptions& o) {
   std::vector<sim::DriveConfig> v;
   for (std::size_t i = 0; i < o.axes; ++i) {
     sim::DriveConfig d;
-    d.node = node_of(o, i);
+    d.node = machine::can_node_of(o, i);
     const double mm = i == 0 ? o.start.x : i == 1 ? o.start.y : 0.0;
     d.start = static_cast<std::int32_t>(std::lround(mm * (i == 1 ? o.counts_per_mm.y : o.counts_per_mm.x)));
     v.push_back(d);
@@ -55,59 +51,11 @@ std::vector<sim::DriveConfig> drive_configs(const CanSimOptions& o) {
   return v;
 }
 
-hal::CanOpenConfig master_config(const CanSimOptions& o, bool wall_clock) {
-  hal::CanOpenConfig c;
-  c.nodes.clear();
-  for (std::size_t i = 0; i < o.axes; ++i) c.nodes.push_back(node_of(o, i));
-  c.sync_us = static_cast<std::uint32_t>(std::lround(o.sync_ms * 1000.0));
-  if (wall_clock) {  // a loaded host must not look like a dead drive
-    c.heartbeat_ms = 50;
-    c.heartbeat_timeout_ms = 250;
-    c.sdo_timeout_us = 500000;
-    c.boot_timeout_us = 2000000;
-  }
-  return c;
-}
-
-// What the master reads: the drives' EMCY, TPDO1, SDO replies and heartbeats.
-std::vector<hal::CanFilter> master_filters() {
-  return {{hal::canopen::kEmcy, 0x780},
-          {hal::canopen::kTpdo1, 0x780},
-          {hal::canopen::kSdoTx, 0x780},
-          {hal::canopen::kHeartbeat, 0x780}};
-}
-
-// Shared by both buses: the master, the CSP link, and the forwarding.
+// Shared by both buses: the SYNC period's clock.
 class CanSimLinkBase : public CanSimLink {
  public:
-  hal::LinkError push(const hal::SegmentCommand& s, hal::BoardStatus& st) override { return csp_->push(s, st); }
-  hal::LinkError status(hal::BoardStatus& st) override { return csp_->status(st); }
-  hal::LinkError command(hal::Command c) override { return csp_->command(c); }
-  std::uint64_t resends() const override { return 0; }
-  const char* last_error() const override { return csp_->last_error(); }
   void tick() override { csp_->cycle(); }
   double sync_period_s() const override { return master_->period_s(); }
-  hal::CspSegmentLink& csp() override { return *csp_; }
-  const hal::AxisLink& axes() const override { return *master_; }
-
- protected:
-  bool start(hal::CanBus& bus, const CanSimOptions& o, bool wall_clock, std::string& error) {
-    master_ = hal::CanOpenMaster::create(bus, master_config(o, wall_clock), error);
-    if (!master_) return false;
-    if (master_->bring_up() != hal::AxisError::none || master_->enable() != hal::AxisError::none) {
-      error = std::string("CAN bring-up: ") + master_->last_error();
-      return false;
-    }
-    hal::CspConfig c;
-    c.counts_per_mm = o.counts_per_mm;
-    c.accel_mm_s2 = o.accel_mm_s2;
-    c.corner_angle_rad = o.corner_angle_rad;
-    c.queue_slots = o.queue_slots;
-    csp_ = hal::CspSegmentLink::create(*master_, c, error);
-    return csp_ != nullptr;
-  }
-  std::unique_ptr<hal::CanOpenMaster> master_;
-  std::unique_ptr<hal::CspSegmentLink> csp_;
 };
 
 class VirtualCanSimLink final : public CanSimLinkBase {
@@ -158,11 +106,11 @@ class SocketCanSimLink final : public CanSimLinkBase {
     drives_ = sim::SocketDrives::open(o.iface, drive_configs(o), o.candump_path, error);
     if (!drives_) return false;
     if (o.refuse_enable_axis >= 0)
-      drives_->inject(node_of(o, static_cast<std::size_t>(o.refuse_enable_axis)), sim::DriveFault::enable_refused);
-    bus_ = hal::SocketCanBus::open(o.iface, master_filters(), error);
+      drives_->inject(machine::can_node_of(o, static_cast<std::size_t>(o.refuse_enable_axis)), sim::DriveFault::enable_refused);
+    bus_ = hal::SocketCanBus::open(o.iface, machine::can_master_filters(), error);
     if (!bus_) return false;
-    first_ = node_of(o, 0);
-    last_ = node_of(o, o.axes - 1);
+    first_ = machine::can_node_of(o, 0);
+    last_ = machine::can_node_of(o, o.axes - 1);
     drives_->start_thread();
     return start(*bus_, o, true, error);
   }
@@ -201,50 +149,12 @@ class SocketCanSimLink final : public CanSimLinkBase {
   std::unique_ptr<hal::SocketCanBus> bus_;
 };
 
-// The machine's own drives on a SocketCAN interface (`kerf run`): no
-// simulated drives; the CSP clock runs on its own thread, paced by the SYNC
-// on the wall clock, so the controller's cycle only queues and polls.
-class MachineCanLink final : public CanSimLinkBase {
- public:
-  ~MachineCanLink() override {
-    if (csp_) csp_->stop_clock();
-  }
-  bool open(const CanSimOptions& o, std::string& error) {
-    bus_ = hal::SocketCanBus::open(o.iface, master_filters(), error);
-    if (!bus_ || !start(*bus_, o, true, error)) return false;
-    csp_->run_clock(true);
-    return true;
-  }
-  void tick() override {}  // the clock thread runs the SYNC periods
-  void inject(CanFaultKind) override {}
-  double bus_load_bps() const override { return 0.0; }
-  bool finish_log(std::string&) override { return true; }
-
- private:
-  std::unique_ptr<hal::SocketCanBus> bus_;
-};
-
 }  // namespace
 
 CanSimOptions can_sim_options(const config::Config& cfg) {
   CanSimOptions o;
-  o.axes = cfg.machine.axes.size();
-  for (int id : cfg.link.node_ids) o.node_ids.push_back(static_cast<std::uint8_t>(id));
-  o.sync_ms = cfg.link.sync_ms;
-  if (!cfg.machine.axes.empty()) o.counts_per_mm.x = cfg.machine.axes[0].counts_per_mm;
-  if (cfg.machine.axes.size() > 1) o.counts_per_mm.y = cfg.machine.axes[1].counts_per_mm;
-  o.accel_mm_s2 = cfg.machine.accel;
+  machine::read_can_link_options(cfg, o);
   return o;
-}
-
-std::unique_ptr<hal::SegmentLink> open_machine_can_link(const CanSimOptions& opts, std::string& error) {
-  if (opts.iface.empty()) {
-    error = "link.iface: kerf run needs a SocketCAN interface (can0, vcan0 ...)";
-    return nullptr;
-  }
-  auto link = std::make_unique<MachineCanLink>();
-  if (!link->open(opts, error)) return nullptr;
-  return link;
 }
 
 std::unique_ptr<CanSimLink> make_can_sim_link(const CanSimOptions& opts, std::string& error) {

@@ -19,6 +19,7 @@
 #include "kerf/hal/axis_link.hpp"
 #include "kerf/hal/can/csp_segment_link.hpp"
 #include "kerf/hal/segment_link.hpp"
+#include "machine/can_link.hpp"
 
 namespace kerf::simulated {
 
@@ -27,23 +28,17 @@ const char* to_string(CanFaultKind k);
 // "heartbeat-loss", "emcy", "bus-off", "enable-refused"; false for anything else.
 bool parse_can_fault(const std::string& text, CanFaultKind& out);
 
-struct CanSimOptions {
-  std::size_t axes = 2;          // 2 or 3: x, y (and a third axis that holds its position)
-  std::vector<std::uint8_t> node_ids;  // one per axis (the config's link.node_ids); empty: 1..axes
-  double sync_ms = 1;            // SYNC period, a whole number of ms in 1..10
-  std::string iface;             // empty: the in-process bus
+// The CAN link's options (machine/can_link.hpp; iface empty: the in-process
+// bus) and the simulated drives'.
+struct CanSimOptions : machine::CanLinkOptions {
   Vec2<double> start{};          // where the axes are at power-up, mm
-  Vec2<double> counts_per_mm{1000.0, 1000.0};  // x, y (a third axis: x's)
-  double accel_mm_s2 = 2000.0;
-  double corner_angle_rad = 0.05;
-  std::size_t queue_slots = 32;
   // A drive (axis index) that refuses "enable operation" from power-up: the
   // link cannot be made and the error says which drive. -1: none.
   int refuse_enable_axis = -1;
   std::string candump_path;      // candump -L log of every frame ("": none)
 };
 
-class CanSimLink : public hal::SegmentLink {
+class CanSimLink : public machine::CanMasterLink {
  public:
   // One SYNC period: the interpolator's setpoint out, the drives' feedback in.
   virtual void tick() = 0;
@@ -52,8 +47,8 @@ class CanSimLink : public hal::SegmentLink {
   // hit the last axis's drive, emcy the first's. enable-refused: the drive
   // faults (EMCY) and then refuses to be enabled again.
   virtual void inject(CanFaultKind k) = 0;
-  virtual hal::CspSegmentLink& csp() = 0;
-  virtual const hal::AxisLink& axes() const = 0;
+  hal::CspSegmentLink& csp() { return *csp_; }
+  const hal::AxisLink& axes() const { return *master_; }
   // Worst-case bus load of the frames sent so far, bits/s (in-process only; 0 otherwise).
   virtual double bus_load_bps() const = 0;
   // Writes candump_path (the in-process log; SocketCAN logs as it goes).
@@ -68,10 +63,5 @@ CanSimOptions can_sim_options(const config::Config& cfg);
 // Starts the drives, brings them up (NMT, SDO setup) and enables them (402).
 // Null with a clear reason in `error` when anything fails.
 std::unique_ptr<CanSimLink> make_can_sim_link(const CanSimOptions& opts, std::string& error);
-
-// The machine's drives for `kerf run`: the CANopen master on the SocketCAN
-// interface opts.iface (brought up, enabled), the CSP link's clock on a
-// thread of its own. Null with the reason when anything fails.
-std::unique_ptr<hal::SegmentLink> open_machine_can_link(const CanSimOptions& opts, std::string& error);
 
 }  // namespace kerf::simulated

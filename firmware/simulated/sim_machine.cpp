@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "kerf/hal/rt_loop.hpp"
+#include "machine/machine_factory.hpp"
 #include "simulated/sim_plant.hpp"
 
 namespace kerf::simulated {
@@ -45,7 +46,8 @@ SimMachineResult run_sim_machine(const control::Job& job, const control::Control
   const double servo = plant.tick_s();
   const long ticks_per_cycle = std::max(1L, std::lround(mcfg.cycle_s / servo));
   hal::SegmentLink& link = plant.link();
-  control::Controller ctl(job, ccfg, link, gpio, journal);
+  const std::unique_ptr<control::Controller> made = machine::make_controller(job, ccfg, link, gpio, journal);
+  control::Controller& ctl = *made;
   ctl.start(from);
   std::vector<BoardFault> faults = mcfg.faults;
   std::stable_sort(faults.begin(), faults.end(),

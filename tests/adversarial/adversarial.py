@@ -565,9 +565,9 @@ def case_gcode_unknown_words(ctx):
 
 
 def case_sim_inputs(ctx):
-    """kerf sim (the controller on the simulated machine) refuses the same
-    hostile inputs before it moves anything (registered when kerf sim is
-    built, with libmodbus)."""
+    """kerf-sim sim (the controller on the simulated machine) refuses the same
+    hostile inputs before it moves anything (registered when kerf-sim sim is
+    built, with libmodbus; the binary given is kerf-sim)."""
     sim = ["sim", "--link", "modbus-tcp", "--speed", "0", "--tol"]
     ctx.write("nan.txt", "0 0\n1 nan\n2 2\n")
     ctx.refused(sim + ["0.1", "nan.txt"], r"nan\.txt:2: NaN or infinite coordinate\n")

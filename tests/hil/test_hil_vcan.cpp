@@ -392,7 +392,7 @@ TEST(HilVcan, KerfRunCutsAJobOnDrivesInAnotherProcess) {
              f);
   std::fclose(f);
   std::remove(report.c_str());
-  const std::string cmd = std::string(KERF_BIN) + " run --config " + cfg + " --sim-gpio --report " + report + " " +
+  const std::string cmd = std::string(KERF_SIM_BIN) + " run --config " + cfg + " --report " + report + " " +
                           KERF_EXAMPLES + "/parabola.txt > " + dir + "/kerf_run_can.out 2>&1";
   const int rc = std::system(cmd.c_str());
   const std::string rep = slurp(report);

@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# `kerf sim` with no arguments, as the README's main job runs it: the
+# `kerf-sim sim` with no arguments, as the README's main job runs it: the
 # built-in demo job on the simulated machine, from any directory, writing its
 # trace, plot and report there.
 #
-#   sim_default.sh KERF WORKDIR
+#   sim_default.sh KERF_SIM WORKDIR
 set -euo pipefail
 kerf=$1 dir=$2
 rm -rf "$dir" && mkdir -p "$dir" && cd "$dir"

@@ -27,12 +27,6 @@ kerf::fit::Piece<double> pieces[kPoints - 1];
 
 }  // namespace
 
-extern "C" void kerf_assert_failed(const char* expr, const char* file, int line) {
-  std::printf("%s:%d: contract violated: %s\n", file, line, expr);
-  for (;;) {
-  }
-}
-
 int main() {
 #ifndef KERF_MCU_FIXED_ONLY
   // y = 300 - 200 (1 - x/500)^2 at x = linspace(500, 0, 200), as in the report.

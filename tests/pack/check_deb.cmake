@@ -1,8 +1,9 @@
-# The .deb: built with cpack from this build, unpacked with dpkg -x into a
-# scratch root, and the installed kerf run from there.
+# The .debs, kerf and kerf-sim: built with cpack from this build, unpacked
+# with dpkg -x into one scratch root, and the installed commands run from
+# there. kerf's package holds no simulator; kerf-sim's holds only that.
 #   cmake -DCPACK_CONFIG=<build>/CPackConfig.cmake -DOUT=<scratch> -DARCH=amd64|arm64
 #         -DVERSION=x.y.z -DSOURCE_DIR=<tree> -DPOINTS=<point file> [-DEMULATOR=list]
-#         [-DOBJDUMP=<objdump>] -P check_deb.cmake
+#         [-DOBJDUMP=<objdump>] [-DBOARD_SIM=ON] -P check_deb.cmake
 cmake_minimum_required(VERSION 3.25)
 file(REMOVE_RECURSE ${OUT})
 file(MAKE_DIRECTORY ${OUT})
@@ -24,6 +25,37 @@ if(NOT EXISTS ${deb})
 endif()
 file(SIZE ${deb} size)
 message(STATUS "${deb}: ${size} bytes")
+set(sim_deb ${OUT}/cpack/kerf-sim_${VERSION}_${ARCH}.deb)
+if(NOT EXISTS ${sim_deb})
+  file(GLOB made ${OUT}/cpack/*.deb)
+  message(FATAL_ERROR "expected ${sim_deb}, cpack made: ${made}")
+endif()
+file(SIZE ${sim_deb} size)
+message(STATUS "${sim_deb}: ${size} bytes")
+run(dpkg-deb -f ${sim_deb} Package Architecture Version Depends)
+if(NOT out MATCHES "Package: kerf-sim\n" OR NOT out MATCHES "Architecture: ${ARCH}\n"
+   OR NOT out MATCHES "Version: ${VERSION}\n" OR NOT out MATCHES "Depends: [^\n]*libc6")
+  message(FATAL_ERROR "control fields of ${sim_deb} are wrong:\n${out}")
+endif()
+# What goes where: no simulator in kerf's package, nothing but it in kerf-sim's.
+run(dpkg-deb -c ${deb})
+if(out MATCHES "kerf-sim|kerf-board-sim|kerf-drive-sim")
+  message(FATAL_ERROR "${deb} carries the simulator:\n${out}")
+endif()
+run(dpkg-deb -c ${sim_deb})
+set(sim_list "${out}")
+set(sim_files usr/bin/kerf-sim usr/bin/kerf-drive-sim)
+if(BOARD_SIM)  # built with libmodbus
+  list(APPEND sim_files usr/bin/kerf-board-sim)
+endif()
+foreach(f IN LISTS sim_files)
+  if(NOT sim_list MATCHES "\\./${f}\n")
+    message(FATAL_ERROR "${sim_deb} lacks /${f}:\n${sim_list}")
+  endif()
+endforeach()
+if(sim_list MATCHES "\\./usr/bin/kerf\n|kerf\\.service|/etc/")
+  message(FATAL_ERROR "${sim_deb} carries kerf's own files:\n${sim_list}")
+endif()
 
 # Control fields.
 run(dpkg-deb -f ${deb} Package Architecture Version Depends)
@@ -42,6 +74,7 @@ endforeach()
 
 # Unpacked: every file where it belongs, the unit and config as in the tree.
 run(dpkg -x ${deb} ${OUT}/root)
+run(dpkg -x ${sim_deb} ${OUT}/root)
 set(root ${OUT}/root)
 foreach(f usr/bin/kerf usr/lib/libkerf_core.a usr/lib/libkerf_io.a usr/lib/libkerf_job.a
           usr/lib/cmake/kerf/kerfConfig.cmake usr/lib/cmake/kerf/kerfTargets.cmake
@@ -123,6 +156,10 @@ set(kerf ${root}/usr/bin/kerf)
 run(${EMULATOR} ${kerf} --version)
 if(NOT out MATCHES "${VERSION}")
   message(FATAL_ERROR "kerf --version printed: ${out}")
+endif()
+run(${EMULATOR} ${root}/usr/bin/kerf-sim --version)
+if(NOT out MATCHES "kerf-sim ${VERSION}")
+  message(FATAL_ERROR "kerf-sim --version printed: ${out}")
 endif()
 run(${EMULATOR} ${kerf} fit --tol 0.1 ${POINTS})
 if(NOT out MATCHES "Number of arcs is Narc = [1-9]")

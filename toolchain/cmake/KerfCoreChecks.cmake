@@ -22,3 +22,12 @@ function(kerf_print_size target)
       VERBATIM)
   endif()
 endfunction()
+
+# After every build of the executable `target` (kerf), fail the build if it
+# holds any kerf::sim:: or kerf::simulated:: symbol (check_no_sim.cmake).
+function(kerf_check_no_sim target)
+  add_custom_command(TARGET ${target} POST_BUILD
+    COMMAND ${CMAKE_COMMAND} -DNM=${CMAKE_NM} -DEXE=$<TARGET_FILE:${target}> -P ${CMAKE_CURRENT_FUNCTION_LIST_DIR}/check_no_sim.cmake
+    COMMENT "Checking ${target} for simulator symbols"
+    VERBATIM)
+endfunction()

@@ -73,7 +73,7 @@ function(kerf_find_libmodbus)
   kerf_pkg_library(modbus libmodbus)
   if(NOT KERF_HAVE_MODBUS)
     message(STATUS "kerf: libmodbus not found for ${CMAKE_SYSTEM_PROCESSOR}: the Modbus "
-                   "backend, the simulated motion board and `kerf sim` are not built (install libmodbus-dev for the target)")
+                   "backend (kerf run keeps CAN), the simulated motion board and `kerf-sim sim` are not built (install libmodbus-dev for the target)")
   endif()
   set(KERF_HAVE_MODBUS ${KERF_HAVE_MODBUS} PARENT_SCOPE)
 endfunction()

@@ -1,7 +1,9 @@
 # Installing kerf (`cmake --install`) and packaging it as a .deb (`cpack`).
 #
 # cmake --install BUILD [--prefix P] puts in P:
-#   bin/kerf                              the command
+#   bin/kerf                              the command (no simulator in it)
+#   bin/kerf-sim, bin/kerf-board-sim,     the simulator and the bench's board and
+#   bin/kerf-drive-sim                    drives (component sim)
 #   lib/libkerf_core.a, lib/libkerf_io.a, the fitting core, the point-file and
 #   lib/libkerf_job.a                     fit-output I/O, and the job reader
 #                                         (G-code) and fitting pipeline on top
@@ -13,7 +15,9 @@
 #   share/kerf/systemd/kerf.service       the unit and the example configuration,
 #   share/doc/kerf/examples/kerf.toml     for reference
 #
-# The .deb (cpack -G DEB in the build folder) installs under /usr and adds, as
+# Two .debs (cpack -G DEB in the build folder): kerf (components runtime, dev
+# and system) and kerf-sim (component sim), so that what is flashed onto a
+# machine need not carry the simulator. kerf installs under /usr and adds, as
 # component "system" (never part of a plain `cmake --install`, so that a local
 # install cannot touch the host's /etc or /lib), the unit as
 # /lib/systemd/system/kerf.service and the configuration as the conffiles
@@ -40,6 +44,12 @@ set_target_properties(kerf_io PROPERTIES EXPORT_NAME io)
 set_target_properties(kerf_job PROPERTIES EXPORT_NAME job)
 
 install(TARGETS kerf RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT runtime)
+install(TARGETS kerf-sim RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT sim)
+foreach(tool kerf-board-sim kerf-drive-sim)
+  if(TARGET ${tool})
+    install(TARGETS ${tool} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT sim)
+  endif()
+endforeach()
 install(TARGETS kerf_core kerf_io kerf_job EXPORT kerfTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT dev)
 # The core's headers a consumer compiles: the fit entry headers (fit.hpp,
@@ -110,7 +120,7 @@ install(FILES ${PROJECT_SOURCE_DIR}/firmware/examples/kerf.toml
 install(FILES ${CMAKE_CURRENT_LIST_DIR}/kerf.default
   DESTINATION /etc/default RENAME kerf COMPONENT system EXCLUDE_FROM_ALL)
 
-# --- CPack: one .deb holding every component ---------------------------------
+# --- CPack: two .debs, kerf (runtime, dev, system) and kerf-sim (sim) ---------
 if(CMAKE_SYSTEM_PROCESSOR MATCHES "^(x86_64|AMD64|amd64)$")
   set(kerf_deb_arch amd64)
 elseif(CMAKE_SYSTEM_PROCESSOR MATCHES "^(aarch64|arm64)$")
@@ -135,9 +145,17 @@ set(CPACK_INSTALL_PREFIX /usr)  # what the DESTDIR install below uses
 set(CPACK_SET_DESTDIR ON)  # the "system" component installs to /etc and /lib
 set(CPACK_STRIP_FILES ON)
 set(CPACK_DEB_COMPONENT_INSTALL ON)
-set(CPACK_COMPONENTS_GROUPING ALL_COMPONENTS_IN_ONE)
-set(CPACK_COMPONENTS_ALL runtime dev system)
-set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)  # kerf_0.1.0_amd64.deb
+set(CPACK_COMPONENTS_GROUPING ONE_PER_GROUP)
+set(CPACK_COMPONENTS_ALL runtime dev system sim)
+set(CPACK_COMPONENT_RUNTIME_GROUP kerf)
+set(CPACK_COMPONENT_DEV_GROUP kerf)
+set(CPACK_COMPONENT_SYSTEM_GROUP kerf)
+set(CPACK_COMPONENT_SIM_GROUP sim)
+set(CPACK_DEBIAN_KERF_PACKAGE_NAME kerf)
+set(CPACK_DEBIAN_SIM_PACKAGE_NAME kerf-sim)
+set(CPACK_DEBIAN_SIM_DESCRIPTION
+  "kerf-sim runs the kerf controller on simulated machines (kerf-sim sim), kerf run's loop with scripted lines against the bench's simulators (kerf-sim run), and the simulated Modbus motion board and CiA 402 drives as processes (kerf-board-sim, kerf-drive-sim). Not for a machine's controller.")
+set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)  # kerf_0.1.0_amd64.deb, kerf-sim_0.1.0_amd64.deb
 set(CPACK_DEBIAN_PACKAGE_ARCHITECTURE ${kerf_deb_arch})
 set(CPACK_DEBIAN_PACKAGE_SECTION misc)
 set(CPACK_DEBIAN_PACKAGE_HOMEPAGE "https://example.invalid/kerf")
@@ -148,17 +166,21 @@ if(CMAKE_CROSSCOMPILING)
   # libgpiod as their bookworm packages' shlibs files give them.
   set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS OFF)
   set(kerf_deb_depends "libc6 (>= 2.35), libgcc-s1 (>= 3.0), libstdc++6 (>= 12)")
-  if(KERF_HAVE_MODBUS)  # `kerf sim` and `kerf run` (kerf_simulated, app/run_command.cpp)
+  set(kerf_sim_deb_depends "${kerf_deb_depends}")
+  if(KERF_HAVE_MODBUS)  # kerf run's Modbus link (machine/), kerf-sim sim's board
     string(APPEND kerf_deb_depends ", libmodbus5 (>= 3.1.6)")
-    if(KERF_HAVE_GPIOD)
-      string(APPEND kerf_deb_depends ", libgpiod2 (>= 1.6.3)")
-    endif()
+    string(APPEND kerf_sim_deb_depends ", libmodbus5 (>= 3.1.6)")
   else()
-    message(STATUS "kerf: the ${kerf_deb_arch} .deb's kerf has no `kerf run` (no libmodbus for the target)")
+    message(STATUS "kerf: the ${kerf_deb_arch} .deb's kerf run has the CAN link only (no libmodbus for the target)")
   endif()
-  set(CPACK_DEBIAN_PACKAGE_DEPENDS "${kerf_deb_depends}")
+  if(KERF_HAVE_GPIOD)  # kerf run's lines (machine/, linked by both)
+    string(APPEND kerf_deb_depends ", libgpiod2 (>= 1.6.3)")
+    string(APPEND kerf_sim_deb_depends ", libgpiod2 (>= 1.6.3)")
+  endif()
+  set(CPACK_DEBIAN_KERF_PACKAGE_DEPENDS "${kerf_deb_depends}")
+  set(CPACK_DEBIAN_SIM_PACKAGE_DEPENDS "${kerf_sim_deb_depends}")
 else()
   set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 endif()
-set(CPACK_DEBIAN_PACKAGE_CONTROL_EXTRA ${CMAKE_CURRENT_LIST_DIR}/deb/conffiles)
+set(CPACK_DEBIAN_KERF_PACKAGE_CONTROL_EXTRA ${CMAKE_CURRENT_LIST_DIR}/deb/conffiles)
 include(CPack)

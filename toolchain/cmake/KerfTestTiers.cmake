@@ -46,11 +46,14 @@ function(kerf_test_tier tier)
 endfunction()
 
 # kerf_gtests(<executable> <tier> [TARGET] [FILTER <gtest filter>] [TIMEOUT <s>]
-#             [TEST_PREFIX <prefix>]): gtest_discover_tests (at test time, so
-# that cross builds list the tests under their emulator) with the tier's
-# labels. Call it once per filter to give parts of one binary different tiers.
+#             [TEST_PREFIX <prefix>] [THREADS <regex>]): gtest_discover_tests
+# (at test time, so that cross builds list the tests under their emulator)
+# with the tier's labels. Call it once per filter to give parts of one binary
+# different tiers. THREADS: the tests whose name matches run threads and get
+# the label `threads` too (the tsan preset runs those, and builds only their
+# executables: KERF_THREAD_TEST_TARGETS in CMakePresets.json's tsan build).
 function(kerf_gtests exe tier)
-  cmake_parse_arguments(PARSE_ARGV 2 arg "TARGET" "FILTER;TIMEOUT;TEST_PREFIX" "")
+  cmake_parse_arguments(PARSE_ARGV 2 arg "TARGET" "FILTER;TIMEOUT;TEST_PREFIX;THREADS" "")
   kerf_check_tier_name(${tier})
   set(labels ${tier})
   if(arg_TARGET)
@@ -76,7 +79,14 @@ function(kerf_gtests exe tier)
   set(labels_file ${CMAKE_CURRENT_BINARY_DIR}/${list_var}_labels.cmake)
   # (A test program a cross build leaves out is listed as <exe>_NOT_BUILT, unlabelled.)
   file(WRITE ${labels_file} "if(DEFINED ${list_var})\n"
-       "  set_tests_properties(\${${list_var}} PROPERTIES LABELS \"${labels}\")\nendif()\n")
+       "  set_tests_properties(\${${list_var}} PROPERTIES LABELS \"${labels}\")\n")
+  if(arg_THREADS)
+    file(APPEND ${labels_file} "  foreach(t IN LISTS ${list_var})\n"
+         "    if(t MATCHES \"${arg_THREADS}\")\n"
+         "      set_tests_properties(\${t} PROPERTIES LABELS \"${labels};threads\")\n"
+         "    endif()\n  endforeach()\n")
+  endif()
+  file(APPEND ${labels_file} "endif()\n")
   set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES ${labels_file})
   set_property(TARGET ${exe} APPEND PROPERTY KERF_TEST_TIER ${tier})
 endfunction()

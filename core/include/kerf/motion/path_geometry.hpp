@@ -6,42 +6,32 @@
 
 #include "kerf/core/status.hpp"
 #include "kerf/motion/path_queue.hpp"
+#include "kerf/motion/segment_contract.hpp"
 
 namespace kerf::motion {
 
 // Fills the derived fields of a queued segment. invalid_argument for a feed
-// that is not a finite number > 0, a non-finite coordinate, or a segment of
-// zero length (a line whose ends coincide, an arc of zero radius or sweep).
+// that is not a finite number > 0, or a geometry the board refuses
+// (segment_contract.hpp: segment_flaw, the contract with the fit).
 template <class S>
 Result<QueuedSegment<S>> prepare_segment(const PathSegment<S>& p) {
-  using Sc = Scalar<S>;
   const Segment<S>& g = p.geometry;
-  const bool finite = Sc::is_finite(p.feed) && Sc::is_finite(g.start.x) &&
-                      Sc::is_finite(g.start.y) && Sc::is_finite(g.end.x) &&
-                      Sc::is_finite(g.end.y) && Sc::is_finite(g.centre.x) &&
-                      Sc::is_finite(g.centre.y);
-  if (!finite || !(p.feed > S(0))) return Status::invalid_argument;
+  if (!Scalar<S>::is_finite(p.feed) || !(p.feed > S(0))) return Status::invalid_argument;
+  SegmentShape<S> shape;
+  if (segment_flaw(g, shape) != SegmentFlaw::none) return Status::invalid_argument;
   QueuedSegment<S> q;
   q.path = p;
+  q.length = shape.length;
   if (!g.is_arc()) {
-    const Vec2<S> d = g.end - g.start;
-    q.length = d.norm();
-    if (!(q.length > S(0))) return Status::invalid_argument;
-    q.tangent_in = d * (S(1) / q.length);
+    q.tangent_in = (g.end - g.start) * (S(1) / q.length);
     q.tangent_out = q.tangent_in;
     return q;
   }
   const Vec2<S> a = g.start - g.centre;
   const Vec2<S> b = g.end - g.centre;
-  q.radius = a.norm();
-  if (!(q.radius > S(0)) || !(b.norm() > S(0))) return Status::invalid_argument;
   const S e = g.dir > 0 ? S(1) : S(-1);
-  // sweep in the direction of travel, in (0, 2 pi)
-  S sweep = Sc::atan2(a.cross(b), a.dot(b)) * e;
-  if (!(sweep > S(0))) sweep = sweep + S(2) * Sc::pi();
-  if (!(sweep > S(0)) || !(sweep < S(2) * Sc::pi())) return Status::invalid_argument;
-  q.length = q.radius * sweep;
-  q.start_angle = Sc::atan2(a.y, a.x);
+  q.radius = shape.radius;
+  q.start_angle = Scalar<S>::atan2(a.y, a.x);
   q.tangent_in = a.perp() * (e / q.radius);
   q.tangent_out = b.perp() * (e / b.norm());
   return q;

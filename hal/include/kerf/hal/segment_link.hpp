@@ -8,30 +8,23 @@
 
 #include <cstdint>
 
-#include "kerf/geom/segment.hpp"
+#include "kerf/motion/board_protocol.hpp"
 
 namespace kerf::hal {
 
-// One segment as the board receives it: the start is where the previous one
-// ended (or the board's position for the first).
-struct SegmentCommand {
-  std::uint32_t seq = 0;  // 1, 2, 3 ... in streaming order; 0 is "none"
-  SegmentKind kind = SegmentKind::line;
-  Vec2<double> end{};     // mm
-  Vec2<double> centre{};  // mm, arcs only
-  std::int8_t dir = 0;    // +1 CCW, -1 CW, 0 line
-  double feed = 0.0;      // mm/s
-  bool torch = true;      // cut (torch on) or travel
-};
-
-enum class BoardState : std::uint8_t { idle = 0, running = 1, hold = 2, done = 3, fault = 4 };
+// One segment as the board receives it (the start is where the previous one
+// ended), its states and commands: core/motion's board protocol, which the
+// boards' shared executor (motion/board_executor.hpp) runs.
+using SegmentCommand = motion::BoardSegment<double>;
+using BoardState = motion::BoardState;
+using Command = motion::BoardCommand;
 
 // Fault bits the board reports.
 enum FaultBit : std::uint16_t {
   kFaultNone = 0,
-  kFaultAbort = 1u << 0,         // abort command
+  kFaultAbort = motion::kBoardFaultAbort,  // abort command
   kFaultLinkWatchdog = 1u << 1,  // no request from the host for too long while running
-  kFaultBadSegment = 1u << 2,    // a segment the executor refused (zero length, bad arc)
+  kFaultBadSegment = motion::kBoardFaultBadSegment,  // a segment the executor refused (zero length, bad arc)
   kFaultStarved = 1u << 3,       // queue ran empty while running, before "finish"
   kFaultDrive = 1u << 4,         // a drive reported a fault (following error, overcurrent ...)
   // Cyclic drives (CspSegmentLink over CANopen CiA 402; kFaultDrive above also
@@ -54,14 +47,21 @@ struct BoardStatus {
   std::uint16_t duplicates = 0;    // resends the board dropped (wraps)
 };
 
-enum class Command : std::uint16_t {
-  start = 1,        // begin executing the queue
-  hold = 2,         // feed hold: ramp to a stop, keep the queue
-  resume = 3,
-  abort = 4,        // stop now, torch off, clear the queue, state fault
-  fault_reset = 5,  // from fault back to idle, once the axes are at rest (latched while braking)
-  finish = 6,       // no more segments: an empty queue then means done
-};
+// The status of a board run by motion::BoardExecutor.
+template <class Executor>
+BoardStatus status_of(const Executor& e) {
+  BoardStatus s;
+  s.state = e.state();
+  s.credit = e.credit();
+  s.faults = e.faults();
+  s.last_accepted = e.last_accepted();
+  s.executing = e.executing();
+  s.last_executed = e.last_executed();
+  s.position = e.position();
+  s.torch = e.torch();
+  s.duplicates = e.duplicates();
+  return s;
+}
 
 enum class LinkError : std::uint8_t {
   none = 0,

@@ -1,8 +1,9 @@
-// The simulated motion board's state: a bounded segment queue fed by
-// sequence number, the command state machine, and a servo loop that runs the
-// queue through a SegmentExecutor and records the executed trace. The
-// libmodbus side lives in board_server.hpp. Thread-safe: the server thread,
-// the servo thread and test code all call in.
+// The simulated motion board: core/motion's board executor (the segment
+// queue fed by sequence number, credit, the command state machine) over a
+// SegmentExecutor, and around it what a simulator adds: a lock, a servo
+// thread on simulated time, and the executed trace. The libmodbus side lives
+// in board_server.hpp. Thread-safe: the server thread, the servo thread and
+// test code all call in.
 #pragma once
 
 #include <condition_variable>
@@ -14,6 +15,7 @@
 #include <vector>
 
 #include "kerf/hal/segment_link.hpp"
+#include "kerf/motion/board_executor.hpp"
 #include "kerf/sim/segment_executor.hpp"
 
 namespace kerf::sim {
@@ -32,7 +34,7 @@ struct BoardConfig {
   std::size_t trace_reserve = 0;  // samples to reserve up front
 };
 
-enum class Accept : std::uint8_t { queued, duplicate, gap, full, invalid };
+using Accept = motion::BoardAccept;
 
 class MotionBoard {
  public:
@@ -69,30 +71,14 @@ class MotionBoard {
  private:
   bool has_work_locked() const;
   void tick_locked();
-  void fault_locked(std::uint16_t bit);
-  void reset_locked();  // fault -> idle, the next segment from where the axes stopped
-  hal::BoardStatus status_locked() const;
   void servo_loop(double speed);
 
   BoardConfig cfg_;
-  std::unique_ptr<SegmentExecutor> exec_;
+  std::unique_ptr<SegmentExecutor> motion_;
+  std::vector<hal::SegmentCommand> ring_;  // the executor's queue
+  motion::BoardExecutor<double, SegmentExecutor> exec_;
   mutable std::mutex mu_;
   std::condition_variable changed_;
-  std::vector<hal::SegmentCommand> ring_;
-  std::size_t head_ = 0, count_ = 0;
-  hal::BoardState state_ = hal::BoardState::idle;
-  std::uint16_t faults_ = 0;
-  std::uint32_t last_accepted_ = 0, executing_ = 0, last_executed_ = 0;
-  std::uint16_t duplicates_ = 0;
-  std::uint32_t dropped_through_ = 0;  // sequence numbers up to here were dropped by a fault
-  bool finish_ = false;
-  bool torch_ = false;
-  bool exec_busy_ = false;      // the executor is moving or has segments
-  bool reset_pending_ = false;  // fault_reset taken while braking: reset at rest
-  bool exec_moving_ = false;    // it travelled in the last period
-  Vec2<double> pos_{};
-  Vec2<double> tail_end_{};     // where the last segment given to the executor ends
-  std::vector<std::uint8_t> torch_of_;  // torch flag by sequence number, modulo its size
   std::uint64_t ticks_ = 0;
   std::vector<TraceSample> trace_;
   std::vector<std::uint32_t> executed_;

@@ -1,24 +1,25 @@
 // How the simulated board turns queued segments into servo-period positions.
-// The board moves segments from its Modbus queue into the executor as soon as
-// the executor has room, so an executor with look-ahead sees what comes next.
-// kerf's interpolator (core/motion) sits behind this in motion_executor.cpp.
+// The board's executor (core/motion/board_executor.hpp) moves segments from
+// its Modbus queue into this stage as soon as it has room, so a stage with
+// look-ahead sees what comes next. kerf's interpolator (core/motion) sits
+// behind this in motion_executor.cpp.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
 
 #include "kerf/hal/segment_link.hpp"
+#include "kerf/motion/board_protocol.hpp"
 
 namespace kerf::sim {
 
-struct ExecStep {
-  Vec2<double> position{};          // what the drives hold after this period, mm
-  std::uint32_t running = 0;        // sequence number being run, 0 when none
-  std::uint32_t last_completed = 0; // highest sequence number finished
-  bool moving = false;              // travelled this period
-  bool at_rest = true;              // not moving and nothing left to run
-};
+// One period of the executor (core/motion's MotionStep): position, the
+// sequence number running and the last completed, moving, at rest.
+using ExecStep = motion::MotionStep<double>;
 
+// The board's motion stage: motion::BoardExecutor (which runs the board's
+// queue and state machine) calls it through this interface, so the board
+// can run either the interpolator or the endpoint stand-in below.
 class SegmentExecutor {
  public:
   virtual ~SegmentExecutor() = default;
@@ -30,6 +31,7 @@ class SegmentExecutor {
   virtual void hold() = 0;      // brake to a stop on the path
   virtual void resume() = 0;
   virtual void abort() = 0;     // brake to a stop, drop what is queued
+  virtual void reset(Vec2<double> at) = 0;  // empty, at rest at `at`
 };
 
 // Reaches each segment's end point in one servo period. It exercises the
@@ -60,6 +62,11 @@ class EndpointExecutor final : public SegmentExecutor {
   void hold() override { held_ = true; }
   void resume() override { held_ = false; }
   void abort() override { full_ = false; }
+  void reset(Vec2<double> at) override {
+    full_ = held_ = false;
+    step_ = ExecStep{};
+    step_.position = at;
+  }
 
  private:
   hal::SegmentCommand next_{};

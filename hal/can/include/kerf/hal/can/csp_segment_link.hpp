@@ -1,11 +1,11 @@
 // hal::CspSegmentLink: hal::SegmentLink for drives that take cyclic
-// positions (CiA 402 CSP). The motion board's job runs on the host: the
-// segments queue in core/motion's interpolator, and each SYNC period its
-// setpoint goes out through a hal::AxisLink (axis 0 = x, 1 = y; further axes
-// hold their position). status() reports like the board: sequence numbers
-// are idempotent (a resend of an accepted one is dropped and counted),
-// credit is the free queue slots, last_executed / executing / position
-// (the drives' actual positions), and state idle/running/hold/done/fault.
+// positions (CiA 402 CSP). The motion board's job runs on the host, in the
+// same executor a motion board runs (core/motion/board_executor.hpp: queue,
+// sequence numbers, credit, state machine) over core/motion's interpolator;
+// each SYNC period its setpoint goes out through a hal::AxisLink (axis 0 = x,
+// 1 = y; further axes hold their position). status() reports like the
+// board, with position the drives' actual positions; done waits until the
+// drives hold the last setpoint.
 //
 // Time: cycle() runs one SYNC period. Tests call it by hand (virtual time);
 // run_clock() runs it on a thread, either as fast as the job allows (only
@@ -18,13 +18,15 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "kerf/hal/axis_link.hpp"
 #include "kerf/hal/segment_link.hpp"
-#include "kerf/motion/interpolator.hpp"
+#include "kerf/motion/board_executor.hpp"
+#include "kerf/motion/interpolator_motion.hpp"
 
 namespace kerf::hal {
 
@@ -32,7 +34,7 @@ struct CspConfig {
   Vec2<double> counts_per_mm{1000.0, 1000.0};  // x, y
   double accel_mm_s2 = 2000.0;     // along the path
   double corner_angle_rad = 0.05;  // tangent turns above this are corners
-  std::size_t queue_slots = 32;    // the credit the host sees
+  std::size_t queue_slots = 32;    // the credit the host sees, and the look-ahead behind it
   std::size_t trace_reserve = 0;
 };
 
@@ -73,29 +75,21 @@ class CspSegmentLink final : public SegmentLink {
   bool configure(std::string& error);
   bool has_work_locked() const;
   void fault_locked(std::uint16_t bit, const char* why);
-  void reset_locked();
   BoardStatus status_locked() const;
   void clock_loop(bool paced);
 
   AxisLink& axes_;
   CspConfig cfg_;
-  std::vector<motion::QueuedSegment<double>> storage_;
-  motion::Interpolator<double> interp_;
-  std::vector<std::uint8_t> torch_of_;  // torch flag by sequence number, modulo its size
+  std::vector<motion::QueuedSegment<double>> storage_;  // the interpolator's look-ahead
+  motion::InterpolatorMotion<double> motion_;
+  std::vector<SegmentCommand> ring_;  // the executor's queue: the credit
+  std::optional<motion::BoardExecutor<double, motion::InterpolatorMotion<double>>> exec_;
 
   mutable std::mutex mu_;
   std::condition_variable changed_;
-  BoardState state_ = BoardState::idle;
-  std::uint16_t faults_ = 0;
-  std::uint32_t last_accepted_ = 0, executing_ = 0, last_executed_ = 0;
-  std::uint32_t dropped_through_ = 0;  // numbers up to here were dropped by a fault
-  std::uint16_t duplicates_ = 0;
-  bool finish_ = false;
-  bool torch_ = false;
-  bool moving_ = false;  // the head travelled last period
-  bool settled_ = true;  // the drives' actual positions equal the last setpoint
+  bool moving_ = false;      // the head travelled last period
+  bool settled_ = true;      // the drives' actual positions equal the last setpoint
   bool reset_axes_ = false;  // fault reset: the drives are reset by the next cycle
-  Vec2<double> tail_end_{};
   std::int64_t target_[2]{};
   Vec2<double> position_{};
   std::vector<CspSample> trace_;

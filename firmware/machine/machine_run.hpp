@@ -1,9 +1,12 @@
 // `kerf run`'s cycle on the real machine, once the job is fitted and the
-// devices and the journal are open (app/run_command.cpp): the controller
+// devices and the journal are open (app/run_command.cpp; kerf-sim's bench
+// run passes its simulated lines): the controller (machine_factory.hpp)
 // in a periodic loop on absolute deadlines (SCHED_FIFO and mlockall where
 // permitted), a status line a second on stderr, SIGINT or SIGTERM stopping
 // it safely (torch off, motion stopped on the path, progress journaled),
-// then the report (`report`: JSON, if named) and the summary on stdout.
+// then the report (`report`: JSON, if named) and the summary on stdout. On a
+// bench ([bench] enabled) every status line, the summary and the report say
+// BENCH.
 #pragma once
 
 #include <string>
@@ -15,12 +18,12 @@
 #include "kerf/hal/gpio.hpp"
 #include "kerf/hal/segment_link.hpp"
 
-namespace kerf::control {
+namespace kerf::machine {
 
 // Returns the exit code: 0 done, 1 stopped (fault, E-stop, signal) or the
 // report could not be written.
-int run_on_machine(const Job& job, const config::Config& cfg, hal::SegmentLink& link, hal::Gpio& gpio,
-                   Journal* journal, const ResumePoint& from, bool resumed, const std::string& report,
+int run_on_machine(const control::Job& job, const config::Config& cfg, hal::SegmentLink& link, hal::Gpio& gpio,
+                   control::Journal* journal, const control::ResumePoint& from, bool resumed, const std::string& report,
                    const job::GcodeProgram* program = nullptr);
 
-}  // namespace kerf::control
+}  // namespace kerf::machine

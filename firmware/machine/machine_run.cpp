@@ -1,4 +1,4 @@
-#include "control/machine_run.hpp"
+#include "machine/machine_run.hpp"
 
 #include <cerrno>
 #include <csignal>
@@ -6,14 +6,16 @@
 #include <cstring>
 
 #include "control/controller.hpp"
-#include "control/machine_config.hpp"
 #include "control/program_job.hpp"
 #include "control/run_report.hpp"
 #include "io/options.hpp"
 #include "io/output_file.hpp"
 #include "kerf/hal/rt_loop.hpp"
+#include "machine/machine_factory.hpp"
 
-namespace kerf::control {
+namespace kerf::machine {
+
+using namespace control;
 
 namespace {
 
@@ -34,8 +36,10 @@ int run_on_machine(const Job& job, const config::Config& cfg, hal::SegmentLink& 
   sigaction(SIGINT, &sa, nullptr);
   sigaction(SIGTERM, &sa, nullptr);
 
-  Controller ctl(job, controller_config(cfg), link, gpio, journal);
+  const std::unique_ptr<Controller> made = make_controller(job, cfg, link, gpio, journal);
+  Controller& ctl = *made;
   ctl.start(from);
+  const char* const bench = cfg.bench.enabled ? "BENCH, " : "";
   hal::RtLoop loop(cfg.machine.cycle);
   double t0 = -1.0, next_status = 1.0, now = 0.0;
   while (!ctl.finished()) {
@@ -46,7 +50,7 @@ int run_on_machine(const Job& job, const config::Config& cfg, hal::SegmentLink& 
     ctl.cycle(now);
     if (now >= next_status) {  // the operator's status line, once a second
       next_status += 1.0;
-      std::fprintf(stderr, "kerf: run: t %.0f s, %s, segment %lld of %zu; %s\n", now,
+      std::fprintf(stderr, "kerf: run: %st %.0f s, %s, segment %lld of %zu; %s\n", bench, now,
                    to_string(ctl.state()), static_cast<long long>(ctl.report().last_completed + 1),
                    ctl.report().planned, loop.stats().describe().c_str());
     }
@@ -55,16 +59,18 @@ int run_on_machine(const Job& job, const config::Config& cfg, hal::SegmentLink& 
   RunSummary sum =
       summarise_run(r, job.paths.size(), config::to_string(cfg.link.kind), resumed, journal);
   sum.simulated = false;
-  if (program != nullptr) describe_program(*program, sum);
+  if (program != nullptr) control::describe_program(*program, sum);
   sum.torch_on = ctl.torch();
   sum.duration_s = now;  // on the loop's clock: overrun cycles are skipped, not counted
   sum.rt = loop.stats().describe();
   sum.rt_histogram = loop.stats().histogram();
-  if (!report.empty() && !io::write_output(report, format_run_json(sum))) {
+  std::string json = format_run_json(sum);
+  json.insert(json.find('\n') + 1, cfg.bench.enabled ? "  \"bench\": true,\n" : "  \"bench\": false,\n");
+  if (!report.empty() && !io::write_output(report, json)) {
     std::fprintf(stderr, "kerf: --report: cannot write %s: %s\n", report.c_str(), std::strerror(errno));
     return kExitFailure;
   }
-  std::fputs(format_run_summary(sum).c_str(), stdout);
+  std::fprintf(stdout, "%s%s", cfg.bench.enabled ? "BENCH " : "", format_run_summary(sum).c_str());
   std::fprintf(stdout, "kerf run: %s; wake-up lateness:\n%s", sum.rt.c_str(), sum.rt_histogram.c_str());
   if (r.state != State::done) {
     std::fprintf(stderr, "kerf: run: stopped after segment %lld: %s\n", static_cast<long long>(sum.last_executed),
@@ -74,4 +80,4 @@ int run_on_machine(const Job& job, const config::Config& cfg, hal::SegmentLink& 
   return kExitOk;
 }
 
-}  // namespace kerf::control
+}  // namespace kerf::machine

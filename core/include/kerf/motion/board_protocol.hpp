@@ -1,0 +1,72 @@
+// What a motion board speaks, whatever carries it (Modbus registers, a
+// host-side CANopen link, a board's own firmware): the segment as the board
+// receives it, the board's states and commands, and what one period of its
+// motion stage reports. hal/segment_link.hpp names these for the links.
+#pragma once
+
+#include <cstdint>
+
+#include "kerf/geom/segment.hpp"
+
+namespace kerf::motion {
+
+// One segment as the board receives it: the start is where the previous one
+// ended (or the board's position for the first).
+template <class S>
+struct BoardSegment {
+  std::uint32_t seq = 0;  // 1, 2, 3 ... in streaming order; 0 is "none"
+  SegmentKind kind = SegmentKind::line;
+  Vec2<S> end{};     // mm
+  Vec2<S> centre{};  // mm, arcs only
+  std::int8_t dir = 0;  // +1 CCW, -1 CW, 0 line
+  S feed{};             // mm/s
+  bool torch = true;    // cut (torch on) or travel
+};
+
+enum class BoardState : std::uint8_t { idle = 0, running = 1, hold = 2, done = 3, fault = 4 };
+
+enum class BoardCommand : std::uint16_t {
+  start = 1,        // begin executing the queue
+  hold = 2,         // feed hold: ramp to a stop, keep the queue
+  resume = 3,
+  abort = 4,        // stop now, torch off, clear the queue, state fault
+  fault_reset = 5,  // from fault back to idle, once the axes are at rest (latched while braking)
+  finish = 6,       // no more segments: an empty queue then means done
+};
+
+// How the board took a segment.
+enum class BoardAccept : std::uint8_t {
+  queued,
+  duplicate,  // a resend of one it already has: dropped and counted
+  gap,        // not the next sequence number
+  full,       // no credit
+  invalid,    // not taking segments now (fault, done, or finished)
+};
+
+// The fault bits the executor itself raises (hal::FaultBit lists them all).
+inline constexpr std::uint16_t kBoardFaultAbort = 1u << 0;       // abort command
+inline constexpr std::uint16_t kBoardFaultBadSegment = 1u << 2;  // the motion refused a segment
+
+// One period of the motion stage (the interpolator, or a stand-in).
+template <class S>
+struct MotionStep {
+  Vec2<S> position{};                // what the drives hold after this period, mm
+  std::uint32_t running = 0;         // sequence number being run, 0 when none
+  std::uint32_t last_completed = 0;  // highest sequence number finished
+  bool moving = false;               // travelled this period
+  bool at_rest = true;               // not moving and nothing left to run
+};
+
+// One period of the board.
+template <class S>
+struct BoardStep {
+  Vec2<S> position{};
+  std::uint32_t executing = 0;  // 0 when idle or in fault
+  bool torch = false;
+  bool stepped = false;  // the motion stage ran this period
+  // The segments completed_from + 1 .. completed_to finished this period.
+  std::uint32_t completed_from = 0;
+  std::uint32_t completed_to = 0;
+};
+
+}  // namespace kerf::motion

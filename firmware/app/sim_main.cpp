@@ -1,0 +1,62 @@
+// The kerf-sim command: the simulator beside kerf. `sim` runs a job on the
+// simulated machine in lockstep; `run` is kerf run's loop with scripted lines
+// against the bench's simulated board or drives (sim_run_command.hpp). The
+// board and the drives as processes of their own are kerf-board-sim and
+// kerf-drive-sim (sim/). Exit codes as kerf's.
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <exception>
+#include <new>
+
+#include "app/run_options.hpp"
+#include "app/sim_options.hpp"
+#include "app/sim_run_command.hpp"
+#include "io/options.hpp"
+#if KERF_HAVE_MODBUS
+#include "simulated/sim_command.hpp"
+#endif
+
+#ifndef KERF_VERSION
+#define KERF_VERSION "unknown"
+#endif
+
+int main(int argc, char** argv) {
+  using namespace kerf::app;
+  using kerf::io::kExitFailure;
+  using kerf::io::kExitUsage;
+  try {
+    CLI::App app("kerf-sim: the kerf controller on simulated machines", "kerf-sim");
+    app.set_version_flag("--version", "kerf-sim " KERF_VERSION);
+    app.require_subcommand(1);
+    kerf::simulated::SimOptions sim_opts;
+    CLI::App* sim = add_sim_command(app, sim_opts);
+    RunOptions run_opts;
+    CLI::App* run = add_run_command(app, run_opts);
+    run->description(
+        "kerf run with scripted lines (E-stop released, arc-OK following the torch) against the bench's simulated "
+        "board or drives: Modbus TCP on a loopback address, RTU on /dev/pts/N, CAN on vcanN");
+    try {
+      app.parse(argc, argv);
+    } catch (const CLI::Success& e) {  // --help, --version
+      return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+      std::fprintf(stderr, "kerf-sim: %s\nRun with --help for more information.\n", e.what());
+      return kExitUsage;
+    }
+    if (run->parsed()) return run_sim_run(run_opts);
+#if KERF_HAVE_MODBUS
+    if (sim->parsed()) return kerf::simulated::run_sim(sim_opts);
+#else
+    if (sim->parsed()) {
+      std::fprintf(stderr, "kerf-sim: sim: this build has no libmodbus (the target's libmodbus-dev was not found)\n");
+      return kExitFailure;
+    }
+#endif
+    return kExitUsage;  // require_subcommand(1) makes this unreachable
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "kerf-sim: out of memory\n");
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "kerf-sim: internal error: %s\n", e.what());
+  }
+  return kExitFailure;
+}

@@ -1,0 +1,35 @@
+#include "app/sim_run_command.hpp"
+
+#include <memory>
+#include <string>
+
+#include "app/run_command.hpp"
+#include "kerf/sim/scripted_gpio.hpp"
+
+namespace kerf::app {
+
+namespace {
+
+bool on_this_host(const config::Config& cfg, std::string& error) {
+  const config::Link& l = cfg.link;
+  const bool ok = l.kind == config::Link::Kind::modbus_tcp
+                      ? l.host == "localhost" || l.host == "::1" || l.host.rfind("127.", 0) == 0
+                  : l.kind == config::Link::Kind::modbus_rtu ? l.device.rfind("/dev/pts/", 0) == 0
+                                                             : l.iface.rfind("vcan", 0) == 0;
+  if (!ok)
+    error = cfg.file + ": link: kerf-sim run drives only simulated boards and drives (Modbus TCP on a loopback "
+                       "address, RTU on /dev/pts/N, CAN on vcanN); a machine runs under `kerf run`";
+  return ok;
+}
+
+std::unique_ptr<hal::Gpio> scripted_lines(const config::Config& cfg, std::string&) {
+  sim::ScriptedGpioOptions o;
+  o.limit_count = cfg.gpio.limits.size();
+  return std::make_unique<sim::ScriptedGpio>(o);
+}
+
+}  // namespace
+
+int run_sim_run(const RunOptions& opts) { return run_job(opts, "kerf-sim", on_this_host, scripted_lines); }
+
+}  // namespace kerf::app
