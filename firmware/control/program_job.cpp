@@ -12,50 +12,60 @@ int fit_program_or_say(const job::GcodeProgram& prog, job::Criterion criterion, 
   out = FittedJob{};
   const io::PointFile& in = prog.points;
   const std::vector<std::size_t>& begins = in.path_begin;
+  // kept_before[k]: how many paths before program path k reach the job (a
+  // path shorter than the link's grid does not), for the actions' places.
+  std::vector<std::size_t> kept_before(begins.size() + 1, 0);
   for (std::size_t p = 0; p < begins.size(); ++p) {
+    kept_before[p] = out.job.paths.size();
     const std::size_t b = begins[p];
     const std::size_t e = p + 1 < begins.size() ? begins[p + 1] : in.points.size();
-    const std::vector<Vec2<double>> pts(in.points.begin() + static_cast<std::ptrdiff_t>(b),
-                                        in.points.begin() + static_cast<std::ptrdiff_t>(e));
     const job::ProgramPath& pp = prog.paths[p];
-    const double path_tol = pp.tol > 0 ? std::min(pp.tol, tol) : tol;
-    std::vector<fit::Piece<double>> pieces;
-    std::string why;
+    // The path alone through fit_paths, at its own tolerance: the same fit
+    // and the same segments on the link's grid as a point file's.
+    io::PointFile one;
+    one.file = in.file;
+    one.points.assign(in.points.begin() + static_cast<std::ptrdiff_t>(b), in.points.begin() + static_cast<std::ptrdiff_t>(e));
+    one.point_lines.assign(in.point_lines.begin() + static_cast<std::ptrdiff_t>(b),
+                           in.point_lines.begin() + static_cast<std::ptrdiff_t>(e));
+    FittedJob f;
+    std::string error;
     Status status = Status::ok;
-    if (!job::fit_job(pts, {}, path_tol, criterion, pieces, why, status, numeric)) {
-      std::fprintf(stderr, "kerf: %s: path %zu (line %zu): %s\n", in.file.c_str(), p + 1, in.point_lines[b],
-                   why.c_str());
+    if (!fit_paths(one, criterion, pp.tol > 0 ? std::min(pp.tol, tol) : tol, feed_mm_s, f, error, status, numeric)) {
+      if (f.job.paths.empty() && status == Status::invalid_argument && error.find("shorter than the link") != std::string::npos)
+        continue;  // a path shorter than a count: nothing to cut (kept_before counts it out)
+      if (error.compare(0, 7, "path 1 ") == 0) error = "path " + std::to_string(p + 1) + error.substr(6);
+      std::fprintf(stderr, "kerf: %s: %s\n", in.file.c_str(), error.c_str());
       return status == Status::invalid_argument || status == Status::degenerate ? 2 : 1;
     }
-    // Each piece at the slowest feed programmed along it (mm/min per point; 0: the default).
+    // Each segment at the slowest feed programmed along its piece (mm/min per point; 0: the default).
     auto feed_of = [&](const fit::Piece<double>& piece) {
-      double f = 0;
+      double v = 0;
       for (std::size_t k = b + piece.first + 1; k <= b + piece.last && k < prog.point_feed.size(); ++k) {
-        const double v = prog.point_feed[k] > 0 ? prog.point_feed[k] / 60.0 : feed_mm_s;
-        f = f == 0 ? v : std::min(f, v);
+        const double f_k = prog.point_feed[k] > 0 ? prog.point_feed[k] / 60.0 : feed_mm_s;
+        v = v == 0 ? f_k : std::min(v, f_k);
       }
-      if (f == 0) f = pp.feed_mm_min > 0 ? pp.feed_mm_min / 60.0 : feed_mm_s;
-      return std::min(f, max_feed_mm_s);
+      if (v == 0) v = pp.feed_mm_min > 0 ? pp.feed_mm_min / 60.0 : feed_mm_s;
+      return std::min(v, max_feed_mm_s);
     };
-    CutPath path;
-    path.start = pts.front();
+    CutPath& path = f.job.paths.front();
     path.torch = pp.torch;
     path.pierce_delay_s = pp.pierce_delay_s;
-    for (const fit::Piece<double>& piece : pieces) {
-      hal::SegmentCommand c;
-      c.kind = piece.segment.kind;
-      c.end = piece.segment.end;
-      c.centre = piece.segment.centre;
-      c.dir = piece.segment.dir;
-      c.feed = feed_of(piece);
-      c.torch = pp.torch;
-      path.segments.push_back(c);
-      out.pieces.push_back(piece);
-      out.piece_path.push_back(p);
+    for (std::size_t k = 0; k < path.segments.size(); ++k) {
+      path.segments[k].feed = feed_of(f.pieces[k]);
+      path.segments[k].torch = pp.torch;
+      out.pieces.push_back(f.pieces[k]);
+      out.piece_path.push_back(out.job.paths.size());
     }
+    out.lines_for_arcs += f.lines_for_arcs;
     out.job.paths.push_back(std::move(path));
   }
+  kept_before[begins.size()] = out.job.paths.size();
+  if (out.job.paths.empty()) {
+    std::fprintf(stderr, "kerf: %s: every path is shorter than the link's resolution (0.001 mm)\n", in.file.c_str());
+    return 2;
+  }
   out.job.actions = prog.actions;
+  for (JobAction& a : out.job.actions) a.before_path = kept_before[a.before_path];
   return 0;
 }
 
