@@ -17,7 +17,10 @@ namespace kerf::motion {
   template Emitted<S> emit_on_grid(Vec2<S>, const Segment<S>&, const SegmentGrid&); \
   template S braking_length(S, S, S);                                              \
   template S max_step_before(S, S, S);                                             \
-  template S corner_step_limit(Vec2<S>, Vec2<S>, S, S);                           \
+  template S turn_chord(Vec2<S>, Vec2<S>);                                          \
+  template S joint_step_limit(S, S, S, S, S);                                      \
+  template S curve_step_cap(S, S, S);                                              \
+  template S tangential_step(S, S);                                                \
   template class InterpolatorMotion<S>;                                            \
   template class BoardExecutor<S, InterpolatorMotion<S>>;
 

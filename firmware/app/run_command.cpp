@@ -50,9 +50,10 @@ int run_job(const RunOptions& opts, const char* who, RunCheck check, LinesOpener
   }
   control::FittedJob fitted;
   if (const int rc = gcode ? control::fit_program_or_say(prog, cfg.fit.criterion, cfg.fit.tol, cfg.cut.feed / 60.0,
-                                                         cfg.machine.max_feed / 60.0, fitted, cfg.fit.numeric)
+                                                         cfg.machine.max_feed / 60.0, fitted, cfg.fit.numeric,
+                                                         &cfg.cut.rules)
                            : control::fit_paths_or_say(in, cfg.fit.criterion, cfg.fit.tol, cfg.cut.feed / 60.0, fitted,
-                                                       cfg.fit.numeric);
+                                                       cfg.fit.numeric, &cfg.cut.rules);
       rc != 0)
     return rc;
   // The devices before the journal: a new journal replaces the old one, which

@@ -5,6 +5,7 @@
 // firmware/examples/kerf.toml is the commented example.
 #pragma once
 
+#include "config/cut_rules.hpp"
 #include <cstdint>
 #include <map>
 #include <string>
@@ -56,6 +57,7 @@ struct Cut {
   double feed = 3000;            // mm/min, > 0, <= machine.max_feed
   double pierce_delay = 0.5;     // s, >= 0
   double arc_ok_timeout = 3.0;   // s, > 0
+  CutRules rules;                // holes, tight arcs, overcut, thc_lock (config/cut_rules.hpp)
 };
 
 // What the G-code interpreter takes from the configuration (config/program_section.cpp):

@@ -245,6 +245,7 @@ void read_cut(TableReader& r, Cut& cut) {
   r.positive("feed", cut.feed);
   r.non_negative("pierce_delay", cut.pierce_delay);
   r.positive("arc_ok_timeout", cut.arc_ok_timeout);
+  read_cut_rules(r, cut.rules);
   r.finish();
 }
 

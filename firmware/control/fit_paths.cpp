@@ -1,5 +1,6 @@
 #include "control/fit_paths.hpp"
 
+#include "control/cut_rules.hpp"
 #include "job/fit_job.hpp"
 
 #include <cstdio>
@@ -77,10 +78,13 @@ bool fit_paths(const io::PointFile& in, job::Criterion criterion, double tol, do
 }
 
 int fit_paths_or_say(const io::PointFile& in, job::Criterion criterion, double tol, double feed_mm_s,
-                     FittedJob& out, job::Numeric numeric) {
+                     FittedJob& out, job::Numeric numeric, const config::CutRules* rules) {
   std::string error;
   Status status = Status::ok;
-  if (fit_paths(in, criterion, tol, feed_mm_s, out, error, status, numeric)) return 0;
+  if (fit_paths(in, criterion, tol, feed_mm_s, out, error, status, numeric)) {
+    if (rules) say_cut_rules(in.file, apply_cut_rules(out, *rules), *rules);
+    return 0;
+  }
   std::fprintf(stderr, "kerf: %s: %s\n", in.file.c_str(), error.c_str());
   return status == Status::invalid_argument || status == Status::degenerate ? 2 : 1;
 }

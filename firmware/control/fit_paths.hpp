@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "config/cut_rules.hpp"
 #include "control/job.hpp"
 #include "control/journal.hpp"
 #include "io/point_file.hpp"
@@ -37,9 +38,12 @@ bool fit_paths(const io::PointFile& in, job::Criterion criterion, double tol, do
                job::Numeric numeric = job::Numeric::floating);
 
 // fit_paths for a command: on failure prints "kerf: FILE: reason" and
-// returns the exit code (2 for bad input, 1 otherwise); 0 on success.
+// returns the exit code (2 for bad input, 1 otherwise); 0 on success. With
+// `rules`, applies the cutting rules (control/cut_rules.hpp) and prints
+// "kerf: FILE: path N: ..." for each place one applied.
 int fit_paths_or_say(const io::PointFile& in, job::Criterion criterion, double tol, double feed_mm_s,
-                     FittedJob& out, job::Numeric numeric = job::Numeric::floating);
+                     FittedJob& out, job::Numeric numeric = job::Numeric::floating,
+                     const config::CutRules* rules = nullptr);
 
 // The job's journal for a run: none (empty path; the run starts at the
 // job's beginning), a new one, or with `resume` the one a previous run left,

@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "control/cut_rules.hpp"
 #include "job/fit_job.hpp"
 
 namespace kerf::control {
 
 int fit_program_or_say(const job::GcodeProgram& prog, job::Criterion criterion, double tol, double feed_mm_s,
-                       double max_feed_mm_s, FittedJob& out, job::Numeric numeric) {
+                       double max_feed_mm_s, FittedJob& out, job::Numeric numeric,
+                       const config::CutRules* rules) {
   out = FittedJob{};
   const io::PointFile& in = prog.points;
   const std::vector<std::size_t>& begins = in.path_begin;
@@ -66,6 +68,7 @@ int fit_program_or_say(const job::GcodeProgram& prog, job::Criterion criterion, 
   }
   out.job.actions = prog.actions;
   for (JobAction& a : out.job.actions) a.before_path = kept_before[a.before_path];
+  if (rules) say_cut_rules(in.file, apply_cut_rules(out, *rules), *rules);
   return 0;
 }
 

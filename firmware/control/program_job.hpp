@@ -14,8 +14,10 @@
 namespace kerf::control {
 
 // On failure prints "kerf: FILE: reason" and returns the exit code (2 bad input, 1 otherwise); 0 on success.
+// With `rules`, the cutting rules (control/cut_rules.hpp) then scale the feeds and add overcuts, as for a point file.
 int fit_program_or_say(const job::GcodeProgram& prog, job::Criterion criterion, double tol, double feed_mm_s,
-                       double max_feed_mm_s, FittedJob& out, job::Numeric numeric = job::Numeric::floating);
+                       double max_feed_mm_s, FittedJob& out, job::Numeric numeric = job::Numeric::floating,
+                       const config::CutRules* rules = nullptr);
 
 // kerf run: false with "FILE:LINE: reason" for a program that needs what
 // the machine does not have yet: program outputs and inputs (M7/M8 with a

@@ -110,8 +110,8 @@ bool run_plan_path(const std::vector<Segment<double>>& path, double feed,
     trace += ',';
     append_mm(trace, p.position.y);
     char tail[80];
-    std::snprintf(tail, sizeof tail, ",%" PRId64 ",%" PRId64 ",%" PRIu64 "\n", p.counts.x,
-                  p.counts.y, p.segment);
+    std::snprintf(tail, sizeof tail, ",%" PRId64 ",%" PRId64 ",%" PRIu64 ",%d\n", p.counts.x,
+                  p.counts.y, p.segment, p.thc_lock ? 1 : 0);
     trace += tail;
     if (p.state == MotionState::done) {
       summary.time_s = time;
@@ -150,7 +150,7 @@ int plan_file(const PlanRun& run) {
   if (fitted_length(path) / (run.feed / 60 * run.config.period) > static_cast<double>(kMaxSetpoints))
     return io::usage_error("--period: the run would take more than " +
                            std::to_string(kMaxSetpoints) + " periods");
-  std::string trace = "t_s,s_mm,x_mm,y_mm,x_counts,y_counts,segment\n";
+  std::string trace = "t_s,s_mm,x_mm,y_mm,x_counts,y_counts,segment,thc_lock\n";
   PlanSummary sum;
   if (!run_plan_path(path, run.feed / 60, run.config, trace, sum, error)) {
     std::fprintf(stderr, "kerf: %s: %s\n", in.file.c_str(), error.c_str());

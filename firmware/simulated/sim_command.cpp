@@ -216,8 +216,8 @@ int run_sim(const SimOptions& given) {
   }
   control::FittedJob fitted;
   if (const int rc = gcode ? control::fit_program_or_say(prog, *criterion, tol, feed / 60.0, cfg.machine.max_feed / 60.0,
-                                                         fitted, *numeric)
-                           : control::fit_paths_or_say(in, *criterion, tol, feed / 60.0, fitted, *numeric);
+                                                         fitted, *numeric, &cfg.cut.rules)
+                           : control::fit_paths_or_say(in, *criterion, tol, feed / 60.0, fitted, *numeric, &cfg.cut.rules);
       rc != 0)
     return rc;
 

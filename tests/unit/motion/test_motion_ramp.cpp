@@ -49,16 +49,41 @@ TEST(MotionRamp, MaxStepBeforeIsTheLargestStepThatCanStillBrakeInTime) {
   }
 }
 
-TEST(MotionRamp, CornerRuleLimitsOnlyTurnsAboveTheAngle) {
-  const double cos_limit = std::cos(10.0 * test::kPi / 180);
+TEST(MotionRamp, JointRuleKeepsTheChordChangeWithinTheShareOfTheLimit) {
   const double a = 1e-3;
   const Vec2<double> east{1, 0};
-  // 5 degrees: tangent-continuous by configuration
-  EXPECT_TRUE(std::isinf(corner_step_limit(east, {std::cos(0.0873), std::sin(0.0873)}, cos_limit, a)));
-  // 90 degrees: the velocity vector changes by sqrt(2) v, so v <= a T / sqrt(2)
-  EXPECT_NEAR(corner_step_limit(east, {0.0, 1.0}, cos_limit, a), a / std::sqrt(2.0), 1e-15);
-  // a reversal: v <= a T / 2
-  EXPECT_NEAR(corner_step_limit(east, {-1.0, 0.0}, cos_limit, a), a / 2, 1e-15);
+  const double k = kShare * a;
+  // 90 degrees between lines: the chord turns by 2 sin(45 deg) = sqrt(2), so v <= k / sqrt(2)
+  const double s90 = turn_chord(east, {0.0, 1.0});
+  EXPECT_NEAR(s90, std::sqrt(2.0), 1e-15);
+  EXPECT_NEAR(joint_step_limit(s90, 0.0, 0.0, a, 0.0), k / std::sqrt(2.0), 1e-15);
+  // a reversal: v <= k / 2
+  EXPECT_NEAR(joint_step_limit(turn_chord(east, {-1.0, 0.0}), 0.0, 0.0, a, 0.0), k / 2, 1e-15);
+  // no turn, no curvature: no limit; a line into an arc: x^2 kappa <= k
+  EXPECT_TRUE(std::isinf(joint_step_limit(turn_chord(east, east), 0.0, 0.0, a, 0.0)));
+  const double w = joint_step_limit(0.0, 0.0, 0.5, a, 0.0);
+  EXPECT_NEAR(w * w * 0.5, k, 1e-15);
+  // a turn and a curvature: x (s + x kappa) = k exactly
+  const double x = joint_step_limit(0.1, 2.0, -1.0, a, 0.0);
+  EXPECT_NEAR(x * (0.1 + x * 2.0), k, 1e-18);
+  // with jerk, the curvature step (3 here) at b / 2 may be the tighter one
+  const double b = 1e-7;
+  const double xj = joint_step_limit(0.1, 2.0, -1.0, a, b);
+  EXPECT_NEAR(xj * xj * 3.0, b / 2, 1e-20);
+}
+
+TEST(MotionRamp, CurveCapAndTangentialShare) {
+  const double a = 1e-3;
+  const double cap = curve_step_cap(1.0, a, 0.0);
+  EXPECT_NEAR(cap * cap, kShare * a, 1e-18);
+  EXPECT_TRUE(std::isinf(curve_step_cap(0.0, a, 0.0)));
+  const double b = 1e-6;  // x^3 kappa^2 <= b / 2 is the tighter cap on a tight curve
+  const double capj = curve_step_cap(4.0, a, b);
+  EXPECT_NEAR(capj * capj * capj * 16.0, b / 2, 1e-15 * b);
+  EXPECT_NEAR(tangential_step(0.0, a), a, 1e-18);
+  EXPECT_NEAR(tangential_step(0.6 * a, a), 0.8 * a, 1e-15);
+  // the normal part is clamped to the share: something is always left for braking
+  EXPECT_NEAR(tangential_step(2 * a, a), std::sqrt(1 - kShare * kShare) * a, 1e-15);
 }
 
 }  // namespace

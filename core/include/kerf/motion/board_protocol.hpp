@@ -55,6 +55,7 @@ struct MotionStep {
   std::uint32_t last_completed = 0;  // highest sequence number finished
   bool moving = false;               // travelled this period
   bool at_rest = true;               // not moving and nothing left to run
+  bool thc_lock = true;              // below vad of the cut feed: hold the torch height
 };
 
 // One period of the board.

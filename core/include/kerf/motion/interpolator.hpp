@@ -7,26 +7,34 @@
 //   of a step at a joint carries into the next segment, so the speed does not
 //   dip at joints.
 // - Ramps are trapezoidal: the step changes by at most A = accel * period^2
-//   per period (the acceleration along the path). They happen only at the
-//   start, at the end of the queue, on feed hold / abort, where the feed or the
-//   override drops, and at corners.
+//   per period along the path on a straight path, and by what the plane
+//   limit leaves elsewhere (below). They happen only at the start, at the
+//   end of the queue, on feed hold / abort, where the feed, the override or
+//   a speed cap drops, and at joints.
+// - The plane limit (ramp/plane_limits.hpp): the velocity vector changes by
+//   at most accel * period per period, tangential and normal parts together.
+//   Each arc caps the speed (v^2 / r <= 0.85 accel); each joint caps it from
+//   its turn and the curvatures on both sides (the corner rule: v (2
+//   sin(theta / 2) + v T kappa) <= 0.85 accel T); the step changes by at
+//   most sqrt(A^2 - c^2), c being the normal part over the period, computed
+//   from the joints and the curvature the period's chords span. The plan
+//   keeps to a joint's speed from one step before it, so the steps on both
+//   sides of it do.
 // - S-curve (jerk > 0): the trapezoidal path length s(t) is averaged over the
 //   last N = ceil(2 accel / (jerk period)) periods. A moving average of a
 //   profile whose step changes by at most A keeps that bound and changes the
 //   acceleration by at most 2A / N per period, i.e. the jerk limit. The head
 //   lags the trapezoidal plan by (N - 1) / 2 periods; it still never passes
 //   the plan, so the end, holds and aborts stay exact. So that the head
-//   keeps to a slow point's speed (a corner, a lower feed), the plan does so
-//   from (N + 1) steps before it, and at corners as far past it too.
-// - Corner rule: where the tangent turns by theta > corner_angle, the speed at
-//   the joint is at most accel * period / (2 sin(theta / 2)), the speed at
-//   which the velocity vector changes by accel * period in one period. The
-//   steps that cross or leave the corner keep to it. Smaller turns count as
-//   tangent-continuous and are run at full feed. In the plane, the velocity
-//   vector therefore changes by at most 2 * accel * period per period at a
-//   corner (the ramp's accel along the path plus the corner's), and by the
-//   ramp's accel elsewhere, apart from the centripetal v^2 / r on arcs, which
-//   the interpolator does not limit.
+//   keeps to a slow point's speed (a joint, a lower feed), the plan does so
+//   from (N + 1) steps before it, and at joints as far past it too. The
+//   normal part of the jerk is bounded by speed: at a curvature step
+//   v^2 |d kappa| <= jerk T / 2 (a tangent jump has no bounded jerk), on
+//   an arc v^3 kappa^2 <= jerk / 2, and while the queue holds any turn or
+//   curvature the tangential step change is the plane limit's least,
+//   sqrt(1 - 0.85^2) A (and at most jerk T^3 / (6 x kappa) on arcs).
+// - corner_angle no longer changes the limits (every turn is limited by the
+//   plane rule); it is still checked, so configurations that set it stay valid.
 // - Look-ahead runs over the whole queue (until the braking distance is
 //   covered), so the end ramp starts in time even when the last segments are
 //   shorter than the braking distance. The end of the queue is a stop: if the
@@ -43,6 +51,7 @@
 #include "kerf/motion/path_geometry.hpp"
 #include "kerf/motion/path_queue.hpp"
 #include "kerf/motion/ramp/lookahead.hpp"
+#include "kerf/motion/ramp/plane_limits.hpp"
 
 namespace kerf::motion {
 
@@ -57,9 +66,12 @@ enum class MotionState : std::uint8_t {
 template <class S>
 struct MotionConfig {
   S period{};                         // servo period T, s (> 0)
-  S accel{};                          // acceleration limit along the path, mm/s^2 (> 0)
+  S accel{};                          // acceleration limit in the plane, mm/s^2 (> 0)
   S jerk{};                           // mm/s^3; 0: trapezoidal, > 0: S-curve (needs a window)
-  S corner_angle{};                   // rad in [0, pi]: tangent turns above it are corners
+  S corner_angle{};                   // rad in [0, pi]; no longer used by the limits
+  // Torch-height control locks (Setpoint::thc_lock) while the speed is below
+  // this fraction of the segment's feed (times the override): velocity anti-dive.
+  S vad = S(0.9);                     // in [0, 1]
   Vec2<S> counts_per_mm{S(1), S(1)};  // per axis (> 0)
 };
 
@@ -72,6 +84,7 @@ struct Setpoint {
   std::uint64_t segment = 0;   // index of the segment (0 = first pushed since reset)
   std::uint32_t sequence = 0;  // that segment's sequence number
   MotionState state = MotionState::idle;
+  bool thc_lock = true;        // speed below vad of the cut feed: hold the torch height
 };
 
 template <class S>
@@ -126,7 +139,9 @@ class Interpolator {
   S braking_distance() const;
 
  private:
-  S plan_step() const;
+  S plan_step();
+  void span_ahead(S ahead, S& turn, S& kappa) const;
+  S rate(S x, S turn, S kappa) const;
   void advance_plan(S x);
   S filtered(S s_plan);
   S approach(S w) const;
@@ -136,7 +151,8 @@ class Interpolator {
   MotionConfig<S> config_{};
   bool configured_ = false;
   S accel_step_{};  // A = accel * period^2
-  S cos_corner_{};
+  S jerk_step_{};   // B = jerk * period^3 (0: no jerk limit)
+  S rate_floor_{};  // the least the step may change by anywhere
   S snap_{};        // an end closer than this is reached
   S override_ = S(1);
   bool hold_ = false;
@@ -150,6 +166,12 @@ class Interpolator {
   bool plan_at_end_ = false;  // the plan has reached the end of the queue
   S slow_until_{};            // the plan keeps to slow_step_ until here (S-curve corners)
   S slow_step_{};
+  S span_turn_{};   // turns of the joints the plan's last step crossed
+  S span_kappa_{};  // and the largest |curvature| it ran on
+  std::size_t curved_count_ = 0;  // queued segments with a turn or curvature
+  std::size_t curved_left_ = 0;   // S-curve: periods the head may still feel one
+  S spin_max_{};                  // the largest spin pushed since reset
+  S tail_kappa_{};                // curvature of the last pushed segment
   S out_base_{};   // path length at the front segment's start
   S out_s_{};      // the head's path length
   Span<S> window_{};

@@ -86,6 +86,7 @@ MotionStep<S> InterpolatorMotion<S>::step() {
   e.running = running && interp_.queued() > 0 ? sp.sequence : 0;
   e.moving = sp.speed > S(0);
   e.at_rest = !running && interp_.queued() == 0;
+  e.thc_lock = sp.thc_lock;
   return e;
 }
 

@@ -2,6 +2,11 @@
 // length, tangents, and the point at a distance u from its start. Points on
 // an arc come from the centre and the angle start_angle + E u / r every time,
 // never from accumulated small rotations.
+//
+// An arc whose end is not exactly on its circle (coordinates rounded to the
+// link's grid put it up to a count off; G-code allows a small difference, as
+// LinuxCNC does) is run as a spiral: the radius goes linearly from the start's
+// to the end's, so the axes reach the end without a step in the last period.
 #pragma once
 
 #include "kerf/core/status.hpp"
@@ -31,6 +36,7 @@ Result<QueuedSegment<S>> prepare_segment(const PathSegment<S>& p) {
   const Vec2<S> b = g.end - g.centre;
   const S e = g.dir > 0 ? S(1) : S(-1);
   q.radius = shape.radius;
+  q.radius_change = b.norm() - q.radius;
   q.start_angle = Scalar<S>::atan2(a.y, a.x);
   q.tangent_in = a.perp() * (e / q.radius);
   q.tangent_out = b.perp() * (e / b.norm());
@@ -45,7 +51,8 @@ Vec2<S> point_at(const QueuedSegment<S>& q, S u) {
   if (!(u < q.length)) return g.end;
   if (!g.is_arc()) return g.start + q.tangent_in * u;
   const S phi = q.start_angle + (g.dir > 0 ? u : -u) / q.radius;
-  return g.centre + Vec2<S>{Scalar<S>::cos(phi), Scalar<S>::sin(phi)} * q.radius;
+  const S r = q.radius_change == S(0) ? q.radius : q.radius + q.radius_change * (u / q.length);
+  return g.centre + Vec2<S>{Scalar<S>::cos(phi), Scalar<S>::sin(phi)} * r;
 }
 
 }  // namespace kerf::motion

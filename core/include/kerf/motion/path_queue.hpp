@@ -27,11 +27,18 @@ template <class S>
 struct QueuedSegment {
   PathSegment<S> path{};
   S length{};           // mm along the path
-  S radius{};           // arcs only
+  S radius{};           // arcs only: |start - centre|
+  S radius_change{};    // arcs only: |end - centre| - radius (see point_at)
   S start_angle{};      // arcs only: angle of start - centre
   Vec2<S> tangent_in{};   // unit direction of travel at the start
   Vec2<S> tangent_out{};  // unit direction of travel at the end
-  S corner_step{};        // step limit at the joint into this segment (corner rule)
+  // The plane limits (ramp/plane_limits.hpp), worked out at push time:
+  S curvature{};          // signed: + turning left, - right, 0 on a line
+  S turn{};               // 2 sin(theta / 2) of the turn at the joint into it
+  S cap_step{};           // the step cap on it from its curvature (infinity on a line)
+  S spin{};               // cap_step * |curvature|
+  S corner_step{};        // step limit at the joint into this segment (turn and curvature)
+  bool curved() const { return turn > S(0) || curvature != S(0); }
 };
 
 // A FIFO of at most storage.size() segments. Nothing is allocated; when it is

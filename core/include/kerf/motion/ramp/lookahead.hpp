@@ -51,20 +51,4 @@ S max_step_before(S d, S w, S a) {
   return x < top ? x : top;
 }
 
-// The corner rule. Where the tangent turns by theta between two segments, the
-// velocity vector changes by 2 v sin(theta / 2) within one period. Keeping that
-// change within the acceleration limit gives the corner speed
-//   v_corner = accel * period / (2 sin(theta / 2)),
-// as a step A / (2 sin(theta / 2)). A turn of at most the configured angle
-// (cos_limit = cos(angle)) counts as tangent-continuous: no limit (returns
-// infinity). t_out, t_in are unit tangents at the end and the next start.
-template <class S>
-S corner_step_limit(Vec2<S> t_out, Vec2<S> t_in, S cos_limit, S a) {
-  const S c = t_out.dot(t_in);
-  if (!(c < cos_limit)) return Scalar<S>::infinity();
-  const S one_minus = S(1) - c;  // = 2 sin^2(theta / 2), in [0, 2]
-  const S half_sin = Scalar<S>::sqrt(one_minus / S(2));
-  return a / (S(2) * half_sin);
-}
-
 }  // namespace kerf::motion
