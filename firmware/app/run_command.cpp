@@ -29,6 +29,12 @@ int run_job(const RunOptions& opts, const char* who, RunCheck check, LinesOpener
     std::fprintf(stderr, "%s: run: %s\n", who, error.c_str());
     return kExitFailure;
   }
+  // The E-stop latch starts latched: something must be able to reset it.
+  if (!opts.reset && !cfg.gpio.reset.used) {
+    std::fprintf(stderr, "%s: run: the E-stop latch starts latched and nothing could reset it: "
+                         "pass --reset or configure gpio.reset\n", who);
+    return kExitFailure;
+  }
   if (opts.resume && opts.journal.empty()) return io::usage_error("--resume: needs --journal FILE");
   io::PointFile in;
   job::GcodeProgram prog;
@@ -72,7 +78,7 @@ int run_job(const RunOptions& opts, const char* who, RunCheck check, LinesOpener
   control::ResumePoint from;
   if (!control::open_journal(opts.journal, opts.resume, fitted.job, journal, from)) return kExitUsage;
   const int rc = machine::run_on_machine(fitted.job, cfg, *link, *gpio, journal.get(), from, opts.resume, opts.report,
-                                         gcode ? &prog : nullptr);
+                                         opts.reset, gcode ? &prog : nullptr);
   // The offsets the program set are kept once it has run to its end (a
   // stopped run leaves the machine state as it was).
   if (gcode && rc == 0 && !cfg.machine.state.empty() &&

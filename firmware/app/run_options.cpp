@@ -12,6 +12,9 @@ CLI::App* add_run_command(CLI::App& app, RunOptions& o) {
       "GPIO (a bench without a torch: [bench] enabled = true in the configuration)");
   r->add_option("--config", o.config, "Machine configuration (TOML)")->type_name("FILE")->required();
   add_journal_options(r, o.journal, o.resume);
+  r->add_flag("--reset", o.reset,
+              "Reset the E-stop latch at start-up (refused while the E-stop is asserted); without it the "
+              "configured gpio.reset line must be pressed");
   add_report_option(r, o.report);
   add_job_file(r, "job", o.job)->type_name("JOB")->required();
   return r;

@@ -14,6 +14,7 @@ struct RunOptions {
   std::string config;   // required
   std::string journal;
   bool resume = false;
+  bool reset = false;     // the E-stop latch's reset edge at start-up
   std::string report;
   std::string job;      // point file (paths separated by blank lines)
 };

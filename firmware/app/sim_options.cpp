@@ -26,7 +26,8 @@ CLI::App* add_sim_command(CLI::App& app, simulated::SimOptions& o) {
       ->type_name("TYPE");
   s->add_option("--feed", o.feed, "Cut feed in mm/min (default: the config's)")->type_name("MM_PER_MIN");
   s->add_option("--fault", o.faults,
-                "KIND@SECONDS[:DURATION]: estop, arc-lost, no-arc, limit, hold, cycle-start, drive-fault; "
+                "KIND@SECONDS[:DURATION]: estop, arc-lost, no-arc, limit, hold, cycle-start, reset, drive-fault, "
+                "stall (the x axis jams); "
                 "modbus: link-drop, link-stall, modbus-exception, crc-error; can: heartbeat-loss, emcy, bus-off, "
                 "enable-refused")
       ->type_name("FAULT");

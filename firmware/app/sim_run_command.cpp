@@ -30,6 +30,12 @@ std::unique_ptr<hal::Gpio> scripted_lines(const config::Config& cfg, std::string
 
 }  // namespace
 
-int run_sim_run(const RunOptions& opts) { return run_job(opts, "kerf-sim", on_this_host, scripted_lines); }
+// The scripted operator stands at the machine: it gives the E-stop latch its
+// start-up reset, as --reset does on a real one.
+int run_sim_run(const RunOptions& opts) {
+  RunOptions o = opts;
+  o.reset = true;
+  return run_job(o, "kerf-sim", on_this_host, scripted_lines);
+}
 
 }  // namespace kerf::app

@@ -31,6 +31,10 @@ struct Machine {
   double servo_period = 0.001; // s, the board's interpolation period, (0, 0.1]
   double cycle = 0.002;        // s, the controller's loop period, (0, 0.1]
   std::string state;           // the machine state file (work offsets; job/machine_state.hpp); empty: none
+  // Following error, mm, > 0 (LinuxCNC's FERROR/MIN_FERROR): the limit at
+  // max_feed and at rest, linear in between; min_ferror <= ferror.
+  double ferror = 1.0;
+  double min_ferror = 0.25;
 };
 
 struct Link {

@@ -61,6 +61,8 @@ void read_machine(TableReader& r, Machine& m) {
   r.positive_at_most("servo_period", m.servo_period, kMaxPeriod);
   r.positive_at_most("cycle", m.cycle, kMaxPeriod);
   r.string("state", m.state);
+  r.positive("ferror", m.ferror);
+  r.positive("min_ferror", m.min_ferror);
   r.finish();
 }
 
@@ -68,6 +70,10 @@ void check_machine(TableReader& machine, const Machine& m) {
   if (m.rapid_feed > m.max_feed)
     machine.problem("rapid_feed", "must be <= machine.max_feed (" + format_number(m.max_feed) +
                                       "), got " + format_number(m.rapid_feed));
+  if (m.min_ferror > m.ferror)
+    machine.problem(machine.has("min_ferror") ? "min_ferror" : "ferror",
+                    "machine.min_ferror (" + format_number(m.min_ferror) + ") must be <= machine.ferror (" +
+                        format_number(m.ferror) + ")");
 }
 
 // ---- link -------------------------------------------------------------------

@@ -57,7 +57,7 @@ __attribute__((format(printf, 1, 2))) std::string format(const char* fmt, ...) {
 Controller::Controller(const Job& job, const ControllerConfig& cfg, hal::SegmentLink& link,
                        hal::Gpio& gpio, Journal* journal)
     : job_(job), cfg_(cfg), link_(link), gpio_(gpio), journal_(journal),
-      actions_(job, cfg.outputs, cfg.operator_delay_s) {}
+      actions_(job, cfg.outputs, cfg.operator_delay_s), latch_(cfg.reset_at_start), ferror_(cfg.ferror) {}
 
 void Controller::start(const ResumePoint& from) {
   const std::size_t n = job_.segment_count();
@@ -118,7 +118,8 @@ void Controller::cycle(double now_s) {
   hal::GpioInputs in;
   std::string trip;
   State trip_state = State::fault;
-  if (!gpio_.read(now_s, in)) {
+  const bool inputs_read = gpio_.read(now_s, in);
+  if (!inputs_read) {
     trip = std::string("gpio: ") + gpio_.last_error();
   } else {
     prev_in_ = in_;
@@ -136,6 +137,7 @@ void Controller::cycle(double now_s) {
         }
     }
   }
+  if (latch_cycle(now_s, inputs_read)) return;  // latched at rest: waiting for a reset
   const bool stopping = state_ == State::fault || state_ == State::estop;
   const bool cut_was_on = torch_;
   if (!trip.empty() && !stopping && torch_) set_torch(false, now_s);
@@ -146,7 +148,7 @@ void Controller::cycle(double now_s) {
         link_down_ && std::chrono::duration<double>(WallClock::now() - link_down_since_).count() >= cfg_.link_timeout_s;
     if ((fresh && at_rest_) || (!fresh && link_gone)) {
       report_.stopped_at = st_.position;
-      finished_ = true;
+      park_or_finish();
     }
     return;
   }
@@ -157,6 +159,7 @@ void Controller::cycle(double now_s) {
     return;
   }
   if (!fresh || state_ == State::fault) return;
+  if (following_error_fault(now_s)) return;
   if (st_.state == hal::BoardState::fault && state_ != State::ready) {
     stop(State::fault, board_fault_text(st_.faults), now_s);
     return;
@@ -252,6 +255,7 @@ bool Controller::set_torch(bool on, double now_s) {
 
 void Controller::stop(State s, const std::string& why, double now_s) {
   if (state_ == State::fault || state_ == State::estop) return;
+  latch_.trip();
   if (torch_) {
     torch_went_off();
     torch_ = false;

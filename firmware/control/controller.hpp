@@ -17,6 +17,14 @@
 // every completed segment and the point the torch went off at, so a resumed
 // run re-pierces exactly there: nothing is cut twice, nothing is skipped.
 //
+// Safety (controller_safety.cpp): the E-stop chain is latched (SafetyLatch,
+// LinuxCNC's estop_latch): nothing moves until a reset edge arrives with the
+// E-stop clear, and after an E-stop or a fault the machine stays stopped
+// until the next accepted reset. With a reset line (wait_for_reset) the
+// controller then waits latched at rest and, on a reset, goes back to Ready
+// and finishes the job from its cut point; without one the run ends. The
+// following error (actual vs commanded position, FollowingError) is a fault.
+//
 // The controller never blocks: each cycle makes at most a few link
 // transactions and returns. It allocates only in start().
 #pragma once
@@ -28,7 +36,9 @@
 
 #include "control/job.hpp"
 #include "control/job_actions.hpp"
+#include "control/following_error.hpp"
 #include "control/journal.hpp"
+#include "control/safety_latch.hpp"
 #include "kerf/hal/gpio.hpp"
 #include "kerf/hal/segment_link.hpp"
 
@@ -52,6 +62,12 @@ struct ControllerConfig {
   double operator_delay_s = -1.0;
   // The program's outputs and inputs (M62..M68, M66; not owned); null: none.
   Outputs* outputs = nullptr;
+  // The E-stop latch: the reset edge at start-up (kerf run --reset; the
+  // simulator's operator), and whether a reset line exists (then a stop
+  // waits latched for a reset instead of ending the run).
+  bool reset_at_start = true;
+  bool wait_for_reset = false;
+  FerrorLimits ferror;  // machine.ferror, machine.min_ferror, max_feed
 };
 
 struct RunReport {
@@ -70,6 +86,14 @@ struct RunReport {
   std::uint64_t link_errors = 0;      // failed transactions (each retried next cycle)
   std::uint32_t pierces = 0;
   std::vector<ActionEvent> actions;   // the program's actions run (dwell, pause, outputs, waits)
+  // Safety: the last refused reset, resets accepted, watchdog toggles, and
+  // the following error (largest seen; at a following-error fault, the gap
+  // and the limit then).
+  std::string reset_refused;
+  std::uint32_t resets = 0;
+  std::uint32_t watchdog_toggles = 0;
+  double max_ferror_mm = 0.0;
+  double ferror_at_fault_mm = 0.0, ferror_limit_mm = 0.0;
 };
 
 class Controller {
@@ -118,6 +142,11 @@ class Controller {
   void actions_done(double now_s);
   void finish_job(double now_s);
   double pierce_delay() const;
+  // controller_safety.cpp
+  bool latch_cycle(double now_s, bool inputs_read);  // true: this cycle is the latch's (parked)
+  void park_or_finish();                             // stopped and at rest
+  void restart_after_reset();
+  bool following_error_fault(double now_s);
 
   const Job& job_;
   ControllerConfig cfg_;
@@ -162,6 +191,12 @@ class Controller {
   bool resume_after_pierce_ = false;  // re-pierce after a hold: resume the board, no new block
   State held_from_ = State::idle;
   bool hold_braking_ = false;
+
+  // Safety.
+  SafetyLatch latch_;
+  FollowingError ferror_;
+  bool parked_ = true;          // latched and at rest, waiting for a reset (true until the first one)
+  bool ran_ = false;            // the first reset came: a later one resumes the job
 };
 
 }  // namespace kerf::control

@@ -11,6 +11,10 @@ ControllerConfig controller_config(const config::Config& cfg) {
   // The board stops by itself after half the timeout without a request (its
   // watchdog); the controller switches the torch off then.
   c.link_watchdog_s = cfg.link.timeout / 2.0;
+  c.wait_for_reset = cfg.gpio.reset.used;
+  c.ferror.ferror_mm = cfg.machine.ferror;
+  c.ferror.min_ferror_mm = cfg.machine.min_ferror;
+  c.ferror.max_speed_mm_s = cfg.machine.max_feed / 60.0;
   return c;
 }
 

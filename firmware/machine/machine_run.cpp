@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "control/controller.hpp"
+#include "control/machine_config.hpp"
 #include "control/program_job.hpp"
 #include "control/run_report.hpp"
 #include "io/options.hpp"
@@ -26,7 +27,7 @@ extern "C" void on_signal(int sig) { g_signal = sig; }
 
 int run_on_machine(const Job& job, const config::Config& cfg, hal::SegmentLink& link, hal::Gpio& gpio,
                    Journal* journal, const ResumePoint& from, bool resumed, const std::string& report,
-                   const job::GcodeProgram* program) {
+                   bool reset_at_start, const job::GcodeProgram* program) {
   using io::kExitFailure;
   using io::kExitOk;
   const hal::RtSetup rt = hal::rt_setup(cfg.rt.priority, cfg.rt.lock_memory);
@@ -36,18 +37,27 @@ int run_on_machine(const Job& job, const config::Config& cfg, hal::SegmentLink& 
   sigaction(SIGINT, &sa, nullptr);
   sigaction(SIGTERM, &sa, nullptr);
 
-  const std::unique_ptr<Controller> made = make_controller(job, cfg, link, gpio, journal);
+  control::ControllerConfig ccfg = control::controller_config(cfg);
+  ccfg.reset_at_start = reset_at_start;
+  const std::unique_ptr<Controller> made = make_controller(job, ccfg, link, gpio, journal);
   Controller& ctl = *made;
   ctl.start(from);
   const char* const bench = cfg.bench.enabled ? "BENCH, " : "";
   hal::RtLoop loop(cfg.machine.cycle);
   double t0 = -1.0, next_status = 1.0, now = 0.0;
+  std::uint32_t resets = 0;
+  std::string refused;
   while (!ctl.finished()) {
     const double due = loop.wait_next();
     if (t0 < 0.0) t0 = due;
     if (g_signal != 0) ctl.request_stop(g_signal == SIGINT ? "stopped by SIGINT" : "stopped by SIGTERM");
     now = due - t0;
     ctl.cycle(now);
+    if (ctl.report().resets != resets || ctl.report().reset_refused != refused) {  // the operator sees each reset's fate
+      resets = ctl.report().resets;
+      refused = ctl.report().reset_refused;
+      if (!refused.empty()) std::fprintf(stderr, "kerf: run: %s\n", refused.c_str());
+    }
     if (now >= next_status) {  // the operator's status line, once a second
       next_status += 1.0;
       std::fprintf(stderr, "kerf: run: %st %.0f s, %s, segment %lld of %zu; %s\n", bench, now,

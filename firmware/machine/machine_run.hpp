@@ -21,9 +21,13 @@
 namespace kerf::machine {
 
 // Returns the exit code: 0 done, 1 stopped (fault, E-stop, signal) or the
-// report could not be written.
+// report could not be written. The E-stop latch starts latched: it opens on
+// `reset_at_start` or the gpio.reset line (the caller refuses a run with
+// neither). With a reset line, a stopped run waits latched for a reset and
+// then finishes the job.
 int run_on_machine(const control::Job& job, const config::Config& cfg, hal::SegmentLink& link, hal::Gpio& gpio,
                    control::Journal* journal, const control::ResumePoint& from, bool resumed, const std::string& report,
+                   bool reset_at_start = false,
                    const job::GcodeProgram* program = nullptr);
 
 }  // namespace kerf::machine

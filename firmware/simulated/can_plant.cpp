@@ -17,6 +17,7 @@ bool CanPlant::inject(const BoardFault& f) {
     case BoardFaultKind::heartbeat_loss: link_->inject(CanFaultKind::heartbeat_loss); return true;
     case BoardFaultKind::bus_off: link_->inject(CanFaultKind::bus_off); return true;
     case BoardFaultKind::enable_refused: link_->inject(CanFaultKind::enable_refused); return true;
+    case BoardFaultKind::stall: link_->inject(CanFaultKind::stall); return true;
     default: return false;  // Modbus link faults have no CAN meaning
   }
 }

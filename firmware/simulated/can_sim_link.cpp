@@ -23,6 +23,7 @@ const char* to_string(CanFaultKind k) {
     case CanFaultKind::emcy: return "emcy";
     case CanFaultKind::bus_off: return "bus-off";
     case CanFaultKind::enable_refused: return "enable-refused";
+    case CanFaultKind::stall: return "stall";
   }
   return "?";
 }
@@ -78,6 +79,7 @@ class VirtualCanSimLink final : public CanSimLinkBase {
         last.inject(sim::DriveFault::emcy, now);
         last.inject(sim::DriveFault::enable_refused, now);
         break;
+      case CanFaultKind::stall: bus_.drive(0).inject(sim::DriveFault::stall, now); break;
     }
   }
   double bus_load_bps() const override {
@@ -123,6 +125,7 @@ class SocketCanSimLink final : public CanSimLinkBase {
         drives_->inject(last_, sim::DriveFault::enable_refused);
         break;
       case CanFaultKind::bus_off: send_bus_off_error_frame(); break;
+      case CanFaultKind::stall: drives_->inject(first_, sim::DriveFault::stall); break;
     }
   }
   double bus_load_bps() const override { return 0.0; }

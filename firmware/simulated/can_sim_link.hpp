@@ -23,7 +23,7 @@
 
 namespace kerf::simulated {
 
-enum class CanFaultKind : std::uint8_t { heartbeat_loss, emcy, bus_off, enable_refused };
+enum class CanFaultKind : std::uint8_t { heartbeat_loss, emcy, bus_off, enable_refused, stall };  // stall: the x drive jams
 const char* to_string(CanFaultKind k);
 // "heartbeat-loss", "emcy", "bus-off", "enable-refused"; false for anything else.
 bool parse_can_fault(const std::string& text, CanFaultKind& out);

@@ -13,6 +13,7 @@ BoardFaultKind can_fault_kind(CanFaultKind k) {
     case CanFaultKind::emcy: return BoardFaultKind::emcy;
     case CanFaultKind::bus_off: return BoardFaultKind::bus_off;
     case CanFaultKind::enable_refused: return BoardFaultKind::enable_refused;
+    case CanFaultKind::stall: return BoardFaultKind::stall;
   }
   return BoardFaultKind::emcy;
 }

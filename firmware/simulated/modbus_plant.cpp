@@ -16,12 +16,13 @@ namespace {
 class ModbusPlant final : public SimPlant {
  public:
   ModbusPlant(const sim::BoardConfig& bc, std::unique_ptr<sim::SegmentExecutor> exec)
-      : board_(bc, std::move(exec)), tick_s_(bc.servo_period_s) {}
+      : board_(bc, std::move(exec)), plant_(bc.start), tick_s_(bc.servo_period_s) {}
 
   bool open(const SimMachineConfig& cfg, double watchdog_s, std::string& error) {
     sim::ServerConfig sc;
     sc.transport = cfg.rtu ? sim::ServerConfig::Transport::rtu : sim::ServerConfig::Transport::tcp;
     sc.watchdog_s = watchdog_s;
+    sc.plant = &plant_;
     server_ = sim::BoardServer::start(board_, sc, error);
     if (!server_) return false;
     hal::ModbusConfig lc;
@@ -38,8 +39,15 @@ class ModbusPlant final : public SimPlant {
 
   hal::SegmentLink& link() override { return *link_; }
   double tick_s() const override { return tick_s_; }
-  void tick() override { board_.tick(); }
-  hal::BoardStatus truth() override { return board_.status(); }
+  void tick() override {
+    board_.tick();
+    plant_.step(board_.status().position, tick_s_);
+  }
+  hal::BoardStatus truth() override {
+    hal::BoardStatus s = board_.status();
+    s.actual = plant_.actual();
+    return s;
+  }
   bool inject(const BoardFault& f) override {
     switch (f.kind) {
       case BoardFaultKind::link_drop: server_->drop_link(f.duration_s); return true;
@@ -50,12 +58,14 @@ class ModbusPlant final : public SimPlant {
         return true;
       case BoardFaultKind::crc_error: server_->corrupt_crc(3); return true;
       case BoardFaultKind::drive_fault: board_.inject_fault(hal::kFaultDrive); return true;
+      case BoardFaultKind::stall: plant_.stall(0); return true;  // the x axis jams
       default: return false;  // the CAN bus's faults
     }
   }
 
  private:
   sim::MotionBoard board_;  // declared first: the server and the link go before it
+  sim::BoardPlant plant_;   // the axes: the board's command through a lag
   double tick_s_;
   std::unique_ptr<sim::BoardServer> server_;
   std::unique_ptr<hal::ModbusSegmentLink> link_;

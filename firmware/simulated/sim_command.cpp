@@ -38,8 +38,8 @@ const char* const kDemoJob =
     ;
 
 constexpr const char* kFaultKinds =
-    "estop, arc-lost, no-arc, limit, hold, cycle-start, drive-fault, link-drop, link-stall, modbus-exception, "
-    "crc-error, heartbeat-loss, emcy, bus-off or enable-refused";
+    "estop, arc-lost, no-arc, limit, hold, cycle-start, reset, drive-fault, stall, link-drop, link-stall, "
+    "modbus-exception, crc-error, heartbeat-loss, emcy, bus-off or enable-refused";
 
 // KIND@SECONDS[:DURATION]: a GPIO event for the scripted inputs, or a fault
 // on the board's side.
@@ -58,9 +58,11 @@ bool parse_fault(const std::string& text, const std::string& link, std::vector<s
   else if (kind == "limit") g.kind = sim::GpioEvent::Kind::limit, g.limit = 0;
   else if (kind == "hold") g.kind = sim::GpioEvent::Kind::hold;
   else if (kind == "cycle-start") g.kind = sim::GpioEvent::Kind::cycle_start;
+  else if (kind == "reset") g.kind = sim::GpioEvent::Kind::reset;
   else {
     is_gpio = false;
     if (kind == "drive-fault") b.kind = BoardFaultKind::drive_fault;
+    else if (kind == "stall") b.kind = BoardFaultKind::stall;
     else if (kind == "link-drop") b.kind = BoardFaultKind::link_drop;
     else if (kind == "link-stall") b.kind = BoardFaultKind::link_stall;
     else if (kind == "modbus-exception") b.kind = BoardFaultKind::modbus_exception;
@@ -71,7 +73,10 @@ bool parse_fault(const std::string& text, const std::string& link, std::vector<s
       return false;
     }
   }
-  if (on_can && !is_gpio && !is_can) {
+  if (on_can && !is_gpio && !is_can && b.kind == BoardFaultKind::stall) {
+    is_can = true;  // the x drive jams
+    c.kind = CanFaultKind::stall;
+  } else if (on_can && !is_gpio && !is_can) {
     if (b.kind != BoardFaultKind::drive_fault) {
       error = "--fault: " + kind + " is a Modbus fault; on --link can: heartbeat-loss, emcy, bus-off, enable-refused";
       return false;
@@ -232,6 +237,9 @@ int run_sim(const SimOptions& given) {
   control::MemoryOutputs outputs;  // the program's outputs, recorded; its inputs stay low
   ccfg.outputs = &outputs;
   ccfg.operator_delay_s = cfg.sim.operator_delay;
+  // A scripted reset press gives the simulated machine a reset button: a
+  // stop then waits latched for it.
+  ccfg.wait_for_reset = ccfg.wait_for_reset || gpio.has_reset();
   ccfg.link_timeout_s = link_timeout;
   ccfg.link_watchdog_s = link_timeout / 2.0;
   SimMachineConfig mcfg = sim_machine_config(cfg);
@@ -316,6 +324,7 @@ int run_sim(const SimOptions& given) {
       (!opts.plot.empty() && !write_or_say("--plot", opts.plot, io::format_run_svg(plot))))
     return kExitFailure;
   std::fputs(control::format_run_summary(sum).c_str(), stdout);
+  if (!res.run.reset_refused.empty()) std::fprintf(stderr, "kerf: sim: %s\n", res.run.reset_refused.c_str());
   if (demo)
     std::printf("kerf sim: wrote %s, %s and %s\n", opts.trace.c_str(), opts.plot.c_str(), opts.report.c_str());
   if (res.run.state != control::State::done) {

@@ -22,6 +22,7 @@ const char* to_string(BoardFaultKind k) {
     case BoardFaultKind::emcy: return "emcy";
     case BoardFaultKind::bus_off: return "bus-off";
     case BoardFaultKind::enable_refused: return "enable-refused";
+    case BoardFaultKind::stall: return "stall";
   }
   return "unknown";
 }

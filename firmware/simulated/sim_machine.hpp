@@ -29,7 +29,8 @@ namespace kerf::simulated {
 // (heartbeat_loss and on): each plant takes the ones it has.
 enum class BoardFaultKind : std::uint8_t {
   link_drop, link_stall, modbus_exception, crc_error, drive_fault,
-  heartbeat_loss, emcy, bus_off, enable_refused
+  heartbeat_loss, emcy, bus_off, enable_refused,
+  stall  // the x axis jams: its actual position stops, the command runs on (either link)
 };
 const char* to_string(BoardFaultKind k);
 

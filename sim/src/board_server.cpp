@@ -149,6 +149,12 @@ void BoardServer::serve_one(int fd) {
   handle(q, len, fd);
 }
 
+hal::BoardStatus BoardServer::board_status() const {
+  hal::BoardStatus st = board_.status();
+  st.actual = cfg_.plant != nullptr ? cfg_.plant->actual() : st.position;
+  return st;
+}
+
 void BoardServer::handle(const std::uint8_t* q, int len, int fd) {
   int delays = 0;
   double delay_s = 0.0;
@@ -177,7 +183,7 @@ void BoardServer::handle(const std::uint8_t* q, int len, int fd) {
   switch (fc) {
     case MODBUS_FC_READ_HOLDING_REGISTERS:
       if (u16(q + h + 1) + u16(q + h + 3) > map::kStatusRegs) code = MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS;
-      else hal::modbus_map::encode_status(board_.status(), regs);
+      else hal::modbus_map::encode_status(board_status(), regs);
       break;
     case MODBUS_FC_WRITE_SINGLE_REGISTER:
       if (u16(q + h + 1) != map::kCommandAddr) code = MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS;
@@ -193,7 +199,7 @@ void BoardServer::handle(const std::uint8_t* q, int len, int fd) {
         break;
       }
       code = write_slots(board_, u16(q + h + 5), u16(q + h + 7), q + h + 10, len - h - 10);
-      if (code == 0) hal::modbus_map::encode_status(board_.status(), regs);
+      if (code == 0) hal::modbus_map::encode_status(board_status(), regs);
       break;
     default: code = MODBUS_EXCEPTION_ILLEGAL_FUNCTION;
   }

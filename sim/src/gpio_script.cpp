@@ -82,8 +82,10 @@ bool parse_event(const std::vector<std::string>& words, std::size_t limit_count,
     e.kind = name == "arc-lost" ? GpioEvent::Kind::arc_lost : GpioEvent::Kind::no_arc;
     return !too_many(0);
   }
-  if (name == "hold" || name == "cycle-start") {
-    e.kind = name == "hold" ? GpioEvent::Kind::hold : GpioEvent::Kind::cycle_start;
+  if (name == "hold" || name == "cycle-start" || name == "reset") {
+    e.kind = name == "hold" ? GpioEvent::Kind::hold
+             : name == "reset" ? GpioEvent::Kind::reset
+                               : GpioEvent::Kind::cycle_start;
     if (nargs >= 1 && (!parse_seconds(words[1], e.duration_s) || !(e.duration_s > 0.0))) {
       reason = "bad press duration \"" + words[1] + "\" (seconds > 0)";
       return false;
@@ -198,8 +200,10 @@ bool parse_gpio_fault(std::string_view spec, std::size_t limit_count,
       off.t_s = e.t_s + duration;
       events.push_back(off);
     }
-  } else if (kind == "hold" || kind == "cycle-start") {
-    e.kind = kind == "hold" ? GpioEvent::Kind::hold : GpioEvent::Kind::cycle_start;
+  } else if (kind == "hold" || kind == "cycle-start" || kind == "reset") {
+    e.kind = kind == "hold" ? GpioEvent::Kind::hold
+             : kind == "reset" ? GpioEvent::Kind::reset
+                               : GpioEvent::Kind::cycle_start;
     e.duration_s = duration;
     events.push_back(e);
   } else if (kind == "arc-lost" || kind == "no-arc") {

@@ -69,6 +69,12 @@ bool ScriptedGpio::hold_at(double t_s, double duration_s) {
 bool ScriptedGpio::cycle_start_at(double t_s, double duration_s) {
   return add_quietly(*this, GpioEvent{t_s, GpioEvent::Kind::cycle_start, true, -1, duration_s});
 }
+bool ScriptedGpio::reset_at(double t_s, double duration_s) {
+  return add_quietly(*this, GpioEvent{t_s, GpioEvent::Kind::reset, true, -1, duration_s});
+}
+bool ScriptedGpio::has_reset() const {
+  return std::any_of(events_.begin(), events_.end(), [](const GpioEvent& e) { return e.kind == GpioEvent::Kind::reset; });
+}
 
 void ScriptedGpio::apply(const GpioEvent& e) {
   const double press = e.duration_s > 0.0 ? e.duration_s : options_.press_s;
@@ -88,6 +94,10 @@ void ScriptedGpio::apply(const GpioEvent& e) {
       cycle_from_ = e.t_s;
       cycle_until_ = e.t_s + press;
       break;
+    case GpioEvent::Kind::reset:
+      reset_from_ = e.t_s;
+      reset_until_ = e.t_s + press;
+      break;
   }
 }
 
@@ -104,7 +114,17 @@ bool ScriptedGpio::read(double now_s, hal::GpioInputs& in) {
   for (std::size_t i = 0; i < options_.limit_count; ++i) in.limit[i] = limits_[i];
   in.hold = now_s >= hold_from_ && now_s < hold_until_;
   in.cycle_start = now_s >= cycle_from_ && now_s < cycle_until_;
+  in.reset = now_s >= reset_from_ && now_s < reset_until_;
   in.arc_ok = torch_ && !arc_denied_ && !arc_lost_ && now_s >= torch_on_s_ + options_.arc_delay_s;
+  return true;
+}
+
+bool ScriptedGpio::set_watchdog(bool level) {
+  if (level != watchdog_) {
+    watchdog_ = level;
+    ++watchdog_changes_;
+    watchdog_last_s_ = now_s_;
+  }
   return true;
 }
 

@@ -55,6 +55,11 @@ const BadCase kCases[] = {
      "kerf.toml:4: machine.axis[0]: expected a table, got an integer"},
     {"rapid_above_max", TCP "[machine]\nmax_feed = 8000\nrapid_feed = 9000\n",
      "kerf.toml:5: machine.rapid_feed: must be <= machine.max_feed (8000), got 9000"},
+    {"min_ferror_above_ferror", TCP "[machine]\nferror = 0.5\nmin_ferror = 0.8\n",
+     "kerf.toml:5: machine.min_ferror: machine.min_ferror (0.8) must be <= machine.ferror (0.5)"},
+    {"ferror_zero", TCP "[machine]\nferror = 0\n", "kerf.toml:4: machine.ferror: must be > 0, got 0"},
+    {"gpio_watchdog_debounce", TCP "[gpio.watchdog]\nname = \"PUMP\"\ndebounce_ms = 5\n",
+     "kerf.toml:5: gpio.watchdog.debounce_ms: not for an output"},
 
     // [link]
     {"link_missing", "[cut]\nfeed = 100\n",

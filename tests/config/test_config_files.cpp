@@ -45,6 +45,10 @@ TEST(ConfigFiles, PlasmaTableExampleLoads) {
   EXPECT_EQ(c.gpio.arc_ok.offset, 27);
   EXPECT_EQ(c.gpio.hold.offset, 23);
   EXPECT_EQ(c.gpio.cycle_start.offset, 24);
+  EXPECT_EQ(c.gpio.reset.offset, 25);
+  EXPECT_EQ(c.gpio.watchdog.offset, 26);
+  EXPECT_EQ(c.machine.ferror, 1.0);
+  EXPECT_EQ(c.machine.min_ferror, 0.25);
   ASSERT_EQ(c.gpio.limits.size(), 2u);
   EXPECT_EQ(c.gpio.limits[0].offset, 5);
   EXPECT_EQ(c.gpio.limits[1].offset, 6);
@@ -169,6 +173,30 @@ TEST(ConfigFiles, OtherLinksAndLinesByName) {
   EXPECT_EQ(c.link.device, "/dev/ttyUSB0");
   EXPECT_EQ(c.link.baud, 38400);
   EXPECT_EQ(c.link.unit, 2);
+}
+
+TEST(ConfigFiles, SafetyLinesAndFollowingError) {
+  Config c;
+  std::string error;
+  const char* text =
+      "[machine]\nferror = 2.0\nmin_ferror = 0.5\n"
+      "[link]\nkind = \"modbus-tcp\"\n"
+      "[gpio]\nchip = \"gpiochip0\"\n[gpio.reset]\noffset = 5\nactive_low = true\ndebounce_ms = 10\n"
+      "[gpio.watchdog]\noffset = 6\n";
+  ASSERT_TRUE(parse(text, "safety.toml", c, error)) << error;
+  EXPECT_EQ(c.machine.ferror, 2.0);
+  EXPECT_EQ(c.machine.min_ferror, 0.5);
+  EXPECT_TRUE(c.gpio.reset.used);
+  EXPECT_EQ(c.gpio.reset.offset, 5);
+  EXPECT_TRUE(c.gpio.reset.active_low);
+  EXPECT_EQ(c.gpio.reset.debounce_s, 0.01);
+  EXPECT_TRUE(c.gpio.watchdog.used);
+  EXPECT_EQ(c.gpio.watchdog.offset, 6);
+  const Config d = defaults();
+  EXPECT_EQ(d.machine.ferror, 1.0);
+  EXPECT_EQ(d.machine.min_ferror, 0.25);
+  EXPECT_FALSE(d.gpio.reset.used);
+  EXPECT_FALSE(d.gpio.watchdog.used);
 }
 
 TEST(ConfigFiles, BadFileLeavesTheConfigUntouched) {

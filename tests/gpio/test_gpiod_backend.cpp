@@ -111,6 +111,39 @@ TEST_F(GpiodBackend, InputsAreActiveLowAndDebounced) {
   EXPECT_FALSE(in.limit[1]);
 }
 
+TEST_F(GpiodBackend, ResetInputAndWatchdogOutputBesideTheOthers) {
+  GpioConfig cfg;
+  cfg.torch = at("gpiochip0", 17);
+  cfg.watchdog = at("gpiochip0", 18, /*active_low=*/true);
+  cfg.reset = at("gpiochip0", 19, /*active_low=*/true);
+  cfg.limits = {at("gpiochip1", 5)};
+  std::string error;
+  {
+    auto gpio = open_gpiod(cfg, error);
+    ASSERT_NE(gpio, nullptr) << error;
+    EXPECT_TRUE(line("/dev/gpiochip0", 18).level);  // active-low watchdog starts logically low
+    ASSERT_TRUE(gpio->set_watchdog(true));
+    EXPECT_FALSE(line("/dev/gpiochip0", 18).level);
+    EXPECT_FALSE(line("/dev/gpiochip0", 17).level) << "the watchdog moved the torch";
+    ASSERT_TRUE(gpio->set_watchdog(false));
+    EXPECT_TRUE(line("/dev/gpiochip0", 18).level);
+    line("/dev/gpiochip0", 19).level = false;  // reset pressed (active low)
+    line("/dev/gpiochip1", 5).level = true;
+    GpioInputs in;
+    ASSERT_TRUE(gpio->read(1.0, in));
+    EXPECT_TRUE(in.reset);
+    EXPECT_TRUE(in.limit[0]);
+    line("/dev/gpiochip0", 19).level = true;
+    line("/dev/gpiochip1", 5).level = false;
+    ASSERT_TRUE(gpio->read(1.1, in));
+    EXPECT_FALSE(in.reset);
+    EXPECT_FALSE(in.limit[0]);
+    line("/dev/gpiochip0", 18).fail_io = true;
+    EXPECT_FALSE(gpio->set_watchdog(true));
+    EXPECT_EQ(std::string(gpio->last_error()).rfind("gpio: watchdog: ", 0), 0u) << gpio->last_error();
+  }
+}
+
 TEST_F(GpiodBackend, LinesByNameAndChipLabel) {
   GpioConfig cfg;
   cfg.torch = named("pinctrl-bcm2835", "TORCH");

@@ -104,6 +104,33 @@ TEST(ScriptedGpio, PressesLastTheirDuration) {
   EXPECT_FALSE(read_at(g, 4.5).cycle_start);
 }
 
+TEST(ScriptedGpio, ResetIsAPressFromTheScriptOrTheCommandLine) {
+  ScriptedGpio g(ScriptedGpioOptions{0, 0.05, 0.25});
+  EXPECT_FALSE(g.has_reset());
+  std::vector<GpioEvent> ev;
+  std::string error;
+  ASSERT_TRUE(parse_gpio_script("1.5 reset 0.5\n", "s", 0, ev, error)) << error;
+  ASSERT_TRUE(parse_gpio_fault("reset@3", 0, ev, error)) << error;
+  ASSERT_TRUE(g.add(ev, error)) << error;
+  EXPECT_TRUE(g.has_reset());
+  EXPECT_FALSE(read_at(g, 1.4).reset);
+  EXPECT_TRUE(read_at(g, 1.9).reset);
+  EXPECT_FALSE(read_at(g, 2.0).reset);
+  EXPECT_TRUE(read_at(g, 3.2).reset);  // the default 0.25 s press
+  EXPECT_FALSE(read_at(g, 3.25).reset);
+}
+
+TEST(ScriptedGpio, CountsWatchdogEdgesAtTheLastReadTime) {
+  ScriptedGpio g;
+  read_at(g, 0.5);
+  g.set_watchdog(true);
+  g.set_watchdog(true);  // no edge
+  read_at(g, 0.75);
+  g.set_watchdog(false);
+  EXPECT_EQ(g.watchdog_changes(), 2u);
+  EXPECT_EQ(g.watchdog_last_change_s(), 0.75);
+}
+
 TEST(ScriptedGpio, EventsAddedOutOfOrderApplyInTimeOrder) {
   ScriptedGpio g;
   ASSERT_TRUE(g.estop_at(2.0, false));

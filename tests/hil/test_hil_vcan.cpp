@@ -387,7 +387,9 @@ TEST(HilVcan, KerfRunCutsAJobOnDrivesInAnotherProcess) {
   const std::string cfg = dir + "/kerf_run_can.toml", report = dir + "/kerf_run_can.json";
   std::FILE* f = std::fopen(cfg.c_str(), "w");
   ASSERT_NE(f, nullptr);
-  std::fputs("[machine]\ncycle = 0.004\n[link]\nkind = \"can\"\niface = \"vcan0\"\nnode_ids = [1, 2]\nsync_ms = 2\n"
+  // ferror: the drives run in another process on a shared host, whose
+  // scheduling can hold back their replies by tens of ms (no RT kernel).
+  std::fputs("[machine]\ncycle = 0.004\nferror = 5\nmin_ferror = 2\n[link]\nkind = \"can\"\niface = \"vcan0\"\nnode_ids = [1, 2]\nsync_ms = 2\n"
              "timeout = 2.0\n[cut]\npierce_delay = 0.1\nfeed = 6000\n[fit]\ntol = 0.05\n",
              f);
   std::fclose(f);

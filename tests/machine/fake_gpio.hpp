@@ -36,6 +36,11 @@ class FakeGpio final : public hal::Gpio {
     torch_ = on;
     return true;
   }
+  bool set_watchdog(bool level) override {
+    if (level != watchdog_) watchdog_changes.push_back(now_);
+    watchdog_ = level;
+    return true;
+  }
   const char* last_error() const override { return ""; }
   bool torch() const { return torch_; }
 
@@ -43,6 +48,7 @@ class FakeGpio final : public hal::Gpio {
   bool arc_works = true;
   bool arc_lost = false;
   std::vector<Change> changes;
+  std::vector<double> watchdog_changes;  // read times of each watchdog edge
 
  private:
   struct Event {
@@ -52,6 +58,7 @@ class FakeGpio final : public hal::Gpio {
   std::vector<Event> events_;
   double now_ = 0.0, torch_on_t_ = 0.0;
   bool torch_ = false;
+  bool watchdog_ = false;
 };
 
 }  // namespace kerf::test

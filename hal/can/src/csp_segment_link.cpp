@@ -59,13 +59,16 @@ bool CspSegmentLink::configure(std::string& error) {
   for (int a = 0; a < 2; ++a) target_[a] = axes_.axis(static_cast<std::size_t>(a)).actual;
   position_ = {static_cast<double>(target_[0]) / cfg_.counts_per_mm.x,
                static_cast<double>(target_[1]) / cfg_.counts_per_mm.y};
+  actual_ = position_;
+  for (auto& s : sent_) s = {static_cast<std::int32_t>(target_[0]), static_cast<std::int32_t>(target_[1])};
   exec_.emplace(motion_, Span<SegmentCommand>{ring_.data(), ring_.size()}, position_);
   return true;
 }
 
 BoardStatus CspSegmentLink::status_locked() const {
   BoardStatus s = status_of(*exec_);
-  s.position = position_;  // the drives' actual positions
+  s.position = position_;  // the setpoint the drives' feedback answers
+  s.actual = actual_;      // the drives' 0x6064
   return s;
 }
 
@@ -171,8 +174,21 @@ void CspSegmentLink::cycle() {
   lock.lock();
   const AxisState& ax = axes_.axis(0);
   const AxisState& ay = axes_.axis(1);
-  position_ = {static_cast<double>(ax.actual) / cfg_.counts_per_mm.x,
-               static_cast<double>(ay.actual) / cfg_.counts_per_mm.y};
+  // 0x6064 from each TPDO, beside the setpoint of the SYNC it was sampled
+  // at: the pair the following error compares, whatever the bus delay. A
+  // drive silent for more than two SYNCs gives nothing to judge: its latest
+  // setpoint stands in for both, and its heartbeat names it.
+  const std::uint64_t c = axes_.counters().cycles;
+  sent_[c % sent_.size()] = {tx, ty};
+  std::int32_t cmd[2] = {tx, ty}, act[2] = {tx, ty};
+  for (int a = 0; a < 2; ++a) {
+    const AxisState& s = a == 0 ? ax : ay;
+    if (s.feedback_cycle + 2 < c) continue;
+    cmd[a] = sent_[s.feedback_cycle % sent_.size()][a];
+    act[a] = s.actual;
+  }
+  position_ = {cmd[0] / cfg_.counts_per_mm.x, cmd[1] / cfg_.counts_per_mm.y};
+  actual_ = {act[0] / cfg_.counts_per_mm.x, act[1] / cfg_.counts_per_mm.y};
   // At rest means the drives have caught up with the last setpoint.
   settled_ = ax.actual == tx && ay.actual == ty;
   if (err != AxisError::none) fault_locked(fault_bit(err), axes_.last_error());

@@ -43,6 +43,7 @@ class GpiodGpio final : public Gpio {
     if (torch_ != nullptr) api::line_set(torch_, torch_active_low_);
     for (Input& in : inputs_) api::line_release(in.line);
     api::line_release(torch_);
+    api::line_release(watchdog_);
     for (OpenChip& c : chips_) api::chip_close(c.chip);
   }
   GpiodGpio(const GpiodGpio&) = delete;
@@ -75,21 +76,29 @@ class GpiodGpio final : public Gpio {
     return false;
   }
 
+  bool set_watchdog(bool level) override {
+    if (watchdog_ == nullptr || api::line_set(watchdog_, level != watchdog_active_low_)) return true;
+    std::snprintf(error_, sizeof error_, "gpio: watchdog: setting its line failed: %s", std::strerror(errno));
+    return false;
+  }
+
   const char* last_error() const override { return error_; }
 
  private:
-  // Slots: 0 arc_ok, 1 estop, 2 hold, 3 cycle_start, 4 + i limit i.
+  // Slots: 0 arc_ok, 1 estop, 2 hold, 3 cycle_start, 4 reset, 5 + i limit i.
   static bool& field(GpioInputs& in, int slot) {
     switch (slot) {
       case 0: return in.arc_ok;
       case 1: return in.estop;
       case 2: return in.hold;
       case 3: return in.cycle_start;
-      default: return in.limit[static_cast<std::size_t>(slot - 4)];
+      case 4: return in.reset;
+      default: return in.limit[static_cast<std::size_t>(slot - 5)];
     }
   }
   static int slot_of(const LineRole& r) {
-    if (r.limit_index >= 0) return 4 + r.limit_index;
+    if (r.limit_index >= 0) return 5 + r.limit_index;
+    if (r.role == "reset") return 4;
     if (r.role == "arc_ok") return 0;
     if (r.role == "estop") return 1;
     if (r.role == "hold") return 2;
@@ -106,7 +115,8 @@ class GpiodGpio final : public Gpio {
   std::vector<OpenChip> chips_;
   std::vector<Input> inputs_;
   api::Line* torch_ = nullptr;
-  bool torch_active_low_ = false;
+  api::Line* watchdog_ = nullptr;
+  bool torch_active_low_ = false, watchdog_active_low_ = false;
   int torch_offset_ = -1;
   std::string torch_chip_;
   char error_[200] = {};
@@ -205,6 +215,11 @@ bool GpiodGpio::request(const LineRole& r, OpenChip& chip, int offset, std::stri
                                             api::line_consumer(chip.chip, offset))
                          : gpio_lines::request_failed(r.role, chip.info.name, offset, err);
     return false;
+  }
+  if (r.output && r.role == "watchdog") {
+    watchdog_ = line;
+    watchdog_active_low_ = r.cfg->active_low;
+    return true;
   }
   if (r.output) {
     torch_ = line;

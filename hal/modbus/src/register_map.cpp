@@ -47,6 +47,9 @@ void encode_status(const BoardStatus& st, std::uint16_t* r) {
   std::int32_t x = 0, y = 0;
   to_units(st.position.x, x);
   to_units(st.position.y, y);
+  std::int32_t ax = 0, ay = 0;
+  to_units(st.actual.x, ax);
+  to_units(st.actual.y, ay);
   r[kRegVersion] = kMapVersion;
   r[kRegState] = static_cast<std::uint16_t>(st.state);
   r[kRegCredit] = st.credit;
@@ -58,6 +61,8 @@ void encode_status(const BoardStatus& st, std::uint16_t* r) {
   put32(r + kRegPosY, static_cast<std::uint32_t>(y));
   r[kRegTorch] = st.torch ? 1 : 0;
   r[kRegDuplicates] = st.duplicates;
+  put32(r + kRegActualX, static_cast<std::uint32_t>(ax));
+  put32(r + kRegActualY, static_cast<std::uint32_t>(ay));
 }
 
 bool decode_status(const std::uint16_t* r, BoardStatus& st) {
@@ -73,6 +78,7 @@ bool decode_status(const std::uint16_t* r, BoardStatus& st) {
   st.position = {to_mm(get_i32(r + kRegPosX)), to_mm(get_i32(r + kRegPosY))};
   st.torch = r[kRegTorch] == 1;
   st.duplicates = r[kRegDuplicates];
+  st.actual = {to_mm(get_i32(r + kRegActualX)), to_mm(get_i32(r + kRegActualY))};
   return true;
 }
 

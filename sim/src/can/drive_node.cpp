@@ -297,7 +297,8 @@ void DriveNode::on_sync() {
     if (state_ == DriveState::operation_enabled) target_ = pending_target_;
   }
   // The plant: closes `lag_alpha` of the gap to the previous SYNC's command.
-  actual_exact_ += cfg_.lag_alpha * (static_cast<double>(command_) - actual_exact_);
+  if (injected_ != DriveFault::stall)
+    actual_exact_ += cfg_.lag_alpha * (static_cast<double>(command_) - actual_exact_);
   actual_ = static_cast<std::int32_t>(std::lround(actual_exact_));
   if (state_ == DriveState::operation_enabled) {
     command_ = target_;

@@ -1,7 +1,8 @@
-// hal::Gpio: the machine's discrete I/O. One output (the torch) and the
-// inputs the controller watches every cycle: arc-OK from the plasma source,
-// E-stop, limit switches, and the operator's feed-hold and cycle-start
-// buttons. Values here are logical (true = asserted): active-low wiring and
+// hal::Gpio: the machine's discrete I/O. The outputs: the torch and an
+// optional watchdog (a charge pump for an external safety relay: it toggles
+// every cycle while all is well). The inputs the controller watches every
+// cycle: arc-OK from the plasma source, E-stop, limit switches, the
+// operator's feed-hold, cycle-start and reset buttons. Values here are logical (true = asserted): active-low wiring and
 // debouncing are the backend's business, configured per line.
 #pragma once
 
@@ -34,6 +35,8 @@ struct GpioConfig {
   std::vector<GpioLineConfig> limits;  // at most kMaxLimitLines
   GpioLineConfig hold;            // feed-hold button
   GpioLineConfig cycle_start;     // resume after a hold
+  GpioLineConfig reset;           // unlatches the E-stop chain (its rising edge)
+  GpioLineConfig watchdog;        // output: toggles every cycle while all is well
 };
 
 struct GpioInputs {
@@ -41,6 +44,7 @@ struct GpioInputs {
   bool estop = false;
   bool hold = false;
   bool cycle_start = false;
+  bool reset = false;
   std::uint8_t limit_count = 0;  // how many limit lines exist
   std::array<bool, kMaxLimitLines> limit{};
   bool any_limit() const {
@@ -58,6 +62,11 @@ class Gpio {
   virtual bool read(double now_s, GpioInputs& in) = 0;
   // Drives the torch output. False on an I/O error.
   virtual bool set_torch(bool on) = 0;
+  // Drives the watchdog output, when there is one (none: nothing to do). False on an I/O error.
+  virtual bool set_watchdog(bool level) {
+    (void)level;
+    return true;
+  }
   virtual const char* last_error() const = 0;
 };
 

@@ -42,7 +42,10 @@ struct BoardStatus {
   std::uint32_t last_accepted = 0; // highest sequence number queued
   std::uint32_t executing = 0;     // sequence number now running, 0 when none
   std::uint32_t last_executed = 0; // highest sequence number completed
-  Vec2<double> position{};         // mm
+  Vec2<double> position{};         // mm, commanded: where the interpolator has put the axes
+  // mm, measured (encoder, CiA 402 0x6064). A board without feedback reports
+  // its commanded position here; the controller checks the gap (following error).
+  Vec2<double> actual{};
   bool torch = false;
   std::uint16_t duplicates = 0;    // resends the board dropped (wraps)
 };

@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "kerf/hal/modbus/modbus_link.hpp"
+#include "kerf/sim/board_plant.hpp"
 #include "kerf/sim/motion_board.hpp"
 
 typedef struct _modbus modbus_t;  // NOLINT: libmodbus's own declaration
@@ -27,6 +28,9 @@ struct ServerConfig {
   // The board stops safely (torch off, fault) when no request arrives for
   // this long while it runs; 0 disables the watchdog.
   double watchdog_s = 0.0;
+  // Where the axes really are (registers 16..19); null: a board without
+  // feedback, which reports its commanded position there.
+  const BoardPlant* plant = nullptr;
 };
 
 class BoardServer {
@@ -58,6 +62,7 @@ class BoardServer {
   void run();
   void serve_one(int fd);
   void handle(const std::uint8_t* q, int len, int fd);
+  hal::BoardStatus board_status() const;  // the board's, with the plant's actual position
   void send_reply(const std::uint8_t* q, int len, int fd, int exception_code);
   bool wait_or_stop(double seconds);  // false when asked to stop
   double now() const;

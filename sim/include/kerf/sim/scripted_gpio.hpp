@@ -19,12 +19,12 @@
 namespace kerf::sim {
 
 struct GpioEvent {
-  enum class Kind : unsigned char { estop, limit, arc_lost, no_arc, hold, cycle_start };
+  enum class Kind : unsigned char { estop, limit, arc_lost, no_arc, hold, cycle_start, reset };
   double t_s = 0.0;
   Kind kind = Kind::estop;
   bool on = true;           // estop, limit: the level from t_s on
   int limit = -1;           // limit: which one
-  double duration_s = 0.0;  // hold, cycle_start: how long the button is down; 0: the default
+  double duration_s = 0.0;  // hold, cycle_start, reset: how long the button is down; 0: the default
 };
 
 // The script format (sim/README.md): one event per line, `AT_SECONDS EVENT
@@ -38,7 +38,7 @@ bool load_gpio_script(const std::string& path, std::size_t limit_count,
 // A fault from the command line, in `kerf sim --fault`'s KIND@SECONDS[:DURATION]
 // form: `estop@1.25` (on from then; with :D off again D seconds later),
 // `limit-N@T[:D]` likewise, `arc-lost@T`, `no-arc@T`, `hold@T[:D]`,
-// `cycle-start@T[:D]` (a press of D seconds, default press_s). Appends one or
+// `cycle-start@T[:D]`, `reset@T[:D]` (a press of D seconds, default press_s). Appends one or
 // two events to `out`; on error appends nothing.
 bool parse_gpio_fault(std::string_view spec, std::size_t limit_count,
                       std::vector<GpioEvent>& out, std::string& error);
@@ -71,6 +71,9 @@ class ScriptedGpio final : public hal::Gpio {
   bool no_arc_at(double t_s);
   bool hold_at(double t_s, double duration_s = 0.0);
   bool cycle_start_at(double t_s, double duration_s = 0.0);
+  bool reset_at(double t_s, double duration_s = 0.0);
+  // Whether the script presses reset at all (the machine then has a reset button).
+  bool has_reset() const;
 
   // Fault hooks: from this time on read() / set_torch() fail as an I/O error would.
   void fail_reads_from(double t_s) { fail_reads_from_ = t_s; }
@@ -81,6 +84,10 @@ class ScriptedGpio final : public hal::Gpio {
   // Takes effect at the time of the last read() (0 before the first): the
   // controller reads, decides, then drives, all in one cycle.
   bool set_torch(bool on) override;
+  // The watchdog output: its changes are counted, the last one timed.
+  bool set_watchdog(bool level) override;
+  std::uint64_t watchdog_changes() const { return watchdog_changes_; }
+  double watchdog_last_change_s() const { return watchdog_last_s_; }
   const char* last_error() const override { return error_.c_str(); }
 
   // Every change of the torch output, in order, at the time it took effect.
@@ -106,6 +113,10 @@ class ScriptedGpio final : public hal::Gpio {
   std::array<bool, hal::kMaxLimitLines> limits_{};
   double hold_from_ = 0.0, hold_until_ = 0.0;
   double cycle_from_ = 0.0, cycle_until_ = 0.0;
+  double reset_from_ = 0.0, reset_until_ = 0.0;
+  bool watchdog_ = false;
+  std::uint64_t watchdog_changes_ = 0;
+  double watchdog_last_s_ = -1.0;
 
   double fail_reads_from_;
   double fail_torch_from_;

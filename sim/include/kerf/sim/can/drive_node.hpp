@@ -28,6 +28,7 @@ enum class DriveFault : std::uint8_t {
   heartbeat_loss,  // the node goes silent: no heartbeat, no PDO, no SDO reply
   emcy,            // an internal fault: EMCY 0x2310 (overcurrent) and state fault
   enable_refused,  // "enable operation" is ignored: the drive stays switched on
+  stall,           // the axis jams: the actual position (0x6064) stops, the drive stays enabled
 };
 
 struct DriveCounters {

@@ -4,7 +4,8 @@
 // sequence numbers, credit, state machine) over core/motion's interpolator;
 // each SYNC period its setpoint goes out through a hal::AxisLink (axis 0 = x,
 // 1 = y; further axes hold their position). status() reports like the
-// board, with position the drives' actual positions; done waits until the
+// board, with actual the drives' 0x6064 from their TPDO and position the
+// setpoint of the SYNC that feedback was sampled at; done waits until the
 // drives hold the last setpoint.
 //
 // Time: cycle() runs one SYNC period. Tests call it by hand (virtual time);
@@ -13,6 +14,7 @@
 // paced by the AxisLink itself (SocketCAN: wall-clock SYNC).
 #pragma once
 
+#include <array>
 #include <condition_variable>
 #include <cstdint>
 #include <functional>
@@ -91,7 +93,9 @@ class CspSegmentLink final : public SegmentLink {
   bool settled_ = true;      // the drives' actual positions equal the last setpoint
   bool reset_axes_ = false;  // fault reset: the drives are reset by the next cycle
   std::int64_t target_[2]{};
-  Vec2<double> position_{};
+  Vec2<double> position_{};  // mm: the setpoint of the SYNC the feedback is from
+  Vec2<double> actual_{};    // mm: the drives' reported positions (0x6064)
+  std::array<std::array<std::int32_t, 2>, 4> sent_{};  // setpoints by SYNC cycle, modulo 4
   std::vector<CspSample> trace_;
   std::vector<std::uint32_t> executed_;
   char error_[240] = "";

@@ -19,7 +19,7 @@ struct ChipInfo {
 
 // One used line of the configuration, named as the errors name it.
 struct LineRole {
-  std::string role;  // "torch", "arc_ok", "estop", "limit 0", "hold", "cycle_start"
+  std::string role;  // "torch", "arc_ok", "estop", "limit 0", "hold", "cycle_start", "reset", "watchdog"
   const GpioLineConfig* cfg = nullptr;
   bool output = false;
   int limit_index = -1;  // limits only

@@ -10,12 +10,12 @@
 
 namespace kerf::hal::modbus_map {
 
-inline constexpr std::uint16_t kMapVersion = 1;
+inline constexpr std::uint16_t kMapVersion = 2;  // 2: the actual position (16..19)
 inline constexpr int kDefaultUnit = 17;
 
-// Status block: holding registers 0..15, read-only.
+// Status block: holding registers 0..19, read-only.
 inline constexpr int kStatusAddr = 0;
-inline constexpr int kStatusRegs = 16;
+inline constexpr int kStatusRegs = 20;
 // Command register, written with FC06.
 inline constexpr int kCommandAddr = 32;
 // Segment slots: k consecutive slots written in one FC16/FC23 queue k segments.
@@ -29,6 +29,7 @@ enum StatusReg : int {
   kRegVersion = 0, kRegState = 1, kRegCredit = 2, kRegFaults = 3,
   kRegLastAccepted = 4, kRegExecuting = 6, kRegLastExecuted = 8,
   kRegPosX = 10, kRegPosY = 12, kRegTorch = 14, kRegDuplicates = 15,
+  kRegActualX = 16, kRegActualY = 18,
 };
 // Offsets inside a slot.
 enum SlotReg : int {
