@@ -5,6 +5,8 @@
 #include <string>
 
 #include "control/fit_paths.hpp"
+#include "control/program_job.hpp"
+#include "job/gcode_program.hpp"
 #include "io/options.hpp"
 #include "job/fit_job.hpp"
 #include "machine/machine_factory.hpp"
@@ -35,10 +37,29 @@ int run_job(const RunOptions& opts, const char* who, RunCheck check, LinesOpener
   }
   if (opts.resume && opts.journal.empty()) return io::usage_error("--resume: needs --journal FILE");
   io::PointFile in;
-  if (!job::read_job(opts.job, cfg.fit.criterion, in)) return kExitUsage;
+  job::GcodeProgram prog;
+  job::MachineState state;
+  const bool gcode = job::is_gcode_path(opts.job);
+  if (gcode) {
+    if (!cfg.machine.state.empty() && !job::load_machine_state(cfg.machine.state, state, error)) {
+      std::fprintf(stderr, "%s: run: machine.state: %s\n", who, error.c_str());
+      return kExitUsage;
+    }
+    if (!job::read_gcode_program(opts.job, config::interp_settings(cfg, true), state, prog, error) ||
+        !control::machine_can_run(prog, error)) {
+      std::fprintf(stderr, "%s\n", error.c_str());
+      return kExitUsage;
+    }
+    for (const std::string& n : prog.interp.notes) std::fprintf(stderr, "%s: run: %s\n", who, n.c_str());
+  } else if (!job::read_job(opts.job, cfg.fit.criterion, in)) {
+    return kExitUsage;
+  }
   control::FittedJob fitted;
-  if (const int rc = control::fit_paths_or_say(in, cfg.fit.criterion, cfg.fit.tol, cfg.cut.feed / 60.0, fitted,
-                                               cfg.fit.numeric, &cfg.cut.rules);
+  if (const int rc = gcode ? control::fit_program_or_say(prog, cfg.fit.criterion, cfg.fit.tol, cfg.cut.feed / 60.0,
+                                                         cfg.machine.max_feed / 60.0, fitted, cfg.fit.numeric,
+                                                         &cfg.cut.rules)
+                           : control::fit_paths_or_say(in, cfg.fit.criterion, cfg.fit.tol, cfg.cut.feed / 60.0, fitted,
+                                                       cfg.fit.numeric, &cfg.cut.rules);
       rc != 0)
     return rc;
   // The devices before the journal: a new journal replaces the old one, which
@@ -56,8 +77,16 @@ int run_job(const RunOptions& opts, const char* who, RunCheck check, LinesOpener
   std::unique_ptr<control::Journal> journal;
   control::ResumePoint from;
   if (!control::open_journal(opts.journal, opts.resume, fitted.job, journal, from)) return kExitUsage;
-  return machine::run_on_machine(fitted.job, cfg, *link, *gpio, journal.get(), from, opts.resume, opts.report,
-                                 opts.reset);
+  const int rc = machine::run_on_machine(fitted.job, cfg, *link, *gpio, journal.get(), from, opts.resume, opts.report,
+                                         opts.reset, gcode ? &prog : nullptr);
+  // The offsets the program set are kept once it has run to its end (a
+  // stopped run leaves the machine state as it was).
+  if (gcode && rc == 0 && !cfg.machine.state.empty() &&
+      !job::save_machine_state(cfg.machine.state, prog.interp.state, error)) {
+    std::fprintf(stderr, "%s: run: machine.state: %s\n", who, error.c_str());
+    return kExitFailure;
+  }
+  return rc;
 }
 
 int run_run(const RunOptions& opts) { return run_job(opts, "kerf", machine::check_lines, machine::open_lines); }

@@ -142,6 +142,7 @@ bool parse(const std::string& text, const std::string& display_name, Config& out
   TableReader rt = section(root, "rt", empty);
   TableReader bench = section(root, "bench", empty);
   const bool has_link = parsed.table()["link"].is_table();
+  read_program(root, c.program, c.sim);
   if (!root.has("link"))
     problems.add(1, "link", "missing: the machine needs a link ([link] with kind = "
                             "\"modbus-tcp\", \"modbus-rtu\" or \"can\")");

@@ -7,10 +7,12 @@
 
 #include "config/cut_rules.hpp"
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
 #include "job/criterion.hpp"
+#include "job/gcode_interp.hpp"
 #include "kerf/hal/gpio.hpp"
 
 namespace kerf::config {
@@ -28,6 +30,7 @@ struct Machine {
   double jerk = 0;             // mm/s^3, 0: trapezoidal ramps
   double servo_period = 0.001; // s, the board's interpolation period, (0, 0.1]
   double cycle = 0.002;        // s, the controller's loop period, (0, 0.1]
+  std::string state;           // the machine state file (work offsets; job/machine_state.hpp); empty: none
   // Following error, mm, > 0 (LinuxCNC's FERROR/MIN_FERROR): the limit at
   // max_feed and at rest, linear in between; min_ferror <= ferror.
   double ferror = 1.0;
@@ -61,6 +64,20 @@ struct Cut {
   CutRules rules;                // holes, tight arcs, overcut, thc_lock (config/cut_rules.hpp)
 };
 
+// What the G-code interpreter takes from the configuration (config/program_section.cpp):
+// [tools] N = "material", [materials.NAME] feed/pierce_delay, [mcodes.MNNN]
+// action/output/seconds, [outputs] torch/mist/flood.
+struct Program {
+  std::map<int, job::Material> tool_material;
+  std::map<int, job::UserMcode> mcodes;
+  int torch_output = -1, mist_output = -1, flood_output = -1;
+};
+
+struct Sim {
+  double operator_delay = 1.0;   // s, >= 0: the simulated operator presses cycle-start after a pause
+  double start[2] = {0, 0};      // mm, where the simulated machine stands before the first move
+};
+
 struct Rt {
   int priority = 0;      // SCHED_FIFO priority 1..99; 0: do not ask
   bool lock_memory = false;
@@ -81,8 +98,13 @@ struct Config {
   Fit fit;
   Cut cut;
   Rt rt;
+  Program program;
+  Sim sim;
   Bench bench;
 };
+
+// The interpreter's settings from a configuration (strict: kerf run).
+job::InterpSettings interp_settings(const Config& c, bool strict);
 
 // The defaults above, as a config for the simulator (kerf sim without --config).
 Config defaults();

@@ -60,6 +60,7 @@ void read_machine(TableReader& r, Machine& m) {
   r.non_negative("jerk", m.jerk);
   r.positive_at_most("servo_period", m.servo_period, kMaxPeriod);
   r.positive_at_most("cycle", m.cycle, kMaxPeriod);
+  r.string("state", m.state);
   r.positive("ferror", m.ferror);
   r.positive("min_ferror", m.min_ferror);
   r.finish();

@@ -28,6 +28,8 @@ void read_gpio(TableReader& r, hal::GpioConfig& gpio, std::vector<LineUse>& uses
 void read_fit(TableReader& r, Fit& fit);
 void read_cut(TableReader& r, Cut& cut);
 void read_rt(TableReader& r, Rt& rt);
+// The interpreter's sections (program_section.cpp): [tools], [materials], [mcodes], [outputs], [sim].
+void read_program(TableReader& root, Program& p, Sim& sim);
 void read_bench(TableReader& r, Bench& bench);
 
 void check_machine(TableReader& machine, const Machine& m);

@@ -16,6 +16,7 @@ const char* to_string(State s) {
     case State::done: return "done";
     case State::fault: return "fault";
     case State::estop: return "estop";
+    case State::action: return "action";
   }
   return "unknown";
 }
@@ -55,8 +56,8 @@ __attribute__((format(printf, 1, 2))) std::string format(const char* fmt, ...) {
 
 Controller::Controller(const Job& job, const ControllerConfig& cfg, hal::SegmentLink& link,
                        hal::Gpio& gpio, Journal* journal)
-    : job_(job), cfg_(cfg), link_(link), gpio_(gpio), journal_(journal), latch_(cfg.reset_at_start),
-      ferror_(cfg.ferror) {}
+    : job_(job), cfg_(cfg), link_(link), gpio_(gpio), journal_(journal),
+      actions_(job, cfg.outputs, cfg.operator_delay_s), latch_(cfg.reset_at_start), ferror_(cfg.ferror) {}
 
 void Controller::start(const ResumePoint& from) {
   const std::size_t n = job_.segment_count();
@@ -66,6 +67,7 @@ void Controller::start(const ResumePoint& from) {
   report_.last_completed = static_cast<std::int64_t>(from.first) - 1;
   finished_ = false;
   have_status_ = false;
+  has_tail_ = false;
   std::size_t longest = 0;
   for (const CutPath& p : job_.paths) longest = p.segments.size() > longest ? p.segments.size() : longest;
   queue_.clear();
@@ -98,6 +100,11 @@ void Controller::start(const ResumePoint& from) {
   }
   std::size_t i = 0;
   path_ = job_.path_of(next_seg_, i);
+  // Resumed: the outputs the program set before this path are set again;
+  // its dwells, pauses and waits are not run again. The actions just
+  // before the path run only when nothing of it was cut (control/README.md).
+  first_actions_ = i == 0 && distance(pierce_at_, job_.paths[path_].start) < kSamePoint;
+  actions_.replay_outputs(first_actions_ ? path_ : path_ + 1);
 }
 
 std::int64_t Controller::job_segment_of(std::uint32_t seq) const {
@@ -268,7 +275,10 @@ void Controller::begin_travel(Vec2<double> to) {
   queue_.clear();
   sent_ = 0;
   started_ = finish_sent_ = false;
-  if (distance(st_.position, to) > kSamePoint) {
+  // From the end of the last segment sent (exact), not the board's position
+  // (rounded to counts): a path that starts where the last one ended needs
+  // no travel, and a travel a fraction of a count long would be empty on the board.
+  if (distance(has_tail_ ? tail_ : st_.position, to) > kSamePoint) {
     hal::SegmentCommand c;
     c.kind = SegmentKind::line;
     c.end = to;
@@ -280,6 +290,16 @@ void Controller::begin_travel(Vec2<double> to) {
 }
 
 void Controller::begin_pierce(double now_s) {
+  if (!job_.paths[path_].torch) {  // a dry-run path: no torch, no pierce
+    state_ = State::cutting;
+    if (!resume_after_pierce_) {
+      begin_cut();
+      pump();
+    } else if (link_ok(link_.command(hal::Command::resume))) {
+      resume_after_pierce_ = false;
+    }
+    return;
+  }
   state_ = State::piercing;
   arc_ok_t_ = -1.0;
   torch_on_t_ = now_s;
@@ -309,6 +329,8 @@ bool Controller::pump() {
     hal::BoardStatus s;
     if (!link_ok(link_.push(c, s))) return false;  // the same number goes again next cycle
     st_ = s;
+    tail_ = c.end;
+    has_tail_ = true;
     ++next_seq_;
     job_of_wire_.push_back(block_ == Block::cut ? static_cast<std::int64_t>(next_seg_ + sent_) : -1);
     block_last_seq_ = next_seq_;
@@ -330,19 +352,8 @@ void Controller::path_finished(double now_s) {
   set_torch(false, now_s);
   next_seg_ += queue_.size();
   ++path_;
-  if (path_ >= job_.paths.size()) {
-    state_ = State::done;
-    report_.state = State::done;
-    if (journal_ && !journal_->finished()) {
-      stop(State::fault, std::string("journal: ") + journal_->last_error(), now_s);
-      return;
-    }
-    report_.stopped_at = st_.position;
-    finished_ = true;
-    return;
-  }
-  pierce_at_ = job_.paths[path_].start;
-  begin_travel(pierce_at_);
+  if (path_ < job_.paths.size()) pierce_at_ = job_.paths[path_].start;
+  run_actions_or_travel(now_s);
 }
 
 void Controller::run_state(double now_s) {
@@ -370,7 +381,11 @@ void Controller::run_state(double now_s) {
         return;
       }
       base_ = next_seq_ = seen_executed_ = st_.last_accepted;
-      begin_travel(pierce_at_);
+      if (first_actions_) run_actions_or_travel(now_s);
+      else begin_travel(pierce_at_);
+      return;
+    case State::action:
+      if (actions_.step(now_s, start_pressed)) actions_done(now_s);
       return;
     case State::travel:
       if (hold_pressed) {
@@ -401,7 +416,7 @@ void Controller::run_state(double now_s) {
         return;
       }
       if (arc_ok_t_ < 0.0) arc_ok_t_ = now_s;
-      if (now_s - arc_ok_t_ < cfg_.pierce_delay_s) return;
+      if (now_s - arc_ok_t_ < pierce_delay()) return;
       if (resume_after_pierce_) {
         if (link_ok(link_.command(hal::Command::resume))) {
           resume_after_pierce_ = false;
@@ -413,7 +428,11 @@ void Controller::run_state(double now_s) {
       }
       return;
     case State::cutting:
-      if (!in_.arc_ok) {
+      if (resume_after_pierce_) {  // a dry-run path held: the resume command failed last cycle
+        if (link_ok(link_.command(hal::Command::resume))) resume_after_pierce_ = false;
+        return;
+      }
+      if (torch_ && !in_.arc_ok) {
         stop(State::fault,
              format("arc-OK lost while cutting segment %lld", static_cast<long long>(report_.last_completed + 1)),
              now_s);
@@ -433,7 +452,7 @@ void Controller::run_state(double now_s) {
     case State::feed_hold:
       if (held_from_ == State::cutting && hold_braking_) {
         // The cut goes on while the axes brake; the torch goes off once they stop.
-        if (!in_.arc_ok) {
+        if (torch_ && !in_.arc_ok) {
           stop(State::fault, "arc-OK lost during a feed hold", now_s);
           return;
         }

@@ -35,6 +35,7 @@
 #include <vector>
 
 #include "control/job.hpp"
+#include "control/job_actions.hpp"
 #include "control/following_error.hpp"
 #include "control/journal.hpp"
 #include "control/safety_latch.hpp"
@@ -43,7 +44,8 @@
 
 namespace kerf::control {
 
-enum class State : std::uint8_t { idle, ready, travel, piercing, cutting, feed_hold, done, fault, estop };
+// action: the program's actions between paths (dwell, pause, outputs, waits; control/job_actions.hpp).
+enum class State : std::uint8_t { idle, ready, travel, piercing, cutting, feed_hold, done, fault, estop, action };
 const char* to_string(State s);
 
 struct ControllerConfig {
@@ -56,6 +58,10 @@ struct ControllerConfig {
   // in Fault once the link has been down for link_timeout_s.
   double link_watchdog_s = 0.5;
   double link_timeout_s = 1.0;
+  // A pause (M0/M1) ends on cycle-start; >= 0: a simulated operator presses it this long after (kerf sim).
+  double operator_delay_s = -1.0;
+  // The program's outputs and inputs (M62..M68, M66; not owned); null: none.
+  Outputs* outputs = nullptr;
   // The E-stop latch: the reset edge at start-up (kerf run --reset; the
   // simulator's operator), and whether a reset line exists (then a stop
   // waits latched for a reset instead of ending the run).
@@ -79,6 +85,7 @@ struct RunReport {
   Vec2<double> stopped_at{};          // board position once at rest
   std::uint64_t link_errors = 0;      // failed transactions (each retried next cycle)
   std::uint32_t pierces = 0;
+  std::vector<ActionEvent> actions;   // the program's actions run (dwell, pause, outputs, waits)
   // Safety: the last refused reset, resets accepted, watchdog toggles, and
   // the following error (largest seen; at a following-error fault, the gap
   // and the limit then).
@@ -131,6 +138,10 @@ class Controller {
   void stop(State s, const std::string& why, double now_s);
   void path_finished(double now_s);
   bool link_ok(hal::LinkError e);
+  void run_actions_or_travel(double now_s);  // the actions before paths[path_], then its travel
+  void actions_done(double now_s);
+  void finish_job(double now_s);
+  double pierce_delay() const;
   // controller_safety.cpp
   bool latch_cycle(double now_s, bool inputs_read);  // true: this cycle is the latch's (parked)
   void park_or_finish();                             // stopped and at rest
@@ -142,6 +153,8 @@ class Controller {
   hal::SegmentLink& link_;
   hal::Gpio& gpio_;
   Journal* journal_;
+  ActionRunner actions_;
+  bool first_actions_ = true;  // run the actions before the first path (false: resumed inside it)
 
   State state_ = State::idle;
   bool finished_ = false;
@@ -167,6 +180,8 @@ class Controller {
   std::size_t sent_ = 0;
   bool started_ = false, finish_sent_ = false;
   std::uint32_t block_last_seq_ = 0;
+  Vec2<double> tail_{};  // where the last segment sent ends
+  bool has_tail_ = false;
 
   // Where the job stands.
   std::size_t path_ = 0;        // current path

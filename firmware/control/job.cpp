@@ -61,6 +61,7 @@ JobId Job::id() const {
     f.number(p.start.x);
     f.number(p.start.y);
     f.number(static_cast<std::uint64_t>(p.segments.size()));
+    if (!p.torch) f.number(std::uint64_t{0xd27});  // a dry run is another job (point jobs keep their ids)
     for (const hal::SegmentCommand& s : p.segments) {
       f.number(static_cast<std::uint64_t>(s.kind == SegmentKind::arc ? 1 + (s.dir > 0) : 0));
       f.number(s.end.x);
@@ -70,6 +71,10 @@ JobId Job::id() const {
         f.number(s.centre.y);
       }
     }
+  }
+  for (const JobAction& a : actions) {
+    f.number(static_cast<std::uint64_t>(a.kind) << 32 | a.before_path);
+    f.number(a.value);
   }
   return {f.h, static_cast<std::uint32_t>(segment_count())};
 }

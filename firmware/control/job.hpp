@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "control/journal.hpp"
+#include "job/gcode_program.hpp"
 #include "kerf/hal/segment_link.hpp"
 
 namespace kerf::control {
@@ -16,10 +17,17 @@ namespace kerf::control {
 struct CutPath {
   Vec2<double> start{};                      // the pierce point
   std::vector<hal::SegmentCommand> segments; // end, centre, dir, feed; seq is set when sent
+  bool torch = true;                         // false: a dry-run path, run with the torch off
+  double pierce_delay_s = -1;                // < 0: the controller's (the material's otherwise)
 };
+
+// What a G-code program does between its paths, at rest: dwell, pause,
+// outputs, waits, tool change, feed %, end (job/gcode_program.hpp).
+using JobAction = job::ProgramAction;
 
 struct Job {
   std::vector<CutPath> paths;
+  std::vector<JobAction> actions;  // in order; each runs before paths[before_path] (or at the end)
 
   std::size_t segment_count() const;
   // The path holding job segment k, and k's index inside it.

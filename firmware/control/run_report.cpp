@@ -26,6 +26,11 @@ RunSummary summarise_run(const RunReport& r, std::size_t paths, const std::strin
   s.executed_total = journal ? journal->state().executed_total : r.completed_this_run;
   s.duplicates = journal ? journal->state().duplicates : 0;
   s.runs = journal ? journal->state().runs : 1;
+  s.actions = r.actions.size();
+  for (const ActionEvent& a : r.actions) {
+    s.dwells += a.kind == job::CanonKind::dwell;
+    s.pauses += a.kind == job::CanonKind::pause;
+  }
   return s;
 }
 
@@ -72,6 +77,21 @@ std::string format_run_json(const RunSummary& s) {
     }
     histogram += "]";
   }
+  std::string program;  // a G-code program's constructs, dry run and notes
+  if (s.gcode) {
+    program = "  \"dry_run\": " + std::string(s.dry_run ? "true" : "false") + ",\n  \"dwells\": " +
+              std::to_string(s.dwells) + ",\n  \"pauses\": " + std::to_string(s.pauses) + ",\n  \"actions\": " +
+              std::to_string(s.actions) + ",\n  \"constructs\": [";
+    for (std::size_t i = 0; i < s.constructs.size(); ++i) {
+      const ConstructUse& c = s.constructs[i];
+      program += std::string(i ? ", " : "") + "{\"name\": " + json_string(c.name) + ", \"handling\": \"" +
+                 c.handling + "\", \"count\": " + std::to_string(c.count) +
+                 ", \"first_line\": " + std::to_string(c.first_line) + "}";
+    }
+    program += "],\n  \"notes\": [";
+    for (std::size_t i = 0; i < s.notes.size(); ++i) program += (i ? ", " : "") + json_string(s.notes[i]);
+    program += "],\n";
+  }
   char buf[4096];
   std::snprintf(
       buf, sizeof buf,
@@ -88,7 +108,9 @@ std::string format_run_json(const RunSummary& s) {
       s.torch_off_valid ? point(s.torch_off_at).c_str() : "null", point(s.stopped_at).c_str(),
       static_cast<unsigned long long>(s.link_errors), s.board_duplicates, s.max_path_deviation_mm,
       s.duration_s, s.wall_s, s.rt.empty() ? "null" : json_string(s.rt).c_str(), histogram.c_str());
-  return buf;
+  std::string out = buf;
+  if (!program.empty()) out.insert(out.find("  \"link\":"), program);
+  return out;
 }
 
 std::string format_run_summary(const RunSummary& s) {
@@ -104,8 +126,23 @@ std::string format_run_summary(const RunSummary& s) {
                   s.duration_s, s.wall_s);
   else
     std::snprintf(tail, sizeof tail, "; %.3f s", s.duration_s);
-  return std::string(head) + tail + "; torch " + (s.torch_on ? "ON" : "off") +
-         (s.reason.empty() ? "" : "; stopped: " + s.reason) + "\n";
+  std::string program;
+  if (s.gcode) {
+    program = s.dry_run ? "; dry run (no M3/M4 in the program): torch off" : "";
+    if (s.actions > 0)
+      program += "; " + std::to_string(s.dwells) + " dwells, " + std::to_string(s.pauses) + " pauses, " +
+                 std::to_string(s.actions) + " program actions";
+  }
+  std::string out = std::string(head) + tail + program + "; torch " + (s.torch_on ? "ON" : "off") +
+                    (s.reason.empty() ? "" : "; stopped: " + s.reason) + "\n";
+  if (s.gcode && !s.constructs.empty()) {  // the constructs seen: NAME handling (count), ...
+    out += std::string("kerf ") + (s.simulated ? "sim" : "run") + ": G-code:";
+    for (std::size_t i = 0; i < s.constructs.size(); ++i)
+      out += (i ? ", " : " ") + s.constructs[i].name + " " + s.constructs[i].handling + " (" +
+             std::to_string(s.constructs[i].count) + ")";
+    out += "\n";
+  }
+  return out;
 }
 
 }  // namespace kerf::control

@@ -5,12 +5,20 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "control/controller.hpp"
 #include "control/journal.hpp"
 #include "kerf/geom/vec2.hpp"
 
 namespace kerf::control {
+
+// A G-code construct the program used and how kerf handled it.
+struct ConstructUse {
+  std::string name;      // "G54", "M6", "G64 P", "M67 E3 (feed %)" ...
+  std::string handling;  // run | recorded | ignored
+  std::size_t count = 0, first_line = 0;
+};
 
 struct RunSummary {
   bool simulated = true;  // kerf sim; false for kerf run (no trace, no simulated time)
@@ -37,6 +45,12 @@ struct RunSummary {
   double wall_s = 0.0;
   std::string rt;           // the cycle loop's statistics, when paced in real time
   std::string rt_histogram; // its wake-up lateness histogram, one bin per line
+  // A G-code program's (control/program_job.hpp describe_program).
+  bool gcode = false;
+  bool dry_run = false;     // no torch word: run with the torch off
+  std::vector<ConstructUse> constructs;
+  std::vector<std::string> notes;
+  std::size_t dwells = 0, pauses = 0, actions = 0;  // program actions run
 };
 
 // The summary's fields that come from the controller's report and the

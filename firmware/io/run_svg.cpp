@@ -77,6 +77,11 @@ void legend(std::string& out, const RunPlot& plot) {
   item("<line class=\"cut\" x1=\"0\" y1=\"0\" x2=\"20\" y2=\"0\"/>", "cut (torch on)");
   item("<line class=\"rapid\" x1=\"0\" y1=\"0\" x2=\"20\" y2=\"0\"/>", "rapid (torch off)");
   item("<circle class=\"pierce\" cx=\"10\" cy=\"0\" r=\"4\"/>", "pierce");
+  if (!plot.marks.empty()) {
+    item("<rect class=\"dwell\" x=\"6\" y=\"-4\" width=\"8\" height=\"8\"/>", "dwell");
+    item("<rect class=\"pause\" x=\"6\" y=\"-4\" width=\"8\" height=\"8\" transform=\"rotate(45 10 0)\"/>",
+         "pause");
+  }
   item("<rect class=\"on\" x=\"0\" y=\"-6\" width=\"20\" height=\"12\"/>", "torch on (speed)");
 }
 
@@ -154,6 +159,20 @@ double xy_panel(std::string& out, const RunPlot& plot, const std::vector<Run>& r
     attrs(out, {{"cx", m.px(tr[r.begin].pos.x)}, {"cy", m.py(tr[r.begin].pos.y)}});
     out += " r=\"4\"/>\n";
   }
+  for (const PlotMark& k : plot.marks) {  // a square for a dwell, the same turned 45 degrees for a pause
+    const double x = m.px(k.at.x), y = m.py(k.at.y);
+    out += "<rect class=\"" + k.kind + "\"";
+    attrs(out, {{"x", x - 4}, {"y", y - 4}});
+    out += " width=\"8\" height=\"8\"";
+    if (k.kind == "pause") {
+      out += " transform=\"rotate(45 ";
+      num_pair(out, x, " ", y);
+      out += ")\"";
+    }
+    out += "><title>";
+    for (const char c : k.text) out += c == '<' ? std::string("&lt;") : c == '&' ? std::string("&amp;") : std::string(1, c);
+    out += "</title></rect>\n";
+  }
   out += "</g>\n";
   return height;
 }
@@ -221,6 +240,8 @@ std::string format_run_svg(const RunPlot& plot) {
       ".rapid{fill:none;stroke:#999;stroke-width:1;stroke-dasharray:5 4}"
       ".pierce{fill:none;stroke:#d00;stroke-width:1.5}"
       ".on{fill:#ffe0b0;stroke:none}"
+      ".dwell{fill:#1f77b4;fill-opacity:0.7;stroke:#124}"
+      ".pause{fill:#ff9f1c;fill-opacity:0.8;stroke:#840}"
       ".speed{fill:none;stroke:#1f5fb4;stroke-width:1}",
       plot.title, [&](std::string& out) { legend(out, plot); },
       [&](std::string& body) { return xy_panel(body, plot, runs); },

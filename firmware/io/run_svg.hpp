@@ -37,12 +37,22 @@ struct TraceSample {
   bool torch = false;
 };
 
+// A program action at rest drawn on the XY panel: a dwell (class "dwell",
+// a blue square) or a pause (class "pause", an orange diamond), with its
+// text as the mark's <title>.
+struct PlotMark {
+  Vec2<double> at{};
+  std::string kind;  // "dwell" or "pause"
+  std::string text;
+};
+
 struct RunPlot {
   std::vector<std::vector<Vec2<double>>> paths;  // input points, per path
   std::vector<Segment<double>> pieces;           // fitted pieces, in job order
   std::vector<std::size_t> piece_path;           // path index of each piece
   double tol = 0;                                // band half-width, mm
   std::vector<TraceSample> trace;
+  std::vector<PlotMark> marks;                   // dwells and pauses
   std::string title;
 };
 

@@ -108,8 +108,8 @@ bool split_words(GBlock& b, Scratch& sc, std::string& reason) {
       return reason = "parameters (#n) are not supported", false;
     } else if (c == '[') {
       return reason = "expressions ([...]) are not supported", false;
-    } else if (is_alpha(c)) {
-      const char letter = static_cast<char>(c & ~0x20);
+    } else if (is_alpha(c) || c == '$') {  // '$': LinuxCNC's spindle (QtPlasmaC's tool head) select
+      const char letter = c == '$' ? '$' : static_cast<char>(c & ~0x20);
       if (letter == 'O') return reason = "O-words (subroutines, program numbers) are not supported", false;
       std::size_t j = i + 1;
       while (j < s.size() && is_blank(s[j])) ++j;
@@ -182,6 +182,11 @@ bool apply_block(GBlock& b, Scratch& sc, State& st, std::string& reason) {
   bool seen[26] = {};
   for (const GWord& w : sc.words) {
     const char L = w.letter;
+    if (L == '$') {  // a tool head select: kept for the interpreter, passed through by weld
+      sc.unknown.push_back(word_text(b, w));
+      other_words = true;
+      continue;
+    }
     if (L != 'G' && L != 'M') {
       if (seen[L - 'A']) return reason = std::string("word ") + L + " appears twice", false;
       seen[L - 'A'] = true;

@@ -2,7 +2,7 @@
 // polylines that `kerf weld` may replace with arcs.
 //
 // Supported: G0/G1/G2/G3 (I J or R arcs), G4, G17/G18/G19, G20/G21, G90/G91,
-// G92, F, S, T, P, N line numbers, `;` and `( )` comments, M3/M4/M5 (torch),
+// G92, F, S, T, P, N line numbers, `$n` (a spindle select, as an unknown word), `;` and `( )` comments, M3/M4/M5 (torch),
 // M7/M8/M9, M0/M1/M2/M30. Dialects: zero-padded words (G01, M03), bare modal
 // lines (X.. Y.. with no G word), blanks and tabs anywhere, lower case, CRLF,
 // CR or LF line ends, inch files (G20), a `%` tape mark.

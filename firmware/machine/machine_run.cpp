@@ -7,6 +7,7 @@
 
 #include "control/controller.hpp"
 #include "control/machine_config.hpp"
+#include "control/program_job.hpp"
 #include "control/run_report.hpp"
 #include "io/options.hpp"
 #include "io/output_file.hpp"
@@ -26,7 +27,7 @@ extern "C" void on_signal(int sig) { g_signal = sig; }
 
 int run_on_machine(const Job& job, const config::Config& cfg, hal::SegmentLink& link, hal::Gpio& gpio,
                    Journal* journal, const ResumePoint& from, bool resumed, const std::string& report,
-                   bool reset_at_start) {
+                   bool reset_at_start, const job::GcodeProgram* program) {
   using io::kExitFailure;
   using io::kExitOk;
   const hal::RtSetup rt = hal::rt_setup(cfg.rt.priority, cfg.rt.lock_memory);
@@ -68,6 +69,7 @@ int run_on_machine(const Job& job, const config::Config& cfg, hal::SegmentLink& 
   RunSummary sum =
       summarise_run(r, job.paths.size(), config::to_string(cfg.link.kind), resumed, journal);
   sum.simulated = false;
+  if (program != nullptr) control::describe_program(*program, sum);
   sum.torch_on = ctl.torch();
   sum.duration_s = now;  // on the loop's clock: overrun cycles are skipped, not counted
   sum.rt = loop.stats().describe();

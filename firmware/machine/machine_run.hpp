@@ -14,6 +14,7 @@
 #include "config/config.hpp"
 #include "control/job.hpp"
 #include "control/journal.hpp"
+#include "job/gcode_program.hpp"
 #include "kerf/hal/gpio.hpp"
 #include "kerf/hal/segment_link.hpp"
 
@@ -26,6 +27,7 @@ namespace kerf::machine {
 // then finishes the job.
 int run_on_machine(const control::Job& job, const config::Config& cfg, hal::SegmentLink& link, hal::Gpio& gpio,
                    control::Journal* journal, const control::ResumePoint& from, bool resumed, const std::string& report,
-                   bool reset_at_start = false);
+                   bool reset_at_start = false,
+                   const job::GcodeProgram* program = nullptr);
 
 }  // namespace kerf::machine

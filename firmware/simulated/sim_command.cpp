@@ -11,6 +11,8 @@
 
 #include "job/fit_job.hpp"
 #include "control/fit_paths.hpp"
+#include "control/program_job.hpp"
+#include "job/gcode_program.hpp"
 #include "io/options.hpp"
 #include "config/config.hpp"
 #include "simulated/can_sim_machine.hpp"
@@ -192,7 +194,23 @@ int run_sim(const SimOptions& given) {
   }
 
   io::PointFile in;
-  if (demo) {
+  job::GcodeProgram prog;
+  const bool gcode = !demo && job::is_gcode_path(opts.file);
+  if (gcode) {
+    // The simulator keeps the machine state in memory: it starts from the
+    // configured file's offsets (if any) and never writes it.
+    job::MachineState state;
+    if (!cfg.machine.state.empty() && !job::load_machine_state(cfg.machine.state, state, error)) {
+      std::fprintf(stderr, "kerf: sim: machine.state: %s\n", error.c_str());
+      return kExitUsage;
+    }
+    if (!job::read_gcode_program(opts.file, config::interp_settings(cfg, false), state, prog, error)) {
+      std::fprintf(stderr, "%s\n", error.c_str());
+      return kExitUsage;
+    }
+    for (const std::string& n : prog.interp.notes) std::fprintf(stderr, "kerf: sim: %s\n", n.c_str());
+    in = prog.points;
+  } else if (demo) {
     in = io::parse_points(kDemoJob, "<demo job>");
     if (!in.ok) {
       std::fprintf(stderr, "%s\n", io::describe_error(in).c_str());
@@ -202,7 +220,10 @@ int run_sim(const SimOptions& given) {
     return kExitUsage;
   }
   control::FittedJob fitted;
-  if (const int rc = control::fit_paths_or_say(in, *criterion, tol, feed / 60.0, fitted, *numeric, &cfg.cut.rules); rc != 0)
+  if (const int rc = gcode ? control::fit_program_or_say(prog, *criterion, tol, feed / 60.0, cfg.machine.max_feed / 60.0,
+                                                         fitted, *numeric, &cfg.cut.rules)
+                           : control::fit_paths_or_say(in, *criterion, tol, feed / 60.0, fitted, *numeric, &cfg.cut.rules);
+      rc != 0)
     return rc;
 
   std::unique_ptr<control::Journal> journal;
@@ -213,6 +234,9 @@ int run_sim(const SimOptions& given) {
   if (!gpio.add(events, error)) return io::usage_error("--fault: " + error);
 
   control::ControllerConfig ccfg = control::controller_config(cfg);
+  control::MemoryOutputs outputs;  // the program's outputs, recorded; its inputs stay low
+  ccfg.outputs = &outputs;
+  ccfg.operator_delay_s = cfg.sim.operator_delay;
   // A scripted reset press gives the simulated machine a reset button: a
   // stop then waits latched for it.
   ccfg.wait_for_reset = ccfg.wait_for_reset || gpio.has_reset();
@@ -231,11 +255,17 @@ int run_sim(const SimOptions& given) {
     extent = std::max({extent, std::abs(p.segment.end.x), std::abs(p.segment.end.y)});
   }
   const double paths = static_cast<double>(fitted.job.paths.size());
+  // The program's own waits (dwells, pauses, M66 timeouts) and its slowest feed.
+  double waits = 0.0;
+  for (const control::JobAction& a : fitted.job.actions)
+    waits += a.kind == job::CanonKind::pause ? cfg.sim.operator_delay + 1.0 : a.value > 0 ? a.value : 0.0;
+  for (const control::CutPath& p : fitted.job.paths)
+    for (const hal::SegmentCommand& c : p.segments) feed = std::min(feed, c.feed * 60.0);
   mcfg.max_sim_s = std::max(600.0, 3.0 * (cut_mm / (feed / 60.0) + paths * (4.0 * extent / (cfg.machine.rapid_feed / 60.0) +
                                                                              cfg.cut.arc_ok_timeout + cfg.cut.pierce_delay + 2.0)));
   // The axes power up at the job's first pierce point, as if homed there; a
   // resumed run starts there too and travels to its resume point.
-  mcfg.start = fitted.job.paths.front().start;
+  mcfg.start = gcode ? Vec2<double>{cfg.sim.start[0], cfg.sim.start[1]} : fitted.job.paths.front().start;
 
   SimMachineResult res;
   if (can) {
@@ -265,6 +295,7 @@ int run_sim(const SimOptions& given) {
   sum.wall_s = res.wall_s;
   sum.rt = res.rt;
   sum.rt_histogram = res.rt_histogram;
+  if (gcode) control::describe_program(prog, sum);
   if (!journal) {  // no journal: count repeats in this run's own record
     const std::set<std::int64_t> seen(res.executed.begin(), res.executed.end());
     sum.executed_total = res.executed.size();
@@ -284,6 +315,9 @@ int run_sim(const SimOptions& given) {
     plot.tol = tol;
     for (const sim::TraceSample& t : res.trace) plot.trace.push_back({t.t_s, t.pos, t.seq, t.torch});
     plot.title = "kerf sim: " + in.file + " (" + sum.state + ")";
+    for (const control::ActionEvent& a : res.run.actions)
+      if (a.kind == job::CanonKind::dwell || a.kind == job::CanonKind::pause)
+        plot.marks.push_back({a.at, a.kind == job::CanonKind::dwell ? "dwell" : "pause", a.what});
   }
   if (!write_or_say("--trace", opts.trace, format_trace_csv(res.trace)) ||
       !write_or_say("--report", opts.report, control::format_run_json(sum)) ||

@@ -156,6 +156,28 @@ const BadCase kCases[] = {
     {"first_problem_in_the_file_wins", TCP "[rt]\npriority = 100\n[machine]\naccel = 0\n",
      "kerf.toml:4: rt.priority: must be in 0..99, got 100"},
 
+    // The interpreter's sections: tools, materials, user M-codes, outputs, sim.
+    {"tool_without_material", TCP "[tools]\n1 = \"mild\"\n",
+     "kerf.toml:4: tools.1: no [materials.mild] section"},
+    {"tool_key_not_a_number", TCP "[materials.mild]\nfeed = 2000\n[tools]\nT1 = \"mild\"\n",
+     "kerf.toml:6: tools.T1: expected a tool number (0..99999) as the key"},
+    {"material_negative_pierce", TCP "[materials.mild]\npierce_delay = -1\n",
+     "kerf.toml:4: materials.mild.pierce_delay: must be >= 0, got -1"},
+    {"mcode_out_of_range", TCP "[mcodes.M99]\naction = \"ignore\"\n",
+     "kerf.toml:3: mcodes.M99: expected a user M-code M100..M199 as the key"},
+    {"mcode_bad_action", TCP "[mcodes.M101]\naction = \"blink\"\n",
+     "kerf.toml:4: mcodes.M101.action: expected on, off, dwell or ignore, got \"blink\""},
+    {"mcode_on_without_output", TCP "[mcodes.M101]\naction = \"on\"\n",
+     "kerf.toml:3: mcodes.M101.output: missing (the output number)"},
+    {"mcode_dwell_with_output", TCP "[mcodes.M101]\naction = \"dwell\"\nseconds = 1\noutput = 2\n",
+     "kerf.toml:6: mcodes.M101.output: only with action = \"on\" or \"off\""},
+    {"outputs_unknown_key", TCP "[outputs]\ntorch = 0\nplasma = 1\n",
+     "kerf.toml:5: outputs.plasma: unknown key"},
+    {"sim_operator_delay_negative", TCP "[sim]\noperator_delay = -1\n",
+     "kerf.toml:4: sim.operator_delay: must be >= 0, got -1"},
+    {"sim_start_one_number", TCP "[sim]\nstart = [1]\n",
+     "kerf.toml:4: sim.start: expected two numbers [x, y] (mm)"},
+
     // Non-ASCII where toml++ 3.3 tests for whitespace: undefined behaviour in
     // toml++ (found by tests/fuzz/fuzz_config), refused before it parses.
     {"non_ascii_after_key", TCP "[fit]\ntol\xd2\x96 = 0.05\n",
@@ -182,6 +204,30 @@ TEST(Config, NonAsciiInCommentsAndStringsIsAccepted) {
                     "kerf.toml", c, error))
       << error;
   EXPECT_EQ(c.link.iface, "can0");
+}
+
+TEST(Config, TheInterpretersSectionsAreRead) {
+  Config c;
+  std::string error;
+  ASSERT_TRUE(parse(TCP "[machine]\nstate = \"/var/lib/kerf/state\"\n[materials.mild]\nfeed = 2000\npierce_delay = 0.4\n"
+                        "[tools]\n1 = \"mild\"\n[mcodes.M101]\naction = \"dwell\"\nseconds = 0.5\n"
+                        "[outputs]\ntorch = 0\nmist = 3\n[sim]\noperator_delay = 0.2\nstart = [10, 2.5]\n",
+                    "kerf.toml", c, error))
+      << error;
+  EXPECT_EQ(c.machine.state, "/var/lib/kerf/state");
+  ASSERT_EQ(c.program.tool_material.count(1), 1u);
+  EXPECT_EQ(c.program.tool_material.at(1).feed_mm_min, 2000.0);
+  EXPECT_EQ(c.program.tool_material.at(1).pierce_delay_s, 0.4);
+  ASSERT_EQ(c.program.mcodes.count(101), 1u);
+  EXPECT_EQ(c.program.mcodes.at(101).action, job::UserMcode::Action::dwell);
+  EXPECT_EQ(c.program.mcodes.at(101).seconds, 0.5);
+  EXPECT_EQ(c.program.torch_output, 0);
+  EXPECT_EQ(c.program.mist_output, 3);
+  EXPECT_EQ(c.program.flood_output, -1);
+  EXPECT_EQ(c.sim.operator_delay, 0.2);
+  EXPECT_EQ(c.sim.start[0], 10.0);
+  EXPECT_EQ(c.sim.start[1], 2.5);
+  EXPECT_EQ(defaults().sim.operator_delay, 1.0);
 }
 
 INSTANTIATE_TEST_SUITE_P(Config, BadConfig, testing::ValuesIn(kCases),

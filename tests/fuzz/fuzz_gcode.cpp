@@ -1,7 +1,11 @@
 // The G-code reader (firmware/job/gcode_reader.hpp) on arbitrary bytes, then
-// the job built from it (`kerf sim`/`kerf run` on a G-code file). Either a
-// clear error or a file whose blocks and polylines keep the reader's
-// promises, and a job whose points keep the point file's.
+// the interpreter (job/gcode_interp.hpp: offsets, G92, G53, modes, tools,
+// program actions, user M-codes) with a configuration that maps a tool, user
+// M-codes and the torch output, then the program built from it (`kerf
+// sim`/`kerf run` on a G-code file). Either a clear error or a file whose
+// blocks and polylines keep the reader's promises, an interpreter state that
+// is sane (a selected system in range, finite offsets and positions, values
+// in their ranges), and a program whose paths and actions are consistent.
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -9,7 +13,80 @@
 #include <string_view>
 
 #include "fuzz_check.hpp"
+#include "job/gcode_program.hpp"
 #include "job/gcode_reader.hpp"
+
+namespace {
+
+using namespace kerf::job;
+
+InterpSettings fuzz_settings() {
+  InterpSettings s;
+  s.fit_tol = 0.025;
+  s.tool_material[1] = {"mild", 2000, 0.2};
+  s.mcodes[101] = {UserMcode::Action::on, 3, 0};
+  s.mcodes[102] = {UserMcode::Action::dwell, 0, 0.25};
+  s.mcodes[103] = {UserMcode::Action::ignore, 0, 0};
+  s.torch_output = 0;
+  s.mist_output = 1;
+  return s;
+}
+
+bool finite3(const double* v) { return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]); }
+
+void check_interpretation(const GcodeFile& g) {
+  const InterpSettings settings = fuzz_settings();
+  MachineState start;
+  start.g5x[1][0] = 10;  // a non-zero offset to start from
+  start.coord = 1;
+  Interpretation it;
+  std::string error;
+  if (!interpret(g, settings, start, it, error)) {
+    FUZZ_CHECK(!error.empty() && error.find(':') != std::string::npos, "a refused program without FILE:LINE");
+    return;
+  }
+  const MachineState& st = it.state;
+  FUZZ_CHECK(st.coord >= 0 && st.coord < kCoordSystems, "the selected coordinate system out of range");
+  for (const auto& o : st.g5x) FUZZ_CHECK(finite3(o), "a non-finite work offset");
+  FUZZ_CHECK(finite3(st.g92), "a non-finite G92 offset");
+  std::size_t line = 0;
+  for (const Canon& c : it.canon) {
+    FUZZ_CHECK(c.line >= line, "canonical moves out of line order");
+    line = c.line;
+    FUZZ_CHECK(finite3(c.end) && std::isfinite(c.centre[0]) && std::isfinite(c.centre[1]), "a non-finite move");
+    FUZZ_CHECK(c.feed_mm_min >= 0 || c.kind == CanonKind::traverse, "a negative feed");
+    if (c.kind == CanonKind::dwell) FUZZ_CHECK(c.value >= 0, "a negative dwell");
+    if (c.kind == CanonKind::feed_percent) FUZZ_CHECK(c.value >= 10 && c.value <= 100, "a feed % out of 10..100");
+    if (c.kind == CanonKind::tolerance) FUZZ_CHECK(c.value > 0 && c.value <= settings.fit_tol, "a G64 tolerance over fit.tol");
+    if (c.kind == CanonKind::wait_input) FUZZ_CHECK(c.mode >= 0 && c.mode <= 4, "an M66 mode out of 0..4");
+    if (c.kind == CanonKind::torch) FUZZ_CHECK(c.index == 0 || c.index == 1, "a torch neither on nor off");
+  }
+  for (const auto& [name, c] : it.constructs)
+    FUZZ_CHECK(c.count >= 1 && (c.handling == "run" || c.handling == "recorded" || c.handling == "ignored"),
+               "a construct without a use or a handling");
+  GcodeProgram prog;
+  if (!build_program(g, settings, it, prog, error)) {
+    FUZZ_CHECK(!error.empty(), "a program refused without a reason");
+    return;
+  }
+  FUZZ_CHECK(prog.paths.size() == prog.points.path_begin.size() && !prog.paths.empty(), "paths and their points");
+  FUZZ_CHECK(prog.point_feed.size() == prog.points.points.size(), "a feed for each point");
+  for (const double f : prog.point_feed) FUZZ_CHECK(f >= 0 && std::isfinite(f), "a negative or non-finite feed");
+  for (std::size_t k = 0; k < prog.paths.size(); ++k) {
+    const std::size_t b = prog.points.path_begin[k];
+    const std::size_t e = k + 1 < prog.paths.size() ? prog.points.path_begin[k + 1] : prog.points.points.size();
+    FUZZ_CHECK(e >= b + 2, "a path of fewer than two points");
+    FUZZ_CHECK(prog.paths[k].torch != prog.dry_run, "a torch path in a dry run, or a dry path in a cut");
+  }
+  std::size_t before = 0;
+  for (const ProgramAction& a : prog.actions) {
+    FUZZ_CHECK(a.before_path >= before && a.before_path <= prog.paths.size(), "actions out of order");
+    before = a.before_path;
+  }
+  for (const auto& q : prog.points.points) FUZZ_CHECK(std::isfinite(q.x) && std::isfinite(q.y), "a non-finite point");
+}
+
+}  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
@@ -33,6 +110,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         FUZZ_CHECK(std::isfinite(q.x) && std::isfinite(q.y), "a non-finite polyline point");
     }
   }
+  if (g.ok) check_interpretation(g);
   kerf::io::PointFile job;
   std::string error;
   if (kerf::job::gcode_job_from(g, job, error)) {

@@ -176,9 +176,25 @@ TEST(GcodeReader, UnknownWordsPassWeldButNotRun) {
   kerf::io::PointFile job;
   std::string error;
   EXPECT_FALSE(kerf::job::gcode_job_from(g, job, error));
-  EXPECT_EQ(error, "u.nc:3: unsupported word \"E1\"");
+  EXPECT_EQ(error, "u.nc:3: E words (extruder) are not supported");
   kerf::weld::WeldStats stats;
   EXPECT_EQ(weld(text, 0.01, "band", stats), text);  // nothing to weld, every line kept
+}
+
+// QtPlasmaC's torch select `$0`: a word the reader keeps (weld passes the
+// line through byte for byte), the interpreter's torch.
+TEST(GcodeReader, DollarToolHeadPassesWeldAndLightsTheTorch) {
+  const std::string text = "G0 X0 Y0\nM3 $0 S1\nG1 X1 Y0 F100\nM5 $0\n";
+  const GcodeFile g = parse_gcode(text, "d.nc");
+  ASSERT_TRUE(g.ok) << g.reason;
+  ASSERT_EQ(g.blocks[1].unknown.size(), 1u);
+  EXPECT_EQ(g.blocks[1].unknown[0], "$0");
+  kerf::weld::WeldStats stats;
+  EXPECT_EQ(weld(text, 0.01, "band", stats), text);
+  kerf::io::PointFile job;
+  std::string error;
+  ASSERT_TRUE(kerf::job::gcode_job_from(g, job, error)) << error;
+  EXPECT_EQ(job.path_begin.size(), 1u);
 }
 
 TEST(GcodeJob, TellsGcodeFilesByName) {
@@ -198,7 +214,7 @@ TEST(GcodeJob, ReadsAFileAndNamesItsErrors) {
   EXPECT_EQ(error, "no/such.nc: No such file or directory");
   // An FDM print: E words are not a cutting machine's.
   EXPECT_FALSE(kerf::job::read_gcode_job(std::string(KERF_TEST_DATA_DIR) + "/print/cncjs_octocat.gcode", job, error));
-  EXPECT_NE(error.find("cncjs_octocat.gcode:2: unsupported word \"E0\""), std::string::npos) << error;
+  EXPECT_NE(error.find("cncjs_octocat.gcode:2: E words (extruder) are not supported"), std::string::npos) << error;
 }
 
 TEST(GcodeJob, SplitsAtRapidsAndTorchOff) {

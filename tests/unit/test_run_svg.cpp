@@ -212,3 +212,30 @@ TEST(RunSvg, LongTraceIsDecimatedKeepingExtremes) {
 }
 
 }  // namespace
+
+namespace {
+
+// Dwells and pauses are marked where they happened, a square for a dwell and
+// the square turned 45 degrees for a pause, each with its text as a title.
+TEST(RunSvg, MarksDwellsAndPausesWhereTheyHappened) {
+  RunPlot plot;
+  plot.paths = {{V{0, 0}, V{10, 0}}};
+  plot.pieces = {Seg::line(V{0, 0}, V{10, 0})};
+  plot.piece_path = {0};
+  for (int i = 0; i <= 10; ++i) plot.trace.push_back({0.1 * i, V{static_cast<double>(i), 0}, 1, true});
+  plot.marks = {{V{10, 0}, "dwell", "dwell 0.5 s"}, {V{0, 0}, "pause", "pause (M0) & <go>"}};
+  const std::string xy = xy_part(format_run_svg(plot));
+  const std::vector<std::string> dx = attrs(xy, "<rect class=\"dwell\"", "x");
+  const std::vector<std::string> px = attrs(xy, "<rect class=\"pause\"", "x");
+  ASSERT_EQ(dx.size(), 1u);
+  ASSERT_EQ(px.size(), 1u);
+  EXPECT_GT(std::stod(dx[0]), std::stod(px[0]));  // the dwell at x = 10, right of the pause at 0
+  EXPECT_EQ(attrs(xy, "<rect class=\"pause\"", "transform").size(), 1u);
+  EXPECT_EQ(count(xy, "<title>dwell 0.5 s</title>"), 1u);
+  EXPECT_EQ(count(xy, "<title>pause (M0) &amp; &lt;go></title>"), 1u);
+  // No marks, no legend entry for them.
+  plot.marks.clear();
+  EXPECT_EQ(count(format_run_svg(plot), "class=\"dwell\""), 0u);
+}
+
+}  // namespace

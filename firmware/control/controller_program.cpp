@@ -1,0 +1,38 @@
+// The controller's steps between paths: the program's actions before the
+// next path (control/job_actions.hpp), then its travel, or the job's end.
+#include "control/controller.hpp"
+
+namespace kerf::control {
+
+void Controller::run_actions_or_travel(double now_s) {
+  actions_.begin(path_, now_s);
+  if (actions_.pending()) {
+    state_ = State::action;
+    return;
+  }
+  actions_done(now_s);
+}
+
+void Controller::actions_done(double now_s) {
+  report_.actions = actions_.log();
+  if (path_ < job_.paths.size()) begin_travel(pierce_at_);
+  else finish_job(now_s);
+}
+
+double Controller::pierce_delay() const {
+  const double d = path_ < job_.paths.size() ? job_.paths[path_].pierce_delay_s : -1.0;
+  return d >= 0.0 ? d : cfg_.pierce_delay_s;
+}
+
+void Controller::finish_job(double now_s) {
+  state_ = State::done;
+  report_.state = State::done;
+  if (journal_ && !journal_->finished()) {
+    stop(State::fault, std::string("journal: ") + journal_->last_error(), now_s);
+    return;
+  }
+  report_.stopped_at = st_.position;
+  finished_ = true;
+}
+
+}  // namespace kerf::control

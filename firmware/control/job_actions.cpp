@@ -1,0 +1,130 @@
+#include "control/job_actions.hpp"
+
+#include <cstdarg>
+#include <cstdio>
+
+namespace kerf::control {
+
+void MemoryOutputs::set_digital(int index, bool on) { digital.emplace_back(index, on); }
+void MemoryOutputs::set_analog(int index, double value) { analog.emplace_back(index, value); }
+bool MemoryOutputs::digital_input(int index) {
+  return index >= 0 && static_cast<std::size_t>(index) < inputs.size() && inputs[static_cast<std::size_t>(index)];
+}
+
+namespace {
+
+__attribute__((format(printf, 1, 2))) std::string text(const char* fmt, ...) {
+  char buf[120];
+  va_list args;
+  va_start(args, fmt);
+  std::vsnprintf(buf, sizeof buf, fmt, args);
+  va_end(args);
+  return buf;
+}
+
+}  // namespace
+
+void ActionRunner::begin(std::size_t path, double now_s) {
+  while (next_ < job_.actions.size() && job_.actions[next_].before_path < path) ++next_;
+  end_ = next_;
+  while (end_ < job_.actions.size() && job_.actions[end_].before_path == path) ++end_;
+  waiting_ = false;
+  started_ = now_s;
+}
+
+void ActionRunner::replay_outputs(std::size_t path) {
+  for (; next_ < job_.actions.size() && job_.actions[next_].before_path < path; ++next_) {
+    const JobAction& a = job_.actions[next_];
+    if (outputs_ == nullptr) continue;
+    if (a.kind == job::CanonKind::digital_out) outputs_->set_digital(a.index, a.value != 0);
+    if (a.kind == job::CanonKind::analog_out) outputs_->set_analog(a.index, a.value);
+  }
+}
+
+void ActionRunner::done(double now_s, const std::string& what) {
+  const JobAction& a = job_.actions[next_];
+  ActionEvent e;
+  e.t_s = started_;
+  e.duration_s = now_s - started_;
+  e.line = a.line;
+  e.kind = a.kind;
+  e.what = what;
+  e.at = a.at;
+  log_.push_back(e);
+  waiting_ = false;
+  ++next_;
+}
+
+bool ActionRunner::step(double now_s, bool cycle_start_pressed) {
+  while (next_ < end_) {
+    const JobAction& a = job_.actions[next_];
+    if (!waiting_) {
+      started_ = now_s;
+      if (start(a, now_s)) continue;
+      waiting_ = true;
+      if (a.kind == job::CanonKind::wait_input && outputs_ != nullptr) last_input_ = outputs_->digital_input(a.index);
+      cycle_start_pressed = false;  // a press before the pause does not end it
+    }
+    if (!poll(a, now_s, cycle_start_pressed)) return false;
+  }
+  return true;
+}
+
+bool ActionRunner::start(const JobAction& a, double now_s) {
+  switch (a.kind) {
+    case job::CanonKind::digital_out:
+      if (outputs_ != nullptr) outputs_->set_digital(a.index, a.value != 0);
+      done(now_s, "output " + std::to_string(a.index) + (a.value != 0 ? " on" : " off") +
+                      (a.sync ? " (with motion)" : " (immediate)"));
+      return true;
+    case job::CanonKind::analog_out:
+      if (outputs_ != nullptr) outputs_->set_analog(a.index, a.value);
+      done(now_s, text("analog output %d = %g", a.index, a.value));
+      return true;
+    case job::CanonKind::tool: done(now_s, "tool " + std::to_string(a.index)); return true;
+    case job::CanonKind::feed_percent: done(now_s, text("feed %g %%", a.value)); return true;
+    case job::CanonKind::end: done(now_s, "program end"); return true;
+    case job::CanonKind::wait_input:
+      if (a.mode == 0) {
+        const bool v = outputs_ != nullptr && outputs_->digital_input(a.index);
+        done(now_s, text("input %d read: %d", a.index, v ? 1 : 0));
+        return true;
+      }
+      return false;
+    case job::CanonKind::dwell:
+    case job::CanonKind::pause: return false;
+    default: done(now_s, "recorded"); return true;
+  }
+}
+
+bool ActionRunner::poll(const JobAction& a, double now_s, bool cycle_start_pressed) {
+  const double held = now_s - started_;
+  if (a.kind == job::CanonKind::dwell) {
+    if (held + 1e-9 < a.value) return false;
+    done(now_s, text("dwell %g s", a.value));
+    return true;
+  }
+  if (a.kind == job::CanonKind::pause) {
+    const bool simulated = operator_delay_s_ >= 0 && held + 1e-9 >= operator_delay_s_;
+    if (!cycle_start_pressed && !simulated) return false;
+    done(now_s, std::string(a.index == 0 ? "pause (M0)" : "pause (M1)") +
+                    (cycle_start_pressed ? ": cycle-start" : ": cycle-start (simulated operator)"));
+    return true;
+  }
+  // M66 L1..L4.
+  const bool v = outputs_ != nullptr && outputs_->digital_input(a.index);
+  const bool met = a.mode == 1 ? (v && !last_input_) : a.mode == 2 ? (!v && last_input_) : a.mode == 3 ? v : !v;
+  last_input_ = v;
+  const std::string head = "M66 P" + std::to_string(a.index) + " L" + std::to_string(a.mode);
+  if (met) {
+    done(now_s, head + ": met");
+    return true;
+  }
+  if (held + 1e-9 >= a.value) {
+    done(now_s, head + text(": timed out after %g s", a.value));
+    return true;
+  }
+  return false;
+}
+
+}  // namespace kerf::control

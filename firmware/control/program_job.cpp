@@ -1,0 +1,97 @@
+#include "control/program_job.hpp"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "control/cut_rules.hpp"
+#include "job/fit_job.hpp"
+
+namespace kerf::control {
+
+int fit_program_or_say(const job::GcodeProgram& prog, job::Criterion criterion, double tol, double feed_mm_s,
+                       double max_feed_mm_s, FittedJob& out, job::Numeric numeric,
+                       const config::CutRules* rules) {
+  out = FittedJob{};
+  const io::PointFile& in = prog.points;
+  const std::vector<std::size_t>& begins = in.path_begin;
+  // kept_before[k]: how many paths before program path k reach the job (a
+  // path shorter than the link's grid does not), for the actions' places.
+  std::vector<std::size_t> kept_before(begins.size() + 1, 0);
+  for (std::size_t p = 0; p < begins.size(); ++p) {
+    kept_before[p] = out.job.paths.size();
+    const std::size_t b = begins[p];
+    const std::size_t e = p + 1 < begins.size() ? begins[p + 1] : in.points.size();
+    const job::ProgramPath& pp = prog.paths[p];
+    // The path alone through fit_paths, at its own tolerance: the same fit
+    // and the same segments on the link's grid as a point file's.
+    io::PointFile one;
+    one.file = in.file;
+    one.points.assign(in.points.begin() + static_cast<std::ptrdiff_t>(b), in.points.begin() + static_cast<std::ptrdiff_t>(e));
+    one.point_lines.assign(in.point_lines.begin() + static_cast<std::ptrdiff_t>(b),
+                           in.point_lines.begin() + static_cast<std::ptrdiff_t>(e));
+    FittedJob f;
+    std::string error;
+    Status status = Status::ok;
+    if (!fit_paths(one, criterion, pp.tol > 0 ? std::min(pp.tol, tol) : tol, feed_mm_s, f, error, status, numeric)) {
+      if (f.job.paths.empty() && status == Status::invalid_argument && error.find("shorter than the link") != std::string::npos)
+        continue;  // a path shorter than a count: nothing to cut (kept_before counts it out)
+      if (error.compare(0, 7, "path 1 ") == 0) error = "path " + std::to_string(p + 1) + error.substr(6);
+      std::fprintf(stderr, "kerf: %s: %s\n", in.file.c_str(), error.c_str());
+      return status == Status::invalid_argument || status == Status::degenerate ? 2 : 1;
+    }
+    // Each segment at the slowest feed programmed along its piece (mm/min per point; 0: the default).
+    auto feed_of = [&](const fit::Piece<double>& piece) {
+      double v = 0;
+      for (std::size_t k = b + piece.first + 1; k <= b + piece.last && k < prog.point_feed.size(); ++k) {
+        const double f_k = prog.point_feed[k] > 0 ? prog.point_feed[k] / 60.0 : feed_mm_s;
+        v = v == 0 ? f_k : std::min(v, f_k);
+      }
+      if (v == 0) v = pp.feed_mm_min > 0 ? pp.feed_mm_min / 60.0 : feed_mm_s;
+      return std::min(v, max_feed_mm_s);
+    };
+    CutPath& path = f.job.paths.front();
+    path.torch = pp.torch;
+    path.pierce_delay_s = pp.pierce_delay_s;
+    for (std::size_t k = 0; k < path.segments.size(); ++k) {
+      path.segments[k].feed = feed_of(f.pieces[k]);
+      path.segments[k].torch = pp.torch;
+      out.pieces.push_back(f.pieces[k]);
+      out.piece_path.push_back(out.job.paths.size());
+    }
+    out.lines_for_arcs += f.lines_for_arcs;
+    out.job.paths.push_back(std::move(path));
+  }
+  kept_before[begins.size()] = out.job.paths.size();
+  if (out.job.paths.empty()) {
+    std::fprintf(stderr, "kerf: %s: every path is shorter than the link's resolution (0.001 mm)\n", in.file.c_str());
+    return 2;
+  }
+  out.job.actions = prog.actions;
+  for (JobAction& a : out.job.actions) a.before_path = kept_before[a.before_path];
+  if (rules) say_cut_rules(in.file, apply_cut_rules(out, *rules), *rules);
+  return 0;
+}
+
+bool machine_can_run(const job::GcodeProgram& prog, std::string& error) {
+  for (const JobAction& a : prog.actions) {
+    const char* what = a.kind == job::CanonKind::digital_out  ? "a digital output"
+                       : a.kind == job::CanonKind::analog_out ? "an analog output"
+                       : a.kind == job::CanonKind::wait_input ? "a wait on an input (M66)"
+                                                              : nullptr;
+    if (what == nullptr) continue;
+    error = prog.points.file + ":" + std::to_string(a.line) + ": " + what +
+            ": kerf run has no program output or input lines yet (only the torch); kerf sim runs it";
+    return false;
+  }
+  return true;
+}
+
+void describe_program(const job::GcodeProgram& prog, RunSummary& sum) {
+  sum.gcode = true;
+  sum.dry_run = prog.dry_run;
+  sum.notes = prog.interp.notes;
+  sum.constructs.clear();
+  for (const auto& [name, c] : prog.interp.constructs) sum.constructs.push_back({name, c.handling, c.count, c.first_line});
+}
+
+}  // namespace kerf::control

@@ -1,0 +1,176 @@
+#include "job/gcode_program.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace kerf::job {
+
+namespace {
+
+// Points along an arc from `from` (exclusive) to `to` (inclusive), chord
+// error below `chord` (mm), at most 100000 of them.
+void sample_arc(Vec2<double> from, Vec2<double> to, Vec2<double> c, bool ccw, double chord,
+                std::vector<Vec2<double>>& out) {
+  const double r = (from - c).norm();
+  const double a0 = std::atan2(from.y - c.y, from.x - c.x);
+  const double a1 = std::atan2(to.y - c.y, to.x - c.x);
+  const double two_pi = 2 * 3.14159265358979323846;
+  double sweep = ccw ? a1 - a0 : a0 - a1;
+  while (sweep <= 1e-12) sweep += two_pi;  // equal ends: a full circle
+  const double step = r > chord ? 2 * std::acos(1 - chord / r) : sweep;
+  constexpr double kMostPoints = 100000;
+  const double parts = step > 0 ? std::ceil(sweep / step) : kMostPoints;
+  const std::size_t n = static_cast<std::size_t>(std::clamp(parts, 1.0, kMostPoints));
+  for (std::size_t k = 1; k < n; ++k) {
+    const double a = a0 + (ccw ? 1 : -1) * sweep * static_cast<double>(k) / static_cast<double>(n);
+    out.push_back({c.x + r * std::cos(a), c.y + r * std::sin(a)});
+  }
+  out.push_back(to);
+}
+
+class Builder {
+ public:
+  Builder(const Interpretation& it, GcodeProgram& out) : it_(it), out_(out) {}
+
+  void run(const double start[2]) {
+    pos_ = {start[0], start[1]};
+    bool torch_word = false;
+    for (const Canon& c : it_.canon)
+      if (c.kind == CanonKind::torch && c.index == 1) torch_word = true;
+    out_.dry_run = !torch_word;
+    for (const Canon& c : it_.canon) step(c);
+    close();
+  }
+
+ private:
+  void close() {
+    io::PointFile& p = out_.points;
+    if (open_ && p.points.size() - path_start_ < 2) {  // a lone point: no path
+      p.points.resize(path_start_);
+      p.point_lines.resize(path_start_);
+      out_.point_feed.resize(path_start_);
+    } else if (open_) {
+      p.path_begin.push_back(path_start_);
+      out_.paths.push_back(cur_);
+    }
+    open_ = false;
+  }
+  void add(Vec2<double> q, std::size_t line, double feed) {
+    io::PointFile& p = out_.points;
+    if (p.points.size() > path_start_ && p.points.back() == q) {
+      ++p.duplicates_dropped;
+      return;
+    }
+    p.points.push_back(q);
+    p.point_lines.push_back(line);
+    out_.point_feed.push_back(feed);
+  }
+  void action(const Canon& c) {
+    close();
+    ProgramAction a;
+    a.kind = c.kind;
+    a.before_path = out_.paths.size();
+    a.line = c.line;
+    a.index = c.index;
+    a.mode = c.mode;
+    a.value = c.value;
+    a.sync = c.sync;
+    a.at = pos_;
+    out_.actions.push_back(a);
+  }
+  void step(const Canon& c) {
+    switch (c.kind) {
+      case CanonKind::torch:
+        if ((c.index == 1) != torch_) close();
+        torch_ = c.index == 1;
+        return;
+      case CanonKind::tolerance: tol_ = c.value; return;
+      case CanonKind::feed_percent: percent_ = c.value; return;  // applies to the moves after it
+      case CanonKind::tool:
+        if (c.value >= 0) pierce_ = c.value;  // the material's pierce delay
+        action(c);
+        return;
+      case CanonKind::dwell:
+      case CanonKind::pause:
+      case CanonKind::end:
+      case CanonKind::digital_out:
+      case CanonKind::analog_out:
+      case CanonKind::wait_input: action(c); return;
+      case CanonKind::traverse:
+      case CanonKind::feed:
+      case CanonKind::arc: move(c); return;
+    }
+  }
+  void move(const Canon& c) {
+    const Vec2<double> to{c.end[0], c.end[1]};
+    const bool z_change = c.end[2] != z_;
+    z_ = c.end[2];
+    const bool cutting = c.kind != CanonKind::traverse && (out_.dry_run || torch_) && !z_change;
+    if (!cutting) {
+      close();
+      pos_ = to;
+      return;
+    }
+    const double feed = c.feed_mm_min * percent_ / 100.0;
+    if (!open_) {
+      open_ = true;
+      path_start_ = out_.points.points.size();
+      cur_ = ProgramPath{};
+      cur_.torch = !out_.dry_run;
+      cur_.feed_mm_min = feed;
+      cur_.tol = tol_;
+      cur_.pierce_delay_s = pierce_;
+      add(pos_, c.line, feed);
+    }
+    if (c.kind == CanonKind::feed) {
+      add(to, c.line, feed);
+    } else {
+      arc_.clear();
+      sample_arc(pos_, to, {c.centre[0], c.centre[1]}, c.ccw, 0.001, arc_);
+      for (const Vec2<double>& q : arc_) add(q, c.line, feed);
+    }
+    pos_ = to;
+  }
+
+  const Interpretation& it_;
+  GcodeProgram& out_;
+  Vec2<double> pos_{};
+  double z_ = 0;
+  bool torch_ = false, open_ = false;
+  double percent_ = 100, tol_ = 0, pierce_ = -1;
+  std::size_t path_start_ = 0;
+  ProgramPath cur_;
+  std::vector<Vec2<double>> arc_;
+};
+
+}  // namespace
+
+bool build_program(const GcodeFile& g, const InterpSettings& settings, const Interpretation& it, GcodeProgram& out,
+                   std::string& error) {
+  out = GcodeProgram{};
+  out.points.file = g.file;
+  Builder(it, out).run(settings.start);
+  out.interp.constructs = it.constructs;  // not the canonical moves: the points hold them
+  out.interp.notes = it.notes;
+  out.interp.state = it.state;
+  if (out.paths.empty()) {
+    error = g.file + ": no cut moves (G1/G2/G3" + (out.dry_run ? std::string(")") : " with the torch on)");
+    return false;
+  }
+  out.points.ok = true;
+  return true;
+}
+
+bool read_gcode_program(const std::string& path, const InterpSettings& settings, const MachineState& state,
+                        GcodeProgram& out, std::string& error) {
+  const GcodeFile g = read_gcode(path);
+  if (!g.ok) {
+    error = describe_error(g);
+    return false;
+  }
+  Interpretation it;
+  if (!interpret(g, settings, state, it, error)) return false;
+  return build_program(g, settings, it, out, error);
+}
+
+}  // namespace kerf::job
