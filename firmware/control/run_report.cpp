@@ -26,6 +26,11 @@ RunSummary summarise_run(const RunReport& r, std::size_t paths, const std::strin
   s.executed_total = journal ? journal->state().executed_total : r.completed_this_run;
   s.duplicates = journal ? journal->state().duplicates : 0;
   s.runs = journal ? journal->state().runs : 1;
+  s.resets = r.resets;
+  s.reset_refused = r.reset_refused;
+  s.max_ferror_mm = r.max_ferror_mm;
+  s.ferror_at_fault_mm = r.ferror_at_fault_mm;
+  s.ferror_limit_mm = r.ferror_limit_mm;
   s.actions = r.actions.size();
   for (const ActionEvent& a : r.actions) {
     s.dwells += a.kind == job::CanonKind::dwell;
@@ -110,6 +115,12 @@ std::string format_run_json(const RunSummary& s) {
       s.duration_s, s.wall_s, s.rt.empty() ? "null" : json_string(s.rt).c_str(), histogram.c_str());
   std::string out = buf;
   if (!program.empty()) out.insert(out.find("  \"link\":"), program);
+  char ferror[160];
+  std::snprintf(ferror, sizeof ferror, "{\"max_mm\": %.6f, \"at_fault_mm\": %.6f, \"limit_at_fault_mm\": %.6f}",
+                s.max_ferror_mm, s.ferror_at_fault_mm, s.ferror_limit_mm);
+  out.insert(out.find("  \"link_errors\":"), "  \"resets\": " + std::to_string(s.resets) + ",\n  \"reset_refused\": " +
+                                                 (s.reset_refused.empty() ? "null" : json_string(s.reset_refused)) +
+                                                 ",\n  \"following_error\": " + ferror + ",\n");
   return out;
 }
 

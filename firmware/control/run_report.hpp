@@ -51,6 +51,12 @@ struct RunSummary {
   std::vector<ConstructUse> constructs;
   std::vector<std::string> notes;
   std::size_t dwells = 0, pauses = 0, actions = 0;  // program actions run
+  // Safety (controller.hpp RunReport): resets of the E-stop latch accepted,
+  // the last one refused (empty: none), and the following error: the largest
+  // seen, and at a following-error fault the gap and its limit then.
+  std::uint32_t resets = 0;
+  std::string reset_refused;
+  double max_ferror_mm = 0.0, ferror_at_fault_mm = 0.0, ferror_limit_mm = 0.0;
 };
 
 // The summary's fields that come from the controller's report and the

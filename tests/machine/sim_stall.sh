@@ -20,6 +20,10 @@ m = re.match(r"following error ([0-9.]+) mm on axis x \(limit ([0-9.]+) mm at ([
 if r["state"] != "fault" or not m or r["torch_on"]:
     print("FAIL:", sys.argv[1], json.dumps(r, indent=1)); raise SystemExit(1)
 err, limit, v = map(float, m.groups())
+fe = r["following_error"]  # the report's safety fields agree with the reason
+if not (fe["at_fault_mm"] > fe["limit_at_fault_mm"] > 0 and abs(fe["at_fault_mm"] - err) < 0.001
+        and fe["max_mm"] >= fe["at_fault_mm"] and r["resets"] == 1 and r["reset_refused"] is None):
+    print("FAIL: safety fields", json.dumps(r, indent=1)); raise SystemExit(1)
 # Caught within one 2 ms controller cycle of crossing the limit: the gap
 # grows by at most the axis speed times the cycle.
 if not (limit < err <= limit + v * 0.002 + 0.002):
