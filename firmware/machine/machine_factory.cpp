@@ -43,9 +43,16 @@ bool check_lines(const config::Config& cfg, std::string& error) {
   };
   // Outputs that light or feed a torch: none on a bench.
   const std::pair<const char*, const hal::GpioLineConfig*> torch_outputs[] = {{"gpio.torch", &cfg.gpio.torch}};
+  // The program's outputs that light the torch or feed it gas (M62-M65 on
+  // outputs.torch, M7/M8 on outputs.mist/flood).
+  const std::pair<const char*, int> program_outputs[] = {{"outputs.torch", cfg.program.torch_output},
+                                                         {"outputs.mist", cfg.program.mist_output},
+                                                         {"outputs.flood", cfg.program.flood_output}};
   if (cfg.bench.enabled) {
     for (const auto& [key, line] : torch_outputs)
       if (line->used) return refuse(key, "a bench ([bench] enabled = true) runs motion only: remove this output");
+    for (const auto& [key, number] : program_outputs)
+      if (number >= 0) return refuse(key, "a bench ([bench] enabled = true) runs motion only: remove this output");
   } else {
     const std::pair<const char*, const hal::GpioLineConfig*> cut_lines[] = {{"gpio.torch", &cfg.gpio.torch},
                                                                             {"gpio.arc_ok", &cfg.gpio.arc_ok}};
