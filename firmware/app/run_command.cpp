@@ -62,6 +62,10 @@ int run_job(const RunOptions& opts, const char* who, RunCheck check, LinesOpener
                                                        cfg.fit.numeric, &cfg.cut.rules);
       rc != 0)
     return rc;
+  // A bench has no torch: every path runs as a dry run (no pierce, no wait
+  // for arc-OK), so no safety input is ever stood in for in software.
+  if (cfg.bench.enabled)
+    for (control::CutPath& p : fitted.job.paths) p.torch = false;
   // The devices before the journal: a new journal replaces the old one, which
   // must not happen for a run that cannot even start.
   std::unique_ptr<hal::Gpio> gpio = open_lines(cfg, error);

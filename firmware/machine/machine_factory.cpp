@@ -3,7 +3,6 @@
 #include <utility>
 
 #include "control/machine_config.hpp"
-#include "machine/bench_gpio.hpp"
 #include "machine/can_link.hpp"
 #if KERF_HAVE_MODBUS
 #include "kerf/hal/modbus/modbus_link.hpp"
@@ -81,9 +80,7 @@ std::unique_ptr<hal::SegmentLink> open_link(const config::Config& cfg, std::stri
 
 std::unique_ptr<hal::Gpio> open_lines(const config::Config& cfg, std::string& error) {
 #if KERF_HAVE_GPIOD
-  std::unique_ptr<hal::Gpio> lines = hal::open_gpiod(cfg.gpio, error);
-  if (!lines || !cfg.bench.enabled) return lines;
-  return std::make_unique<BenchGpio>(std::move(lines), cfg.gpio.arc_ok.used);
+  return hal::open_gpiod(cfg.gpio, error);
 #else
   (void)cfg;
   error = "gpio: this build has no libgpiod (the target's libgpiod-dev was not found)";

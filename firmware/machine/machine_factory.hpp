@@ -25,7 +25,7 @@ bool check_lines(const config::Config& cfg, std::string& error);
 // Null with the reason when it cannot be made or this build has no backend.
 std::unique_ptr<hal::SegmentLink> open_link(const config::Config& cfg, std::string& error);
 
-// The configured lines (libgpiod), wrapped for a bench (bench_gpio.hpp).
+// The configured lines (libgpiod).
 // Null with the reason when a line cannot be had or this build has no libgpiod.
 std::unique_ptr<hal::Gpio> open_lines(const config::Config& cfg, std::string& error);
 

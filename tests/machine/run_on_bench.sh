@@ -50,6 +50,7 @@ check(r1["state"] == "fault" and r1["fault"] == "stopped by SIGTERM", "SIGTERM i
 check(r1["torch_on"] is False, "torch off after SIGTERM")
 check(r2["state"] == "done", "the resumed run finished")
 check(r1["bench"] is True and r2["bench"] is True, "the reports say bench")
+check(r1["pierces"] == 0 and r2["pierces"] == 0, "a bench never pierces: every path is a dry run")
 check(r2["segments_executed_total"] == r2["segments_planned"], "every segment once in all")
 check(r2["duplicates"] == 0, "no duplicates")
 check(r1["rt"] is not None and "overruns" in r1["rt"], "the loop's statistics are reported")
