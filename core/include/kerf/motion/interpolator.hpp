@@ -168,6 +168,7 @@ class Interpolator {
   S slow_step_{};
   S span_turn_{};   // turns of the joints the plan's last step crossed
   S span_kappa_{};  // and the largest |curvature| it ran on
+  S depart_step_{};  // the least corner_step of those joints: the next step's cap too
   std::size_t curved_count_ = 0;  // queued segments with a turn or curvature
   std::size_t curved_left_ = 0;   // S-curve: periods the head may still feel one
   S spin_max_{};                  // the largest spin pushed since reset
