@@ -19,7 +19,8 @@
 //   most sqrt(A^2 - c^2), c being the normal part over the period, computed
 //   from the joints and the curvature the period's chords span. The plan
 //   keeps to a joint's speed from one step before it, so the steps on both
-//   sides of it do.
+//   sides of it do, and for the step after one that crossed it (that
+//   step's chord turns at the joint: the pair's normal part is x s too).
 // - S-curve (jerk > 0): the trapezoidal path length s(t) is averaged over the
 //   last N = ceil(2 accel / (jerk period)) periods. A moving average of a
 //   profile whose step changes by at most A keeps that bound and changes the
