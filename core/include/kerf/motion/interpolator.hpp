@@ -19,7 +19,8 @@
 //   most sqrt(A^2 - c^2), c being the normal part over the period, computed
 //   from the joints and the curvature the period's chords span. The plan
 //   keeps to a joint's speed from one step before it, so the steps on both
-//   sides of it do.
+//   sides of it do, and for the step after one that crossed it (that
+//   step's chord turns at the joint: the pair's normal part is x s too).
 // - S-curve (jerk > 0): the trapezoidal path length s(t) is averaged over the
 //   last N = ceil(2 accel / (jerk period)) periods. A moving average of a
 //   profile whose step changes by at most A keeps that bound and changes the
@@ -168,6 +169,7 @@ class Interpolator {
   S slow_step_{};
   S span_turn_{};   // turns of the joints the plan's last step crossed
   S span_kappa_{};  // and the largest |curvature| it ran on
+  S depart_step_{};  // the least corner_step of those joints: the next step's cap too
   std::size_t curved_count_ = 0;  // queued segments with a turn or curvature
   std::size_t curved_left_ = 0;   // S-curve: periods the head may still feel one
   S spin_max_{};                  // the largest spin pushed since reset

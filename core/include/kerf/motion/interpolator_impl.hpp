@@ -29,7 +29,9 @@ Status Interpolator<S>::configure(const MotionConfig<S>& c) {
   accel_step_ = c.accel * c.period * c.period;
   jerk_step_ = c.jerk * c.period * c.period * c.period;
   rate_floor_ = tangential_step(accel_step_, accel_step_);
-  snap_ = accel_step_ * S(1e-9);
+  // Some units of Fixed's resolution at least (1e-9 A is below it): a point
+  // approach(w) before a joint must stay clear of the joint after rounding.
+  snap_ = max_of(accel_step_ * S(1e-9), S(16) * Scalar<S>::epsilon());
   window_n_ = n;
   configured_ = true;
   reset();
@@ -51,6 +53,7 @@ void Interpolator<S>::reset() {
   u_ = base_ = step_ = out_base_ = out_s_ = slow_until_ = S(0);
   plan_at_end_ = false;
   span_turn_ = span_kappa_ = spin_max_ = tail_kappa_ = S(0);
+  depart_step_ = Scalar<S>::infinity();
   curved_count_ = curved_left_ = 0;
   rate_floor_ = tangential_step(accel_step_, accel_step_);
   for (std::size_t i = 0; i < window_n_ && i < window_.size(); ++i) window_[i] = S(0);
@@ -174,6 +177,11 @@ S Interpolator<S>::plan_step() {
   span_ahead(x_hi, turn_up, kappa_up);
   S x = min_of(target, step_ + rate(x_hi, turn_up, kappa_up));
   if (base_ + u_ < slow_until_) x = min_of(x, slow_step_);  // just past a joint
+  // The chord of the last step spans the joints it crossed, so the pair of it
+  // and this step turns there too: this step keeps to their corner cap as
+  // well, else the normal part x (s + x kappa) outgrows the share k A that
+  // rate() leaves it (the arrival alone is capped by the look-ahead below).
+  x = min_of(x, depart_step_);
   // No point further away than the braking length of x (plus the approach of
   // a point slower than x) can limit x.
   const S reach = braking_length(x, S(0), rate_floor_) + approach(x);
@@ -224,6 +232,7 @@ void Interpolator<S>::advance_plan(S x) {
   u_ = u_ + x;
   span_turn_ = S(0);
   span_kappa_ = Scalar<S>::abs(queue_[lead_].curvature);
+  depart_step_ = Scalar<S>::infinity();
   for (;;) {
     const QueuedSegment<S>& f = queue_[lead_];
     const bool last = lead_ + 1 == queue_.size();
@@ -240,6 +249,8 @@ void Interpolator<S>::advance_plan(S x) {
     ++lead_;
     span_turn_ = span_turn_ + queue_[lead_].turn;
     span_kappa_ = max_of(span_kappa_, Scalar<S>::abs(queue_[lead_].curvature));
+    // a step that started on the joint has no turn within its chord
+    if (base_ > before) depart_step_ = min_of(depart_step_, queue_[lead_].corner_step);
     // The S-curve's head reaches the corner later: keep to the corner speed
     // for as long past it as before it.
     const S w = queue_[lead_].corner_step;
@@ -341,6 +352,7 @@ Setpoint<S> Interpolator<S>::step() {
   if (ended) {  // at rest: a segment pushed now starts from rest, with no joint behind it
     abort_ = hold_ = false;
     step_ = span_turn_ = span_kappa_ = S(0);
+    depart_step_ = Scalar<S>::infinity();
   }
   if (ended) last_.state = MotionState::done;
   else if (hold_ || abort_) last_.state = at_rest ? MotionState::held : MotionState::stopping;
