@@ -114,8 +114,8 @@ def jobs(kerf, emu, src, out):
     config = os.path.join(out, "sim_nm.toml")
     with open(config, "w") as f:
         f.write("".join(text))
-    runs = [("demo job", [])] + [(name, [os.path.join(src, "tests/data/gcode", name)])
-                                 for name in sys.argv[5:]]
+    # The demo job (kerf-sim sim with no file) when no corpus file is named.
+    runs = [(name, [os.path.join(src, "tests/data/gcode", name)]) for name in sys.argv[5:]] or [("demo job", [])]
     for name, job in runs:
         trace = os.path.join(out, "sim_trace.csv")
         subprocess.run(emu + [kerf, "sim", "--config", config, "--trace", trace,
