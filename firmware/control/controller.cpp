@@ -1,7 +1,8 @@
 #include "control/controller.hpp"
 
-#include <cstdarg>
 #include <cstdio>
+
+#include "control/format_text.hpp"
 
 namespace kerf::control {
 
@@ -41,15 +42,6 @@ std::string board_fault_text(std::uint16_t bits) {
   char hex[24];
   std::snprintf(hex, sizeof hex, " (bits 0x%04x)", static_cast<unsigned>(bits));
   return s + hex;
-}
-
-__attribute__((format(printf, 1, 2))) std::string format(const char* fmt, ...) {
-  char buf[240];
-  va_list args;
-  va_start(args, fmt);
-  std::vsnprintf(buf, sizeof buf, fmt, args);
-  va_end(args);
-  return buf;
 }
 
 }  // namespace
@@ -132,7 +124,7 @@ void Controller::cycle(double now_s) {
     } else if (in.any_limit()) {
       for (std::uint8_t i = 0; i < in.limit_count; ++i)
         if (in.limit[i]) {
-          trip = format("limit switch %u hit", static_cast<unsigned>(i));
+          trip = format_text("limit switch %u hit", static_cast<unsigned>(i));
           break;
         }
     }
@@ -197,7 +189,7 @@ bool Controller::poll_link(double now_s) {
       }
       if (down >= cfg_.link_timeout_s)
         stop(State::fault,
-             format("link down for more than %g s: ", cfg_.link_timeout_s) + link_.last_error(), now_s);
+             format_text("link down for more than %g s: ", cfg_.link_timeout_s) + link_.last_error(), now_s);
     }
     return false;
   }
@@ -406,10 +398,11 @@ void Controller::run_state(double now_s) {
       }
       if (!in_.arc_ok) {
         if (arc_ok_t_ >= 0.0) {
-          stop(State::fault, format("arc-OK lost during the pierce at (%.3f, %.3f)", pierce_at_.x, pierce_at_.y), now_s);
+          stop(State::fault, format_text("arc-OK lost during the pierce at (%.3f, %.3f)", pierce_at_.x, pierce_at_.y),
+               now_s);
         } else if (now_s - torch_on_t_ > cfg_.arc_ok_timeout_s) {
           stop(State::fault,
-               format("no arc-OK within %g s of torch on at the pierce at (%.3f, %.3f)", cfg_.arc_ok_timeout_s,
+               format_text("no arc-OK within %g s of torch on at the pierce at (%.3f, %.3f)", cfg_.arc_ok_timeout_s,
                       pierce_at_.x, pierce_at_.y),
                now_s);
         }
@@ -434,7 +427,7 @@ void Controller::run_state(double now_s) {
       }
       if (torch_ && !in_.arc_ok) {
         stop(State::fault,
-             format("arc-OK lost while cutting segment %lld", static_cast<long long>(report_.last_completed + 1)),
+             format_text("arc-OK lost while cutting segment %lld", static_cast<long long>(report_.last_completed + 1)),
              now_s);
         return;
       }

@@ -1,7 +1,6 @@
 #include "control/job_actions.hpp"
 
-#include <cstdarg>
-#include <cstdio>
+#include "control/format_text.hpp"
 
 namespace kerf::control {
 
@@ -10,19 +9,6 @@ void MemoryOutputs::set_analog(int index, double value) { analog.emplace_back(in
 bool MemoryOutputs::digital_input(int index) {
   return index >= 0 && static_cast<std::size_t>(index) < inputs.size() && inputs[static_cast<std::size_t>(index)];
 }
-
-namespace {
-
-__attribute__((format(printf, 1, 2))) std::string text(const char* fmt, ...) {
-  char buf[120];
-  va_list args;
-  va_start(args, fmt);
-  std::vsnprintf(buf, sizeof buf, fmt, args);
-  va_end(args);
-  return buf;
-}
-
-}  // namespace
 
 void ActionRunner::begin(std::size_t path, double now_s) {
   while (next_ < job_.actions.size() && job_.actions[next_].before_path < path) ++next_;
@@ -79,15 +65,15 @@ bool ActionRunner::start(const JobAction& a, double now_s) {
       return true;
     case job::CanonKind::analog_out:
       if (outputs_ != nullptr) outputs_->set_analog(a.index, a.value);
-      done(now_s, text("analog output %d = %g", a.index, a.value));
+      done(now_s, format_text("analog output %d = %g", a.index, a.value));
       return true;
     case job::CanonKind::tool: done(now_s, "tool " + std::to_string(a.index)); return true;
-    case job::CanonKind::feed_percent: done(now_s, text("feed %g %%", a.value)); return true;
+    case job::CanonKind::feed_percent: done(now_s, format_text("feed %g %%", a.value)); return true;
     case job::CanonKind::end: done(now_s, "program end"); return true;
     case job::CanonKind::wait_input:
       if (a.mode == 0) {
         const bool v = outputs_ != nullptr && outputs_->digital_input(a.index);
-        done(now_s, text("input %d read: %d", a.index, v ? 1 : 0));
+        done(now_s, format_text("input %d read: %d", a.index, v ? 1 : 0));
         return true;
       }
       return false;
@@ -101,7 +87,7 @@ bool ActionRunner::poll(const JobAction& a, double now_s, bool cycle_start_press
   const double held = now_s - started_;
   if (a.kind == job::CanonKind::dwell) {
     if (held + 1e-9 < a.value) return false;
-    done(now_s, text("dwell %g s", a.value));
+    done(now_s, format_text("dwell %g s", a.value));
     return true;
   }
   if (a.kind == job::CanonKind::pause) {
@@ -121,7 +107,7 @@ bool ActionRunner::poll(const JobAction& a, double now_s, bool cycle_start_press
     return true;
   }
   if (held + 1e-9 >= a.value) {
-    done(now_s, head + text(": timed out after %g s", a.value));
+    done(now_s, head + format_text(": timed out after %g s", a.value));
     return true;
   }
   return false;
