@@ -82,7 +82,7 @@ int run_job(const RunOptions& opts, const char* who, RunCheck check, LinesOpener
   control::ResumePoint from;
   if (!control::open_journal(opts.journal, opts.resume, fitted.job, journal, from)) return kExitUsage;
   const int rc = machine::run_on_machine(fitted.job, cfg, *link, *gpio, journal.get(), from, opts.resume, opts.report,
-                                         opts.reset, gcode ? &prog : nullptr);
+                                         opts.reset, gcode ? &prog : nullptr, &fitted.cut_rules);
   // The offsets the program set are kept once it has run to its end (a
   // stopped run leaves the machine state as it was).
   if (gcode && rc == 0 && !cfg.machine.state.empty() &&

@@ -68,7 +68,7 @@ void read_gpio(TableReader& r, hal::GpioConfig& gpio, std::vector<LineUse>& uses
   r.string("consumer", gpio.consumer);
   std::string chip;  // empty: lines by name are searched on every chip
   r.string("chip", chip);
-  static constexpr std::array<NamedLine, 7> kLines = {{
+  static constexpr std::array<NamedLine, 8> kLines = {{
       {"torch", &hal::GpioConfig::torch, true},
       {"arc_ok", &hal::GpioConfig::arc_ok, false},
       {"estop", &hal::GpioConfig::estop, false},
@@ -76,6 +76,7 @@ void read_gpio(TableReader& r, hal::GpioConfig& gpio, std::vector<LineUse>& uses
       {"cycle_start", &hal::GpioConfig::cycle_start, false},
       {"reset", &hal::GpioConfig::reset, false},
       {"watchdog", &hal::GpioConfig::watchdog, true},
+      {"thc_lock", &hal::GpioConfig::thc_lock, true},
   }};
   for (const auto& l : kLines) {
     if (const toml::table* t = r.table(l.key))

@@ -106,6 +106,11 @@ std::int64_t Controller::job_segment_of(std::uint32_t seq) const {
 
 void Controller::cycle(double now_s) {
   if (finished_) return;
+  cycle_steps(now_s);
+  drive_thc_lock();
+}
+
+void Controller::cycle_steps(double now_s) {
   // Inputs first, and the torch off before any link I/O when they trip.
   hal::GpioInputs in;
   std::string trip;

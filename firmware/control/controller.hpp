@@ -143,6 +143,9 @@ class Controller {
   void finish_job(double now_s);
   double pierce_delay() const;
   // controller_safety.cpp
+  void cycle_steps(double now_s);
+  // gpio.thc_lock follows the board's thc_lock while the torch is on, off otherwise.
+  void drive_thc_lock();
   bool latch_cycle(double now_s, bool inputs_read);  // true: this cycle is the latch's (parked)
   void park_or_finish();                             // stopped and at rest
   void restart_after_reset();
@@ -159,6 +162,7 @@ class Controller {
   State state_ = State::idle;
   bool finished_ = false;
   bool torch_ = false;
+  bool thc_lock_out_ = false;  // what gpio.thc_lock was last driven to
   RunReport report_;
   hal::GpioInputs in_{}, prev_in_{};
   hal::BoardStatus st_{};

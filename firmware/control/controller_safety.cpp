@@ -1,5 +1,5 @@
 // The controller's safety hooks (controller.hpp): the E-stop latch with its
-// reset and watchdog output, and the following-error check.
+// reset and watchdog output, the thc_lock output, and the following-error check.
 #include <cstdio>
 
 #include "control/controller.hpp"
@@ -55,6 +55,15 @@ bool Controller::latch_cycle(double now_s, bool inputs_read) {
     report_.reason_t_s = now_s;
   }
   return true;
+}
+
+void Controller::drive_thc_lock() {
+  const bool on = torch_ && have_status_ && st_.thc_lock;
+  if (on == thc_lock_out_) return;
+  thc_lock_out_ = on;
+  // An output that cannot be driven stops the job, as the watchdog's does.
+  if (!gpio_.set_thc_lock(on) && stop_request_.empty())
+    stop_request_ = std::string("gpio: ") + gpio_.last_error();
 }
 
 void Controller::park_or_finish() {

@@ -9,17 +9,10 @@
 #include <vector>
 
 #include "config/cut_rules.hpp"
+#include "control/cut_rule_note.hpp"
 #include "control/fit_paths.hpp"
 
 namespace kerf::control {
-
-struct CutRuleNote {
-  std::size_t path = 0;     // 0-based
-  std::string rule;         // "hole", "arc" or "overcut"
-  std::size_t segment = 0;  // 0-based within the path (hole: 0, overcut: its first)
-  double value = 0;         // hole: its size (mm); arc: its radius (mm); overcut: length (mm)
-  double feed_percent = 100;
-};
 
 // The largest extent (bounding box side) of a path, arcs' bulges included, mm.
 double path_size(const CutPath& path);

@@ -82,7 +82,10 @@ int fit_paths_or_say(const io::PointFile& in, job::Criterion criterion, double t
   std::string error;
   Status status = Status::ok;
   if (fit_paths(in, criterion, tol, feed_mm_s, out, error, status, numeric)) {
-    if (rules) say_cut_rules(in.file, apply_cut_rules(out, *rules), *rules);
+    if (rules) {
+      out.cut_rules = apply_cut_rules(out, *rules);
+      say_cut_rules(in.file, out.cut_rules, *rules);
+    }
     return 0;
   }
   std::fprintf(stderr, "kerf: %s: %s\n", in.file.c_str(), error.c_str());

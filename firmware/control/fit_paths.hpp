@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "config/cut_rules.hpp"
+#include "control/cut_rule_note.hpp"
 #include "control/job.hpp"
 #include "control/journal.hpp"
 #include "io/point_file.hpp"
@@ -24,6 +25,7 @@ struct FittedJob {
   std::vector<fit::Piece<double>> pieces;  // in job order
   std::vector<std::size_t> piece_path;     // the path of each piece
   std::size_t lines_for_arcs = 0;          // arcs too small for the link's grid, run as chords
+  std::vector<CutRuleNote> cut_rules;      // where the cutting rules applied (for the report)
 };
 
 // The grid every segment link carries: integer micrometres in 32 bits

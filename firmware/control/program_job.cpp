@@ -68,7 +68,10 @@ int fit_program_or_say(const job::GcodeProgram& prog, job::Criterion criterion, 
   }
   out.job.actions = prog.actions;
   for (JobAction& a : out.job.actions) a.before_path = kept_before[a.before_path];
-  if (rules) say_cut_rules(in.file, apply_cut_rules(out, *rules), *rules);
+  if (rules) {
+    out.cut_rules = apply_cut_rules(out, *rules);
+    say_cut_rules(in.file, out.cut_rules, *rules);
+  }
   return 0;
 }
 

@@ -121,6 +121,15 @@ std::string format_run_json(const RunSummary& s) {
   out.insert(out.find("  \"link_errors\":"), "  \"resets\": " + std::to_string(s.resets) + ",\n  \"reset_refused\": " +
                                                  (s.reset_refused.empty() ? "null" : json_string(s.reset_refused)) +
                                                  ",\n  \"following_error\": " + ferror + ",\n");
+  std::string rules = "  \"cut_rules\": [";
+  for (std::size_t i = 0; i < s.cut_rules.size(); ++i) {
+    const CutRuleNote& n = s.cut_rules[i];
+    char one[200];
+    std::snprintf(one, sizeof one, "%s{\"path\": %zu, \"rule\": %s, \"segment\": %zu, \"value_mm\": %.3f, \"feed_percent\": %g}",
+                  i ? ", " : "", n.path + 1, json_string(n.rule).c_str(), n.segment + 1, n.value, n.feed_percent);
+    rules += one;
+  }
+  out.insert(out.find("  \"link_errors\":"), rules + "],\n");
   return out;
 }
 
@@ -146,6 +155,16 @@ std::string format_run_summary(const RunSummary& s) {
   }
   std::string out = std::string(head) + tail + program + "; torch " + (s.torch_on ? "ON" : "off") +
                     (s.reason.empty() ? "" : "; stopped: " + s.reason) + "\n";
+  if (!s.cut_rules.empty()) {  // path N rule feed %, ...
+    out += std::string("kerf ") + (s.simulated ? "sim" : "run") + ": cut rules:";
+    for (std::size_t i = 0; i < s.cut_rules.size(); ++i) {
+      char one[96];
+      std::snprintf(one, sizeof one, "%s path %zu %s %g %%", i ? "," : "", s.cut_rules[i].path + 1,
+                    s.cut_rules[i].rule.c_str(), s.cut_rules[i].feed_percent);
+      out += one;
+    }
+    out += "\n";
+  }
   if (s.gcode && !s.constructs.empty()) {  // the constructs seen: NAME handling (count), ...
     out += std::string("kerf ") + (s.simulated ? "sim" : "run") + ": G-code:";
     for (std::size_t i = 0; i < s.constructs.size(); ++i)

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "control/controller.hpp"
+#include "control/cut_rule_note.hpp"
 #include "control/journal.hpp"
 #include "kerf/geom/vec2.hpp"
 
@@ -57,6 +58,8 @@ struct RunSummary {
   std::uint32_t resets = 0;
   std::string reset_refused;
   double max_ferror_mm = 0.0, ferror_at_fault_mm = 0.0, ferror_limit_mm = 0.0;
+  // Where the cutting rules applied (FittedJob::cut_rules): path, rule, feed %.
+  std::vector<CutRuleNote> cut_rules;
 };
 
 // The summary's fields that come from the controller's report and the

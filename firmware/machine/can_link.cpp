@@ -52,6 +52,7 @@ void read_can_link_options(const config::Config& cfg, CanLinkOptions& o) {
   if (!cfg.machine.axes.empty()) o.counts_per_mm.x = cfg.machine.axes[0].counts_per_mm;
   if (cfg.machine.axes.size() > 1) o.counts_per_mm.y = cfg.machine.axes[1].counts_per_mm;
   o.accel_mm_s2 = cfg.machine.accel;
+  o.vad = cfg.cut.rules.vad / 100.0;
 }
 
 std::uint8_t can_node_of(const CanLinkOptions& o, std::size_t axis) {
@@ -75,6 +76,7 @@ bool CanMasterLink::start(hal::CanBus& bus, const CanLinkOptions& o, bool wall_c
   hal::CspConfig c;
   c.counts_per_mm = o.counts_per_mm;
   c.accel_mm_s2 = o.accel_mm_s2;
+  c.vad = o.vad;
   c.corner_angle_rad = o.corner_angle_rad;
   c.queue_slots = o.queue_slots;
   csp_ = hal::CspSegmentLink::create(*master_, c, error);

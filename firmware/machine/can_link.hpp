@@ -25,6 +25,7 @@ struct CanLinkOptions {
   std::string iface;             // SocketCAN interface; the simulator: empty for its in-process bus
   Vec2<double> counts_per_mm{1000.0, 1000.0};  // x, y (a third axis: x's)
   double accel_mm_s2 = 2000.0;
+  double vad = 0.9;  // [cut] vad / 100: thc_lock below this fraction of the cut feed
   double corner_angle_rad = 0.05;
   std::size_t queue_slots = 32;
 };

@@ -27,7 +27,8 @@ extern "C" void on_signal(int sig) { g_signal = sig; }
 
 int run_on_machine(const Job& job, const config::Config& cfg, hal::SegmentLink& link, hal::Gpio& gpio,
                    Journal* journal, const ResumePoint& from, bool resumed, const std::string& report,
-                   bool reset_at_start, const job::GcodeProgram* program) {
+                   bool reset_at_start, const job::GcodeProgram* program,
+                   const std::vector<CutRuleNote>* cut_rules) {
   using io::kExitFailure;
   using io::kExitOk;
   const hal::RtSetup rt = hal::rt_setup(cfg.rt.priority, cfg.rt.lock_memory);
@@ -70,6 +71,7 @@ int run_on_machine(const Job& job, const config::Config& cfg, hal::SegmentLink& 
       summarise_run(r, job.paths.size(), config::to_string(cfg.link.kind), resumed, journal);
   sum.simulated = false;
   if (program != nullptr) control::describe_program(*program, sum);
+  if (cut_rules != nullptr) sum.cut_rules = *cut_rules;
   sum.torch_on = ctl.torch();
   sum.duration_s = now;  // on the loop's clock: overrun cycles are skipped, not counted
   sum.rt = loop.stats().describe();

@@ -10,8 +10,10 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "config/config.hpp"
+#include "control/cut_rule_note.hpp"
 #include "control/job.hpp"
 #include "control/journal.hpp"
 #include "job/gcode_program.hpp"
@@ -28,6 +30,7 @@ namespace kerf::machine {
 int run_on_machine(const control::Job& job, const config::Config& cfg, hal::SegmentLink& link, hal::Gpio& gpio,
                    control::Journal* journal, const control::ResumePoint& from, bool resumed, const std::string& report,
                    bool reset_at_start = false,
-                   const job::GcodeProgram* program = nullptr);
+                   const job::GcodeProgram* program = nullptr,
+                   const std::vector<control::CutRuleNote>* cut_rules = nullptr);  // for the report
 
 }  // namespace kerf::machine

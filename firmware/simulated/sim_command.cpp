@@ -295,6 +295,7 @@ int run_sim(const SimOptions& given) {
   sum.wall_s = res.wall_s;
   sum.rt = res.rt;
   sum.rt_histogram = res.rt_histogram;
+  sum.cut_rules = fitted.cut_rules;
   if (gcode) control::describe_program(prog, sum);
   if (!journal) {  // no journal: count repeats in this run's own record
     const std::set<std::int64_t> seen(res.executed.begin(), res.executed.end());

@@ -33,6 +33,7 @@ SimMachineConfig sim_machine_config(const config::Config& cfg) {
   m.rtu = cfg.link.kind == config::Link::Kind::modbus_rtu;
   m.motion.servo_period_s = cfg.machine.servo_period;
   m.motion.accel_mm_s2 = cfg.machine.accel;
+  m.motion.vad = cfg.cut.rules.vad / 100.0;  // [cut] vad is in %
   m.motion.counts_per_mm = cfg.machine.axes.empty() ? 1000.0 : cfg.machine.axes.front().counts_per_mm;
   m.cycle_s = cfg.machine.cycle;
   return m;
@@ -61,7 +62,7 @@ SimMachineResult run_sim_machine(const control::Job& job, const control::Control
     const hal::BoardStatus s = plant.truth();
     const std::int64_t k = ctl.job_segment_of(s.executing);
     res.trace.push_back({static_cast<double>(ticks) * servo, s.position,
-                         static_cast<std::uint32_t>(k < 0 ? 0 : k + 1), ctl.torch()});
+                         static_cast<std::uint32_t>(k < 0 ? 0 : k + 1), ctl.torch(), s.thc_lock});
     for (std::uint32_t q = last_executed + 1; q <= s.last_executed; ++q) {
       const std::int64_t done = ctl.job_segment_of(q);
       if (done >= 0) res.executed.push_back(done);

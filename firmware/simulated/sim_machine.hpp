@@ -54,7 +54,8 @@ struct SimMachineResult {
   std::string setup_error;              // the board or the link could not be started
   control::RunReport run;
   // One sample per servo period; `seq` is the job segment + 1 being run (0
-  // for a rapid or none), `torch` the torch output.
+  // for a rapid or none), `torch` the torch output, `thc_lock` the board's
+  // (gpio.thc_lock is it while the torch is on).
   std::vector<sim::TraceSample> trace;
   std::vector<std::int64_t> executed;   // job segments completed, in order
   hal::BoardStatus board{};             // the board's final status

@@ -24,11 +24,12 @@ double max_path_deviation(const std::vector<sim::TraceSample>& trace,
 }
 
 std::string format_trace_csv(const std::vector<sim::TraceSample>& trace) {
-  std::string out = "t_s,x_mm,y_mm,segment,torch\n";
+  std::string out = "t_s,x_mm,y_mm,segment,torch,thc_lock\n";
   char line[160];
   for (const sim::TraceSample& s : trace) {
-    std::snprintf(line, sizeof line, "%.6f,%.6f,%.6f,%u,%d\n", s.t_s, s.pos.x, s.pos.y,
-                  static_cast<unsigned>(s.seq), s.torch ? 1 : 0);
+    std::snprintf(line, sizeof line, "%.6f,%.6f,%.6f,%u,%d,%d\n", s.t_s, s.pos.x, s.pos.y,
+                  static_cast<unsigned>(s.seq), s.torch ? 1 : 0,
+                  s.thc_lock ? 1 : 0);
     out += line;
   }
   return out;

@@ -58,7 +58,8 @@ void MotionBoard::tick_locked() {
   const motion::BoardStep<double> e = exec_.step();
   ++ticks_;
   for (std::uint32_t s = e.completed_from + 1; s <= e.completed_to; ++s) executed_.push_back(s);
-  trace_.push_back({static_cast<double>(ticks_) * cfg_.servo_period_s, e.position, e.executing, e.torch});
+  trace_.push_back({static_cast<double>(ticks_) * cfg_.servo_period_s, e.position, e.executing, e.torch,
+                    e.thc_lock});
   changed_.notify_all();
 }
 

@@ -24,6 +24,7 @@ class InterpolatorExecutor final : public SegmentExecutor {
     mc.accel = cfg_.accel_mm_s2;
     mc.jerk = 0.0;
     mc.corner_angle = cfg_.corner_angle_rad;
+    mc.vad = cfg_.vad;
     mc.counts_per_mm = {cfg_.counts_per_mm, cfg_.counts_per_mm};
     if (motion_.configure(mc) != Status::ok) {
       why_not = "the motion configuration is out of range";

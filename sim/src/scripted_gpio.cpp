@@ -128,6 +128,12 @@ bool ScriptedGpio::set_watchdog(bool level) {
   return true;
 }
 
+bool ScriptedGpio::set_thc_lock(bool on) {
+  if (on != thc_lock_) thc_lock_timeline_.push_back({now_s_, on});
+  thc_lock_ = on;
+  return true;
+}
+
 bool ScriptedGpio::set_torch(bool on) {
   if (now_s_ >= fail_torch_from_) {
     error_ = "sim gpio: torch write failed (injected I/O error from t=" +

@@ -111,6 +111,27 @@ TEST_F(GpiodBackend, InputsAreActiveLowAndDebounced) {
   EXPECT_FALSE(in.limit[1]);
 }
 
+// gpio.thc_lock: its own output line, apart from the torch and the watchdog.
+TEST_F(GpiodBackend, ThcLockOutputBesideTheTorch) {
+  GpioConfig cfg;
+  cfg.torch = at("gpiochip0", 17);
+  cfg.thc_lock = at("gpiochip0", 20);
+  std::string error;
+  {
+    auto gpio = open_gpiod(cfg, error);
+    ASSERT_NE(gpio, nullptr) << error;
+    EXPECT_FALSE(line("/dev/gpiochip0", 20).level);
+    ASSERT_TRUE(gpio->set_thc_lock(true));
+    EXPECT_TRUE(line("/dev/gpiochip0", 20).level);
+    EXPECT_FALSE(line("/dev/gpiochip0", 17).level) << "thc_lock moved the torch";
+    ASSERT_TRUE(gpio->set_thc_lock(false));
+    EXPECT_FALSE(line("/dev/gpiochip0", 20).level);
+    line("/dev/gpiochip0", 20).fail_io = true;
+    EXPECT_FALSE(gpio->set_thc_lock(true));
+    EXPECT_EQ(std::string(gpio->last_error()).rfind("gpio: thc_lock: ", 0), 0u) << gpio->last_error();
+  }
+}
+
 TEST_F(GpiodBackend, ResetInputAndWatchdogOutputBesideTheOthers) {
   GpioConfig cfg;
   cfg.torch = at("gpiochip0", 17);

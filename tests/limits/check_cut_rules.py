@@ -3,12 +3,15 @@
 - kerf sim on a 20 mm and a 40 mm circle ([cut] defaults: holes below 32 mm
   at 60 %; overcut = 2): the 20 mm hole cruises at 60 % of the feed, the
   40 mm one at the full feed, the torch stays on for the circle plus 2 mm
-  past its start, and the summary names each rule where it applied;
+  past its start, the summary and the report JSON name each rule where it
+  applied (path, rule, feed %); the
+  trace's thc_lock column (vad = 80) is on exactly below 80 % of the feed;
 - kerf plan's thc_lock column: on at rest, off once the speed reaches 90 % of
   the feed, on again when it drops below, exactly where the speed says.
 
 usage: check_cut_rules.py KERF SOURCE_DIR OUT_DIR
 """
+import json
 import math
 import os
 import subprocess
@@ -47,7 +50,7 @@ def holes(kerf, src, out):  # kerf: the kerf-sim executable
                 feed = float(key.split("=")[1])
             text.append(line)
             if key == "[cut]":
-                text.append("overcut = 2\n")
+                text.append("overcut = 2\nvad = 80\n")
     config = os.path.join(out, "holes.toml")
     with open(config, "w") as f:
         f.write("".join(text))
@@ -59,6 +62,11 @@ def holes(kerf, src, out):  # kerf: the kerf-sim executable
     check("path 1: hole 20 mm < 32 mm: 60 % feed" in run.stderr, "the summary names the 20 mm hole")
     check("path 2: hole" not in run.stderr, "and not the 40 mm circle")
     check("path 1: overcut 2 mm past the start" in run.stderr, "and the overcut")
+    with open(os.path.join(out, "holes.json")) as f:
+        applied = [(r["path"], r["rule"], r["feed_percent"]) for r in json.load(f)["cut_rules"]]
+    check(applied == [(1, "hole", 60), (1, "overcut", 60)], f"the report's cut_rules: {applied}")
+    check("cut rules: path 1 hole 60 %, path 1 overcut 60 %" in run.stdout + run.stderr,
+          "and the run summary lists them")
     rows = read_trace(trace)
     period = float(rows[2]["t_s"]) - float(rows[1]["t_s"])
     p = [(float(r["x_mm"]), float(r["y_mm"])) for r in rows]
@@ -76,6 +84,23 @@ def holes(kerf, src, out):  # kerf: the kerf-sim executable
         # the polygon of setpoints is a little shorter than the arc: 1e-4 relative
         check(abs(on - circumference - extra) < 1e-4 * circumference + 1e-3,
               f"{name}: {on:.4f} mm with the torch on (circle {circumference:.4f} + {extra})")
+    # The board's thc_lock column, with [cut] vad = 80: on while the speed is
+    # below 80 % of the segment's feed (60 % of the feed on the hole).
+    wrong, between, edges = [], 0, 0
+    for k in range(1, len(p)):
+        if not torch[k] or rows[k]["segment"] == "0":
+            continue
+        limit = 0.8 * feed_mm_s * (0.6 if abs(p[k][0]) < 25 else 1.0)
+        v = math.dist(p[k], p[k - 1]) / period
+        if abs(v - limit) < 0.05:  # the printed digits decide
+            continue
+        between += limit < v < limit / 0.8 * 0.9
+        if (rows[k]["thc_lock"] == "1") != (v < limit):
+            wrong.append(k)
+        edges += rows[k]["thc_lock"] != rows[k - 1]["thc_lock"]
+    check(not wrong and between > 0 and edges >= 4,
+          f"sim trace thc_lock: on exactly below 80 % of the segment's feed ({len(wrong)} wrong, "
+          f"{between} samples between 80 and 90 %, {edges} transitions)")
 
 
 def thc_lock(kerf, src, out):

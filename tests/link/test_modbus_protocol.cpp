@@ -46,6 +46,42 @@ TEST(RegisterMap, SlotRoundTripsAndRefusesBadValues) {
   EXPECT_FALSE(hal::modbus_map::encode_slot(a, slot));
 }
 
+// Register 14 carries the torch (bit 0) and thc_lock (bit 1) independently;
+// any other bit, or the previous map version, is refused.
+TEST(RegisterMap, StatusRoundTripsTorchAndThcLock) {
+  namespace map = hal::modbus_map;
+  for (int bits = 0; bits < 4; ++bits) {
+    hal::BoardStatus st;
+    st.state = BoardState::running;
+    st.credit = 5;
+    st.executing = 70000;
+    st.position = {12.345, -6.789};
+    st.actual = {12.344, -6.788};
+    st.torch = (bits & 1) != 0;
+    st.thc_lock = (bits & 2) != 0;
+    std::uint16_t r[map::kStatusRegs] = {};
+    map::encode_status(st, r);
+    EXPECT_EQ(r[map::kRegVersion], 3);
+    EXPECT_EQ(r[map::kRegTorch], bits);
+    hal::BoardStatus back;
+    back.torch = !st.torch;
+    back.thc_lock = !st.thc_lock;
+    ASSERT_TRUE(map::decode_status(r, back));
+    EXPECT_EQ(back.torch, st.torch);
+    EXPECT_EQ(back.thc_lock, st.thc_lock);
+    EXPECT_EQ(back.executing, 70000u);
+    EXPECT_DOUBLE_EQ(back.position.x, 12.345);
+  }
+  hal::BoardStatus st;
+  std::uint16_t r[map::kStatusRegs] = {};
+  map::encode_status(st, r);
+  r[map::kRegTorch] = 4;  // a bit this map does not define
+  EXPECT_FALSE(map::decode_status(r, st));
+  map::encode_status(st, r);
+  r[map::kRegVersion] = 2;
+  EXPECT_FALSE(map::decode_status(r, st));
+}
+
 // Found by fuzzing (tests/fuzz/corpus/modbus/int32_min_end_y): a slot whose
 // coordinate is -2^31 um decoded, but the host's encoder refused the very
 // segment (its range stopped at -2^31 + 1). Every decoded slot encodes back.

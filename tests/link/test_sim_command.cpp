@@ -86,7 +86,7 @@ TEST_P(SimCommand, CleanJobIsExecutedOnceOnThePath) {
   // At 50 mm/s the path's ~350 mm take ~7 s of simulated time.
   EXPECT_GT(json_number(rep, "duration_s"), 6.0);
   const std::string trace = slurp(o.trace);
-  ASSERT_EQ(trace.rfind("t_s,x_mm,y_mm,segment,torch\n", 0), 0u);
+  ASSERT_EQ(trace.rfind("t_s,x_mm,y_mm,segment,torch,thc_lock\n", 0), 0u);
   std::istringstream lines(trace.substr(trace.find('\n') + 1));
   std::string line;
   unsigned previous = 0, samples = 0;

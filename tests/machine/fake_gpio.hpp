@@ -41,6 +41,11 @@ class FakeGpio final : public hal::Gpio {
     watchdog_ = level;
     return true;
   }
+  bool set_thc_lock(bool on) override {
+    if (on != thc_lock) thc_lock_changes.push_back({now_, on});
+    thc_lock = on;
+    return true;
+  }
   const char* last_error() const override { return ""; }
   bool torch() const { return torch_; }
 
@@ -49,6 +54,8 @@ class FakeGpio final : public hal::Gpio {
   bool arc_lost = false;
   std::vector<Change> changes;
   std::vector<double> watchdog_changes;  // read times of each watchdog edge
+  bool thc_lock = false;
+  std::vector<Change> thc_lock_changes;  // every edge of the thc_lock output
 
  private:
   struct Event {

@@ -220,5 +220,58 @@ TEST(KerfRunLatch, StartUpResetWithTheEStopAssertedIsRefusedAndSaysSo) {
   EXPECT_TRUE(gpio.watchdog_changes.empty()) << "the watchdog pumped while latched";
 }
 
+// [cut] vad reaches the board (80 % here, not the 0.9 default): its thc_lock
+// is on exactly while the speed is below 80 % of the 50 mm/s feed. The
+// controller's gpio.thc_lock follows it while the torch is on, off otherwise.
+TEST(ThcLockOutput, FollowsTheBoardWhileTheTorchIsOn) {
+  FakeGpio gpio;
+  simulated::SimMachineConfig m;
+  m.motion.vad = 0.8;
+  const auto r = simulated::run_sim_machine(l_then_arc(), cut_config(false), m, gpio, nullptr, {});
+  ASSERT_EQ(r.run.state, State::done) << r.run.reason;
+  const double period = r.trace[2].t_s - r.trace[1].t_s;
+  int checked = 0, between = 0;  // between: 40..45 mm/s, where 0.9 would differ
+  for (std::size_t k = 1; k < r.trace.size(); ++k) {
+    if (r.trace[k].seq == 0 || !r.trace[k].torch) continue;
+    const double v = distance(r.trace[k].pos, r.trace[k - 1].pos) / period;
+    if (std::fabs(v - 40.0) < 0.05) continue;  // the rounding of the step decides
+    EXPECT_EQ(r.trace[k].thc_lock, v < 40.0) << "sample " << k << " at " << v << " mm/s";
+    ++checked;
+    if (v > 40.0 && v < 45.0) ++between;
+  }
+  EXPECT_GT(checked, 1000);
+  EXPECT_GT(between, 0);
+
+  auto torch_at = [&](double t) {
+    bool on = false;
+    for (const auto& c : gpio.changes)
+      if (c.t <= t) on = c.on;
+    return on;
+  };
+  const double window = 0.006;  // a controller cycle (2 ms) and the poll behind it
+  ASSERT_GE(gpio.thc_lock_changes.size(), 4u);
+  EXPECT_FALSE(gpio.thc_lock) << "left on after the job";
+  for (const auto& c : gpio.thc_lock_changes) {
+    EXPECT_TRUE(!c.on || torch_at(c.t)) << "thc_lock on with the torch off at " << c.t;
+    if (!torch_at(c.t)) continue;  // off with the torch
+    bool seen = false;
+    for (const auto& s : r.trace)
+      if (s.t_s >= c.t - window && s.t_s <= c.t && s.thc_lock == c.on) seen = true;
+    EXPECT_TRUE(seen) << "gpio.thc_lock " << c.on << " at " << c.t << " without the board's";
+  }
+  // Every edge of the board's flag while the torch is on reaches the output.
+  int edges = 0;
+  for (std::size_t k = 1; k < r.trace.size(); ++k) {
+    const double t = r.trace[k].t_s;
+    if (r.trace[k].thc_lock == r.trace[k - 1].thc_lock || !torch_at(t - window) || !torch_at(t + window)) continue;
+    ++edges;
+    bool followed = false;
+    for (const auto& c : gpio.thc_lock_changes)
+      if (c.on == r.trace[k].thc_lock && c.t >= t - 1e-9 && c.t <= t + window) followed = true;
+    EXPECT_TRUE(followed) << "the board's thc_lock went " << r.trace[k].thc_lock << " at " << t;
+  }
+  EXPECT_GE(edges, 4);
+}
+
 }  // namespace
 }  // namespace kerf::test

@@ -50,6 +50,7 @@ bool CspSegmentLink::configure(std::string& error) {
   mc.period = axes_.period_s();
   mc.accel = cfg_.accel_mm_s2;
   mc.corner_angle = cfg_.corner_angle_rad;
+  mc.vad = cfg_.vad;
   mc.counts_per_mm = cfg_.counts_per_mm;
   if (motion_.configure(mc) != Status::ok) {
     error = "CSP link: the motion configuration is out of range";

@@ -63,7 +63,8 @@ bool list_lines(const GpioConfig& cfg, std::vector<LineRole>& out, std::string& 
   if (!add_line("hold", cfg.hold, false, -1, out, error)) return false;
   if (!add_line("cycle_start", cfg.cycle_start, false, -1, out, error)) return false;
   if (!add_line("reset", cfg.reset, false, -1, out, error)) return false;
-  return add_line("watchdog", cfg.watchdog, true, -1, out, error);
+  if (!add_line("watchdog", cfg.watchdog, true, -1, out, error)) return false;
+  return add_line("thc_lock", cfg.thc_lock, true, -1, out, error);
 }
 
 std::string chip_path_for(const std::string& spec) {

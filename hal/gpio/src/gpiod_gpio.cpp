@@ -44,6 +44,7 @@ class GpiodGpio final : public Gpio {
     for (Input& in : inputs_) api::line_release(in.line);
     api::line_release(torch_);
     api::line_release(watchdog_);
+    api::line_release(thc_lock_);
     for (OpenChip& c : chips_) api::chip_close(c.chip);
   }
   GpiodGpio(const GpiodGpio&) = delete;
@@ -82,6 +83,12 @@ class GpiodGpio final : public Gpio {
     return false;
   }
 
+  bool set_thc_lock(bool on) override {
+    if (thc_lock_ == nullptr || api::line_set(thc_lock_, on != thc_lock_active_low_)) return true;
+    std::snprintf(error_, sizeof error_, "gpio: thc_lock: setting its line failed: %s", std::strerror(errno));
+    return false;
+  }
+
   const char* last_error() const override { return error_; }
 
  private:
@@ -116,6 +123,8 @@ class GpiodGpio final : public Gpio {
   std::vector<Input> inputs_;
   api::Line* torch_ = nullptr;
   api::Line* watchdog_ = nullptr;
+  api::Line* thc_lock_ = nullptr;
+  bool thc_lock_active_low_ = false;
   bool torch_active_low_ = false, watchdog_active_low_ = false;
   int torch_offset_ = -1;
   std::string torch_chip_;
@@ -215,6 +224,11 @@ bool GpiodGpio::request(const LineRole& r, OpenChip& chip, int offset, std::stri
                                             api::line_consumer(chip.chip, offset))
                          : gpio_lines::request_failed(r.role, chip.info.name, offset, err);
     return false;
+  }
+  if (r.output && r.role == "thc_lock") {
+    thc_lock_ = line;
+    thc_lock_active_low_ = r.cfg->active_low;
+    return true;
   }
   if (r.output && r.role == "watchdog") {
     watchdog_ = line;

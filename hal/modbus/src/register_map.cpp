@@ -59,7 +59,7 @@ void encode_status(const BoardStatus& st, std::uint16_t* r) {
   put32(r + kRegLastExecuted, st.last_executed);
   put32(r + kRegPosX, static_cast<std::uint32_t>(x));
   put32(r + kRegPosY, static_cast<std::uint32_t>(y));
-  r[kRegTorch] = st.torch ? 1 : 0;
+  r[kRegTorch] = static_cast<std::uint16_t>((st.torch ? kStatusTorch : 0) | (st.thc_lock ? kStatusThcLock : 0));
   r[kRegDuplicates] = st.duplicates;
   put32(r + kRegActualX, static_cast<std::uint32_t>(ax));
   put32(r + kRegActualY, static_cast<std::uint32_t>(ay));
@@ -68,7 +68,7 @@ void encode_status(const BoardStatus& st, std::uint16_t* r) {
 bool decode_status(const std::uint16_t* r, BoardStatus& st) {
   if (r[kRegVersion] != kMapVersion) return false;
   if (r[kRegState] > static_cast<std::uint16_t>(BoardState::fault)) return false;
-  if (r[kRegTorch] > 1) return false;
+  if ((r[kRegTorch] & ~(kStatusTorch | kStatusThcLock)) != 0) return false;
   st.state = static_cast<BoardState>(r[kRegState]);
   st.credit = r[kRegCredit];
   st.faults = r[kRegFaults];
@@ -76,7 +76,8 @@ bool decode_status(const std::uint16_t* r, BoardStatus& st) {
   st.executing = get32(r + kRegExecuting);
   st.last_executed = get32(r + kRegLastExecuted);
   st.position = {to_mm(get_i32(r + kRegPosX)), to_mm(get_i32(r + kRegPosY))};
-  st.torch = r[kRegTorch] == 1;
+  st.torch = (r[kRegTorch] & kStatusTorch) != 0;
+  st.thc_lock = (r[kRegTorch] & kStatusThcLock) != 0;
   st.duplicates = r[kRegDuplicates];
   st.actual = {to_mm(get_i32(r + kRegActualX)), to_mm(get_i32(r + kRegActualY))};
   return true;

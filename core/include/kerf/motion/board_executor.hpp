@@ -76,6 +76,7 @@ class BoardExecutor {
   std::uint16_t duplicates() const { return duplicates_; }
   Vec2<S> position() const { return position_; }
   bool torch() const { return torch_; }
+  bool thc_lock() const { return thc_lock_; }  // the last step's: below vad of the cut feed
   bool moving() const { return moving_; }
   bool at_rest() const { return !busy_; }
   bool finishing() const { return finish_; }
@@ -97,6 +98,7 @@ class BoardExecutor {
   std::uint32_t dropped_through_ = 0;  // numbers up to here were dropped by a fault
   bool finish_ = false;
   bool torch_ = false;
+  bool thc_lock_ = true;
   bool busy_ = false;           // the stage is moving or has segments
   bool moving_ = false;         // it travelled in the last period
   bool reset_pending_ = false;  // fault_reset taken while braking: reset at rest

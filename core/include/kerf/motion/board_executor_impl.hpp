@@ -121,6 +121,7 @@ BoardStep<S> BoardExecutor<S, Motion>::step(bool wait_for_drives) {
     position_ = e.position;
     busy_ = !e.at_rest;
     moving_ = e.moving;
+    thc_lock_ = e.thc_lock;
     // Sequence numbers are consecutive (only last + 1 is queued), so every
     // number up to last_completed ran, except those a fault dropped.
     if (e.last_completed > from) out.completed_to = e.last_completed;
@@ -135,6 +136,7 @@ BoardStep<S> BoardExecutor<S, Motion>::step(bool wait_for_drives) {
   out.position = position_;
   out.executing = executing_;
   out.torch = torch_;
+  out.thc_lock = thc_lock_;
   return out;
 }
 

@@ -64,6 +64,7 @@ struct BoardStep {
   Vec2<S> position{};
   std::uint32_t executing = 0;  // 0 when idle or in fault
   bool torch = false;
+  bool thc_lock = true;  // the stage's MotionStep::thc_lock (raw: not masked by the torch)
   bool stepped = false;  // the motion stage ran this period
   // The segments completed_from + 1 .. completed_to finished this period.
   std::uint32_t completed_from = 0;

@@ -37,6 +37,7 @@ struct GpioConfig {
   GpioLineConfig cycle_start;     // resume after a hold
   GpioLineConfig reset;           // unlatches the E-stop chain (its rising edge)
   GpioLineConfig watchdog;        // output: toggles every cycle while all is well
+  GpioLineConfig thc_lock;        // output: torch-height control holds (board's thc_lock, torch on)
 };
 
 struct GpioInputs {
@@ -65,6 +66,12 @@ class Gpio {
   // Drives the watchdog output, when there is one (none: nothing to do). False on an I/O error.
   virtual bool set_watchdog(bool level) {
     (void)level;
+    return true;
+  }
+  // Drives the thc_lock output (torch-height control holds), when there is
+  // one (none: nothing to do). False on an I/O error.
+  virtual bool set_thc_lock(bool on) {
+    (void)on;
     return true;
   }
   virtual const char* last_error() const = 0;

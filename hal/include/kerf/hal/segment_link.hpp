@@ -47,6 +47,7 @@ struct BoardStatus {
   // its commanded position here; the controller checks the gap (following error).
   Vec2<double> actual{};
   bool torch = false;
+  bool thc_lock = true;  // speed below vad of the cut feed: torch-height control holds
   std::uint16_t duplicates = 0;    // resends the board dropped (wraps)
 };
 
@@ -62,6 +63,7 @@ BoardStatus status_of(const Executor& e) {
   s.last_executed = e.last_executed();
   s.position = e.position();
   s.torch = e.torch();
+  s.thc_lock = e.thc_lock();
   s.duplicates = e.duplicates();
   return s;
 }

@@ -25,6 +25,7 @@ struct TraceSample {
   Vec2<double> pos;
   std::uint32_t seq;  // segment being executed, 0 when idle
   bool torch;
+  bool thc_lock = true;  // the board's thc_lock this tick (speed below vad of the cut feed)
 };
 
 struct BoardConfig {

@@ -14,6 +14,7 @@ struct MotionConfig {
   double servo_period_s = 0.001;
   double accel_mm_s2 = 2000.0;     // along the path
   double corner_angle_rad = 0.05;  // tangent turns above this are corners
+  double vad = 0.9;                // thc_lock below this fraction of the cut feed ([cut] vad / 100)
   double counts_per_mm = 1000.0;   // the drives' resolution (1 count = 1 um, as on the wire)
   std::size_t lookahead_slots = 16;
 };

@@ -88,6 +88,10 @@ class ScriptedGpio final : public hal::Gpio {
   bool set_watchdog(bool level) override;
   std::uint64_t watchdog_changes() const { return watchdog_changes_; }
   double watchdog_last_change_s() const { return watchdog_last_s_; }
+  // The thc_lock output: every change, at the time it took effect.
+  bool set_thc_lock(bool on) override;
+  bool thc_lock() const { return thc_lock_; }
+  const std::vector<TorchChange>& thc_lock_timeline() const { return thc_lock_timeline_; }
   const char* last_error() const override { return error_.c_str(); }
 
   // Every change of the torch output, in order, at the time it took effect.
@@ -121,6 +125,8 @@ class ScriptedGpio final : public hal::Gpio {
   double fail_reads_from_;
   double fail_torch_from_;
   std::vector<TorchChange> timeline_;
+  bool thc_lock_ = false;
+  std::vector<TorchChange> thc_lock_timeline_;
   std::string error_;
 };
 

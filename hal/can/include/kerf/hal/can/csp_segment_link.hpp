@@ -36,6 +36,7 @@ struct CspConfig {
   Vec2<double> counts_per_mm{1000.0, 1000.0};  // x, y
   double accel_mm_s2 = 2000.0;     // along the path
   double corner_angle_rad = 0.05;  // tangent turns above this are corners
+  double vad = 0.9;                // thc_lock below this fraction of the cut feed
   std::size_t queue_slots = 32;    // the credit the host sees, and the look-ahead behind it
   std::size_t trace_reserve = 0;
 };

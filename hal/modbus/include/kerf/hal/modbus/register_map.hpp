@@ -10,7 +10,8 @@
 
 namespace kerf::hal::modbus_map {
 
-inline constexpr std::uint16_t kMapVersion = 2;  // 2: the actual position (16..19)
+// 2: the actual position (16..19); 3: register 14 is a flag set (torch, thc_lock)
+inline constexpr std::uint16_t kMapVersion = 3;
 inline constexpr int kDefaultUnit = 17;
 
 // Status block: holding registers 0..19, read-only.
@@ -37,6 +38,9 @@ enum SlotReg : int {
   kSlotCentreX = 8, kSlotCentreY = 10, kSlotFeed = 12, kSlotFlags = 14, kSlotReserved = 15,
 };
 inline constexpr std::uint16_t kFlagTorch = 1;
+// Bits of status register 14 (kRegTorch).
+inline constexpr std::uint16_t kStatusTorch = 1;
+inline constexpr std::uint16_t kStatusThcLock = 2;  // speed below vad of the cut feed
 
 // Lengths travel as micrometres, feed as micrometres per second.
 inline constexpr double kUnitsPerMm = 1000.0;
