@@ -4,7 +4,7 @@
 // interpolator in real time. Prints where it listens, then serves until
 // SIGINT or SIGTERM.
 //
-//   kerf-board-sim [--port N] [--rtu] [--accel MM_S2] [--watchdog S]
+//   kerf-board-sim [--port N] [--rtu] [--accel MM_S2] [--vad PERCENT] [--watchdog S]
 #include <CLI/CLI.hpp>
 #include <csignal>
 #include <cstdio>
@@ -17,10 +17,12 @@ int main(int argc, char** argv) {
   CLI::App app("kerf-board-sim: the simulated motion board over Modbus", "kerf-board-sim");
   int port = 0;
   bool rtu = false;
-  double accel = 1500.0, watchdog = 0.5;
+  double accel = 1500.0, watchdog = 0.5, vad = 90.0;
   app.add_option("--port", port, "TCP port on 127.0.0.1 (0: any free one)")->check(CLI::Range(0, 65535));
   app.add_flag("--rtu", rtu, "Modbus RTU on a new pseudo-terminal instead of TCP");
   app.add_option("--accel", accel, "Path acceleration, mm/s^2")->check(CLI::PositiveNumber);
+  app.add_option("--vad", vad, "thc_lock while the speed is below this % of the cut feed (the machine's [cut] vad)")
+      ->check(CLI::Range(0.0, 100.0));
   app.add_option("--watchdog", watchdog, "Stop safely when the host is silent this long (s); 0: never")
       ->check(CLI::NonNegativeNumber);
   CLI11_PARSE(app, argc, argv);
@@ -35,6 +37,7 @@ int main(int argc, char** argv) {
   std::string error;
   sim::MotionConfig mc;
   mc.accel_mm_s2 = accel;
+  mc.vad = vad / 100.0;
   auto exec = sim::make_motion_executor(mc, error);
   if (!exec) {
     std::fprintf(stderr, "kerf-board-sim: %s\n", error.c_str());
