@@ -46,16 +46,18 @@ function(kerf_test_tier tier)
 endfunction()
 
 # kerf_gtests(<executable> <tier> [TARGET] [FILTER <gtest filter>] [TIMEOUT <s>]
-#             [TEST_PREFIX <prefix>] [THREADS <regex>]): gtest_discover_tests
+#             [TEST_PREFIX <prefix>] [THREADS <regex>] [LABELS <label>...]): gtest_discover_tests
 # (at test time, so that cross builds list the tests under their emulator)
 # with the tier's labels. Call it once per filter to give parts of one binary
 # different tiers. THREADS: the tests whose name matches run threads and get
 # the label `threads` too (the tsan preset runs those, and builds only their
 # executables: KERF_THREAD_TEST_TARGETS in CMakePresets.json's tsan build).
+# LABELS: more labels for every test, e.g. `corpus` (whole real files: the
+# debug-asan preset leaves those out, see tests/README.md).
 function(kerf_gtests exe tier)
-  cmake_parse_arguments(PARSE_ARGV 2 arg "TARGET" "FILTER;TIMEOUT;TEST_PREFIX;THREADS" "")
+  cmake_parse_arguments(PARSE_ARGV 2 arg "TARGET" "FILTER;TIMEOUT;TEST_PREFIX;THREADS" "LABELS")
   kerf_check_tier_name(${tier})
-  set(labels ${tier})
+  set(labels ${tier} ${arg_LABELS})
   if(arg_TARGET)
     list(APPEND labels target)
     add_dependencies(kerf_target_tests ${exe})
