@@ -12,7 +12,6 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -33,12 +32,20 @@ bool read_file(const std::string& path, std::string& out) {
 }
 
 // A top-level "key": value of the report (a number, a string or null).
+// (No std::regex: GCC 12 warns inside <regex> under the sanitizers.)
 std::string json_value(const std::string& json, const std::string& key) {
-  const std::regex re("\"" + key + "\":\\s*(\"[^\"]*\"|[-0-9.eE+]+|null|true|false)");
-  std::smatch m;
-  if (!std::regex_search(json, m, re)) return "";
-  std::string v = m[1];
-  if (!v.empty() && v.front() == '"') v = v.substr(1, v.size() - 2);
+  const std::string quoted = "\"" + key + "\":";
+  const std::size_t at = json.find(quoted);
+  if (at == std::string::npos) return "";
+  std::size_t i = json.find_first_not_of(" \t\r\n", at + quoted.size());
+  if (i == std::string::npos) return "";
+  if (json[i] == '"') {
+    const std::size_t end = json.find('"', i + 1);
+    return end == std::string::npos ? "" : json.substr(i + 1, end - i - 1);
+  }
+  const std::size_t end = json.find_first_of(",}\r\n", i);
+  std::string v = json.substr(i, end == std::string::npos ? std::string::npos : end - i);
+  while (!v.empty() && (v.back() == ' ' || v.back() == '\t')) v.pop_back();
   return v;
 }
 
