@@ -15,27 +15,16 @@
 #include "fuzz_check.hpp"
 #include "job/gcode_program.hpp"
 #include "job/gcode_reader.hpp"
+#include "../support/interp_settings.hpp"
 
 namespace {
 
 using namespace kerf::job;
 
-InterpSettings fuzz_settings() {
-  InterpSettings s;
-  s.fit_tol = 0.025;
-  s.tool_material[1] = {"mild", 2000, 0.2};
-  s.mcodes[101] = {UserMcode::Action::on, 3, 0};
-  s.mcodes[102] = {UserMcode::Action::dwell, 0, 0.25};
-  s.mcodes[103] = {UserMcode::Action::ignore, 0, 0};
-  s.torch_output = 0;
-  s.mist_output = 1;
-  return s;
-}
-
 bool finite3(const double* v) { return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]); }
 
 void check_interpretation(const GcodeFile& g) {
-  const InterpSettings settings = fuzz_settings();
+  const InterpSettings settings = kerf_test::interp_case_settings();
   MachineState start;
   start.g5x[1][0] = 10;  // a non-zero offset to start from
   start.coord = 1;

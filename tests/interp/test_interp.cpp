@@ -14,6 +14,7 @@
 #include <string>
 
 #include "job/gcode_program.hpp"
+#include "../support/interp_settings.hpp"
 
 namespace {
 
@@ -27,20 +28,8 @@ std::string slurp(const fs::path& p) {
   return ss.str();
 }
 
-// The settings every case runs with: a material on T1, user M-codes
-// M101..M103, the torch on output 0, gas on 1 and 2.
-InterpSettings settings() {
-  InterpSettings s;
-  s.fit_tol = 0.025;
-  s.tool_material[1] = {"mild", 2000, 0.2};
-  s.mcodes[101] = {UserMcode::Action::on, 3, 0};
-  s.mcodes[102] = {UserMcode::Action::dwell, 0, 0.25};
-  s.mcodes[103] = {UserMcode::Action::ignore, 0, 0};
-  s.torch_output = 0;
-  s.mist_output = 1;
-  s.flood_output = 2;
-  return s;
-}
+// The settings every case runs with (tests/support/interp_settings.hpp).
+InterpSettings settings() { return kerf_test::interp_case_settings(); }
 
 std::string f4(double v) {
   char buf[40];
