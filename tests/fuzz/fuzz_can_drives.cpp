@@ -7,6 +7,8 @@
 // wrong length is refused.
 #include <fuzzer/FuzzedDataProvider.h>
 
+#include <algorithm>
+#include <climits>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -79,10 +81,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         bus.master().send(fuzzed_frame(in));
         e = master->cycle();
         break;
-      case 3:
-        master->set_target(axis, master->axis(axis).actual + in.ConsumeIntegralInRange<int>(-50, 50));
+      case 3: {  // a fuzzed TPDO may have put the actual position at the edge of int32
+        const std::int64_t near = std::int64_t{master->axis(axis).actual} + in.ConsumeIntegralInRange<int>(-50, 50);
+        master->set_target(axis, static_cast<std::int32_t>(std::clamp<std::int64_t>(near, INT32_MIN, INT32_MAX)));
         e = master->cycle();
         break;
+      }
       case 4: e = master->enable(); break;
       case 5: e = master->fault_reset(); break;
       case 6: {
