@@ -137,6 +137,7 @@ void read_program(TableReader& root, Program& p, Sim& sim) {
 job::InterpSettings interp_settings(const Config& c, bool strict) {
   job::InterpSettings s;
   s.fit_tol = c.fit.tol;
+  s.cut_feed = c.cut.feed;
   s.tool_material = c.program.tool_material;
   s.mcodes = c.program.mcodes;
   s.strict_mcodes = strict;

@@ -1,4 +1,5 @@
 #include "job/gcode_interp.hpp"
+#include "job/gcode_flow.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -79,11 +80,19 @@ class Interp {
   }
 
   bool run(std::string& error) {
-    for (const GBlock& b : g_.blocks) {
-      if (b.words.empty()) continue;
+    error.clear();
+    const GcodeFlow* at = nullptr;
+    GcodeFlow flow(g_, [&](std::string_view pin, double& v, std::string& why) { return hal(pin, at->line(), v, why); },
+                   s_.max_blocks, out_.constructs, out_.notes);
+    at = &flow;
+    if (!flow.prepare(error)) return false;
+    const GBlock* bp = nullptr;
+    std::span<const GWord> words;
+    while (flow.next(bp, words, error)) {
+      const GBlock& b = *bp;
       Words w;
       w.line = b.line;
-      for (const GWord& word : b.words) {
+      for (const GWord& word : words) {
         const int k = word.letter - 'A';
         if (word.letter == '$') w.has_dollar = true, w.dollar = word.value;
         else if (word.letter == 'G') w.g.push_back(code10(word.value));
@@ -96,7 +105,7 @@ class Interp {
       }
       if (ended_) break;
     }
-    return true;
+    return error.empty();
   }
 
  private:
@@ -125,6 +134,32 @@ class Interp {
     return out_.state.g5x[out_.state.coord][k] + (out_.state.g92_on ? out_.state.g92[k] : 0.0);
   }
 
+  // QtPlasmaC's #<_hal[plasmac.cut-feed-rate]>: the cut feed of the material in force.
+  bool hal(std::string_view pin, std::size_t line, double& v, std::string& why) {
+    if (pin != "plasmac.cut-feed-rate")
+      return why = "#<_hal[" + std::string(pin) + "]>: kerf has no such pin (of QtPlasmaC's, only plasmac.cut-feed-rate)",
+             false;
+    v = cut_feed_ / scale();
+    seen("#<_hal[plasmac.cut-feed-rate]>", "run", line);
+    return true;
+  }
+  // QtPlasmaC's M190 Pn: material n, the one [tools] maps n to; P-1 is the default cut feed.
+  void material_change(const Words& w) {
+    const int n = static_cast<int>(std::lround(w.at('P')));
+    seen("M190 P (material)", "run", w.line);
+    const auto mat = s_.tool_material.find(n);
+    if (n == -1 || mat == s_.tool_material.end()) {
+      if (n != -1) note("M190 P" + std::to_string(n) + " (line " + std::to_string(w.line) +
+                        ") maps to no material: the cut settings are kept");
+      if (n == -1) cut_feed_ = s_.cut_feed;
+      return;
+    }
+    if (mat->second.feed_mm_min > 0) cut_feed_ = mat->second.feed_mm_min;
+    Canon& t = emit(CanonKind::tool, w.line);
+    t.index = n;
+    t.value = mat->second.pierce_delay_s;
+  }
+
   bool check_letters(const Words& w) {
     static const char kAxes[] = "ABCUVW";
     for (const char* a = kAxes; *a; ++a)
@@ -149,7 +184,7 @@ class Interp {
     const struct {
       char letter;
       bool used;
-    } uses[] = {{'P', io || user_m || arc || w.g_has(40) || w.g_has(100) || w.g_has(640)},
+    } uses[] = {{'P', io || user_m || arc || w.m_has(520) || w.g_has(40) || w.g_has(100) || w.g_has(640)},
                 {'Q', w.m_has(660) || analog || user_m || w.g_has(640)},
                 {'L', w.g_has(100) || w.m_has(660)}};
     for (const auto& u : uses)
@@ -265,6 +300,8 @@ class Interp {
     const std::size_t line = w.line;
     const std::string name = code_name('M', c);
     if (c == 0 || c == 10 || c == 20 || c == 300) return true;  // after the motion
+    if (c == 520) return seen(w.any('P') ? "M52 P (adaptive feed)" : "M52", "recorded", line), true;
+    if (c == 1900 && w.any('P') && s_.mcodes.count(190) == 0) return material_change(w), true;
     if (c == 60) {
       Canon& t = emit(CanonKind::tool, line);
       t.index = m_.selected_tool;
@@ -273,7 +310,7 @@ class Interp {
       const auto mat = s_.tool_material.find(m_.selected_tool);
       if (mat != s_.tool_material.end()) t.value = mat->second.pierce_delay_s;
       if (mat != s_.tool_material.end()) {
-        if (mat->second.feed_mm_min > 0) m_.feed = mat->second.feed_mm_min;
+        if (mat->second.feed_mm_min > 0) m_.feed = cut_feed_ = mat->second.feed_mm_min;
       } else if (!noted_tool_[m_.selected_tool]) {
         noted_tool_[m_.selected_tool] = true;
         char buf[96];
@@ -503,6 +540,7 @@ class Interp {
   std::string why_;
   bool ended_ = false;
   std::map<int, bool> noted_tool_;  // unmapped tools already noted
+  double cut_feed_ = s_.cut_feed;    // mm/min: the material's, else [cut] feed
 };
 
 std::string num(double v) {

@@ -8,9 +8,10 @@
 // M7/M8/M9, M62..M68, M100..M199, G4, G17 (G18/G19 refused), G20/G21,
 // G40 (G41/G42 refused), G49, G54..G59.3, G61/G61.1/G64 [P Q], G90/G91,
 // G90.1/G91.1, G10 L2/L20, G53, G92/G92.1/G92.2/G92.3, G80, G94 (G93/G95
-// refused), G0/G1/G2/G3, then M0/M1/M2/M30. Everything else (O-words, #
-// parameters, expressions, A/B/C/U/V/W axes, E words outside M66..M68, other
-// G and M codes) is refused with FILE:LINE and the construct's name.
+// refused), G0/G1/G2/G3, then M0/M1/M2/M30; QtPlasmaC's M52 (recorded) and
+// M190 P (material). Parameters, expressions and O-words are run by
+// job/gcode_flow.hpp. Everything else (A/B/C/U/V/W axes, E words outside
+// M66..M68, other G and M codes) is refused with FILE:LINE and its name.
 #pragma once
 
 #include <cstddef>
@@ -77,6 +78,8 @@ struct InterpSettings {
   int torch_output = -1;      // an M62..M65 P number that is the torch; -1: none
   int mist_output = -1;       // M7
   int flood_output = -1;      // M8
+  double cut_feed = 3000;     // mm/min: [cut] feed, what #<_hal[plasmac.cut-feed-rate]> reads with no material
+  std::size_t max_blocks = 10'000'000;  // blocks run (loops included) before a program is refused
 };
 
 // How a construct was handled, for the run report.

@@ -1,6 +1,7 @@
 #include "job/gcode_reader.hpp"
 
 #include "io/prefault.hpp"
+#include "job/gcode_expr.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -25,6 +26,7 @@ struct State {
   bool torch = false;
   double pos[3] = {0, 0, 0};
   bool known[3] = {false, false, false};
+  bool flow = false;  // an O-word was read: a loop or a call may run any later line again
 };
 
 // One block's words, comments and unknown words while it is parsed; reused
@@ -92,6 +94,10 @@ bool split_words(GBlock& b, Scratch& sc, std::string& reason) {
   if (s.find_first_not_of(" \t", i) != std::string::npos && s[i] == '%' &&
       s.find_first_not_of(" \t", i + 1) == std::string::npos)
     return true;  // the tape mark
+  for (std::size_t k = i; k < s.size() && s[k] != ';'; ++k) {  // a parameter or an expression anywhere
+    if (s[k] == '(') k = std::min(s.find(')', k), s.size() - 1);
+    else if (s[k] == '#' || s[k] == '[') return b.dynamic = true, true;
+  }
   while (i < s.size()) {
     const char c = s[i];
     if (is_blank(c)) {
@@ -104,13 +110,12 @@ bool split_words(GBlock& b, Scratch& sc, std::string& reason) {
       if (close == std::string::npos) return reason = "unclosed ( comment", false;
       sc.comments.push_back(s.substr(i, close + 1 - i));
       i = close + 1;
-    } else if (c == '#') {
-      return reason = "parameters (#n) are not supported", false;
-    } else if (c == '[') {
-      return reason = "expressions ([...]) are not supported", false;
+    } else if (c == '#' || c == '[') {
+      b.dynamic = true;
+      return true;
     } else if (is_alpha(c) || c == '$') {  // '$': LinuxCNC's spindle (QtPlasmaC's tool head) select
       const char letter = c == '$' ? '$' : static_cast<char>(c & ~0x20);
-      if (letter == 'O') return reason = "O-words (subroutines, program numbers) are not supported", false;
+      if (letter == 'O') return b.dynamic = true, true;
       std::size_t j = i + 1;
       while (j < s.size() && is_blank(s[j])) ++j;
       const std::size_t number_at = j;
@@ -132,9 +137,11 @@ bool split_words(GBlock& b, Scratch& sc, std::string& reason) {
       }
       if (num.digits == 0) {
         const std::size_t next = s.find_first_not_of(" \t", i + 1);
-        if (next != std::string::npos && s[next] == '#') return reason = "parameters (#n) are not supported", false;
-        if (next != std::string::npos && s[next] == '[')
-          return reason = "expressions ([...]) are not supported", false;
+        if (next != std::string::npos && (s[next] == '#' || s[next] == '[')) return b.dynamic = true, true;
+        if (next != std::string::npos && (s[next] == '-' || s[next] == '+')) {
+          const std::size_t after = s.find_first_not_of(" \t", next + 1);
+          if (after != std::string::npos && (s[after] == '#' || s[after] == '[')) return b.dynamic = true, true;
+        }
         std::string word(1, c);
         // Letters run together ("ATAN", "XYZ") are a name; a letter, blanks and
         // the next word ("G1 X Y1") is a word whose number is missing.
@@ -165,6 +172,39 @@ bool split_words(GBlock& b, Scratch& sc, std::string& reason) {
     }
   }
   return true;
+}
+
+// A dynamic line's words for the modal state: a word with a plain number
+// keeps it, the others are NaN (known only when the program runs).
+bool dynamic_words(const GBlock& b, Scratch& sc, bool& oword, std::string& reason) {
+  sc.words.clear();
+  ExprPool pool;
+  LineCode code;
+  if (!parse_line(b.text, pool, code, reason)) return false;
+  oword = code.oword != LineCode::Oword::none;
+  for (const LineCode::Word& w : code.words) {
+    const ExprNode& n = pool.nodes[static_cast<std::size_t>(w.expr)];
+    GWord g;
+    g.letter = w.letter;
+    g.value = n.op == ExprNode::Op::number ? n.value : std::nan("");
+    if ((w.letter == 'G' || w.letter == 'M') && std::isnan(g.value))
+      return reason = std::string("a ") + w.letter + " code given by a parameter or an expression is not supported",
+             false;
+    sc.words.push_back(g);
+  }
+  return true;
+}
+
+// After a dynamic line: an axis it set from an expression is unknown, and
+// after an O-word every position is.
+void settle_dynamic(GBlock& b, Scratch& sc, State& st, bool oword) {
+  st.flow = st.flow || oword;
+  for (int k = 0; k < 3; ++k)
+    if (oword || std::isnan(st.pos[k])) st.pos[k] = 0, st.known[k] = false;
+  for (int k = 0; k < 3; ++k)
+    if (std::isnan(b.end_pos[k])) b.end_pos[k] = 0;
+  sc.words.clear();  // the flow computes them (job/gcode_flow.hpp)
+  sc.unknown.clear();
 }
 
 std::string_view word_text(const GBlock& b, const GWord& w) { return b.text.substr(w.pos, w.len); }
@@ -440,10 +480,14 @@ GcodeFile parse_source(std::string text_in, std::string display_name) {
     sc.comments.clear();
     sc.unknown.clear();
     if (b.text.find('\0') != std::string::npos) reason = "a NUL byte (not a text file?)";
-    if (!reason.empty() || !split_words(b, sc, reason) || !apply_block(b, sc, st, reason)) {
+    bool oword = false;
+    if (!reason.empty() || !split_words(b, sc, reason) ||
+        (b.dynamic && !dynamic_words(b, sc, oword, reason)) || !apply_block(b, sc, st, reason)) {
       refuse(std::move(reason));
       return f;
     }
+    if (b.dynamic) settle_dynamic(b, sc, st, oword);
+    if (st.flow || b.dynamic) b.xy_line = false;
     if (b.decimals > f.decimals) f.decimals = b.decimals;
     // The spans get their place in bind_spans; their sizes are kept here.
     append(src->words, words_mapped, sc.words);

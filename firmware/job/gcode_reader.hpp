@@ -7,9 +7,12 @@
 // lines (X.. Y.. with no G word), blanks and tabs anywhere, lower case, CRLF,
 // CR or LF line ends, inch files (G20), a `%` tape mark.
 //
-// Refused with a file:line reason, since kerf could not follow the tool:
-// O-words (subroutines), parameters (#n), expressions ([...]), block delete
-// (/), malformed words. Anything else it does not model (other G or M codes,
+// A line with a parameter (#), an expression ([...]) or an O-word is marked
+// `dynamic`: job/gcode_expr.hpp parses it (its syntax errors are refused
+// here) and job/gcode_flow.hpp runs it. Weld never replaces it, and after
+// the first O-word no line is welded (a loop or a call may run it again).
+// Refused with a file:line reason: block delete (/), malformed words, a G or
+// M code given by an expression. Anything else it does not model (other G or M codes,
 // axis letters A B C E U V W, ...) is an "unknown word": kept on the block so
 // that `kerf weld` passes the line through and `kerf run` refuses it.
 #pragma once
@@ -65,7 +68,8 @@ struct GBlock {
   double end_pos[3] = {0, 0, 0};  // position after it
   double centre[2] = {0, 0};   // arc centre, absolute (G2/G3 moves only)
   bool has_f = false;
-  bool only_comment() const { return words.empty(); }
+  bool dynamic = false;        // parameters, expressions or an O-word: words is empty, the text is parsed at run
+  bool only_comment() const { return words.empty() && !dynamic; }
   // A G1 move in the XY plane with only X, Y (and N, F, G1) words: a
   // polyline vertex that welding may replace.
   bool xy_line = false;
