@@ -1,4 +1,5 @@
 #include "toolpath_reader.hpp"
+#include "toolpath_eval.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -39,9 +40,7 @@ bool words_of(const std::string& raw, std::vector<Word>& out, std::string& why) 
   std::size_t i = 0;
   while (i < s.size()) {
     const char l = s[i];
-    if (l == '#' || l == '[') return why = "parameters and expressions are not read", false;
-    if (l == 'O') return why = "O-words are not read", false;
-    if (!std::isalpha(static_cast<unsigned char>(l))) return why = std::string("unexpected '") + l + "'", false;
+    if (!std::isalpha(static_cast<unsigned char>(l)) && l != '$') return why = std::string("unexpected '") + l + "'", false;
     ++i;
     // [+-]digits[.digits]: no exponent (G1E1.1 is G1 then E1.1).
     const std::size_t from = i;
@@ -77,8 +76,12 @@ TPoint offset(const State& s) { return {s.work[s.system].x + s.g92.x, s.work[s.s
 Toolpath parse_toolpath(const std::string& text) {
   Toolpath t;
   State st;
-  std::istringstream in(text);
-  std::string raw;
+  std::vector<RunLine> run;  // the lines as run: loops unrolled, values computed (toolpath_eval.hpp)
+  std::string run_why;
+  if (!run_program(text, run, run_why)) {
+    t.error = run_why;
+    return t;
+  }
   std::size_t line = 0;
   std::vector<Word> words;
   auto fail = [&](const std::string& why) {
@@ -86,8 +89,9 @@ Toolpath parse_toolpath(const std::string& text) {
     t.error = std::to_string(line) + ": " + why;
     return t;
   };
-  while (std::getline(in, raw)) {
-    ++line;
+  for (const RunLine& rl : run) {
+    line = rl.line;
+    const std::string& raw = rl.text;
     std::string why;
     if (!words_of(raw, words, why)) return fail(why);
     bool has_z = false;
@@ -183,7 +187,8 @@ Toolpath parse_toolpath(const std::string& text) {
     const bool z_moves = z_to != st.z;
     st.z = z_to;
     if (!(has_x || has_y) && z_moves) st.z_since_xy = true;
-    if ((has_x || has_y) && st.motion >= 0) {
+    // An arc with no X or Y is a full circle (LinuxCNC: G2 I10).
+    if ((has_x || has_y || (st.motion >= 2 && (has_i || has_j || has_r))) && st.motion >= 0) {
       const TPoint off = g53 ? TPoint{0, 0} : offset(st);
       TPoint to = st.pos;
       if (st.relative && !g53) {

@@ -8,8 +8,9 @@
 // G53 for one block, G28 (home: to the machine origin), M3/M4/M5 (torch),
 // M2/M30 (end), N words, ( ) and ; comments, % lines, blanks anywhere.
 // Z and feed do not change the XY path.
-// Refused with "LINE: reason": O-words, # parameters, [ ] expressions,
-// G30, G18/G19, G92.3, arcs whose end is off their circle by more than
+// Parameters, expressions and O-word flow are run first by its own
+// evaluator (toolpath_eval.hpp).
+// Refused with "LINE: reason": G30, G18/G19, G92.3, arcs whose end is off their circle by more than
 // 0.01 mm + 1e-4 of the radius (LinuxCNC refuses these as well).
 // Everything else (other G and M codes, T, S, F, P, E ...) does not move XY
 // and is skipped. The machine starts at the origin of machine coordinates.
