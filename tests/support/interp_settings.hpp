@@ -18,6 +18,7 @@ inline kerf::job::InterpSettings interp_case_settings() {
   s.torch_output = 0;
   s.mist_output = 1;
   s.flood_output = 2;
+  s.max_blocks = 100000;  // the loop cap, low so that a runaway loop is refused in milliseconds
   return s;
 }
 
