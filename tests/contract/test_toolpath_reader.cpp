@@ -6,6 +6,7 @@
 #include <cmath>
 #include <random>
 
+#include "toolpath_eval.hpp"
 #include "toolpath_reader.hpp"
 
 namespace kerf_test {
@@ -97,11 +98,54 @@ TEST(ToolpathReader, WordsWithoutBlanksAndComments) {
 
 TEST(ToolpathReader, RefusesWhatItCannotFollow) {
   EXPECT_FALSE(parse_toolpath("G1 X1\nO100 sub\n").ok);
-  EXPECT_FALSE(parse_toolpath("G1 X#1\n").ok);
+  EXPECT_FALSE(parse_toolpath("G1 X#<unset>\n").ok);  // a named parameter read before it is set
+  EXPECT_FALSE(parse_toolpath("G1 X[1/0]\n").ok);
+  std::vector<RunLine> run;
+  std::string why;
+  EXPECT_FALSE(run_program("o1 while [1]\no1 endwhile\n", run, why, 1000));  // the line cap
+  EXPECT_EQ(why.substr(0, 2), "1:");
+  EXPECT_FALSE(parse_toolpath("o<elsewhere> call\n").ok);
   EXPECT_FALSE(parse_toolpath("G18\n").ok);
   const Toolpath off = parse_toolpath("G0 X21 Y-21\nG1 X20\nG3 X21 Y-20 I20 J21\n");
   EXPECT_FALSE(off.ok);
   EXPECT_EQ(off.error.substr(0, 2), "3:");
+}
+
+// Its own evaluator (toolpath_eval.hpp): values worked out by hand.
+TEST(ToolpathReader, ParametersAndExpressions) {
+  const Toolpath t = parse_toolpath(
+      "#1 = 10 #2 = 20\n#1 = 30 #2 = #1\nG0 X#1 Y#2\n"             // reads before the line's assignments
+      "#<w> = 4\nG0 X[#<w> * 2 + 1] Y[2 ** 3 MOD 5]\n"              // 9, 8 MOD 5 = 3
+      "G0 X[-7 MOD 3] Y-[2]\n"                                       // 2 (never negative), -2
+      "G0 X[1 LT 2 AND 3 GE 3] Y[1 EQ 2 OR 1 XOR 1]\n"              // 1, 0
+      "G0 X[SQRT[16] + ABS[-1] + ROUND[2.5] + FIX[-0.5]] Y[ATAN[1]/[1]]\n"  // 4+1+3-1 = 7, 45
+      "G0 x [ sin [ 30 ] ] y[EXISTS[#<w>] + EXISTS[#<v>] + #<_hal[plasmac.cut-feed-rate]>]\n");  // 0.5, 1
+  ASSERT_TRUE(t.ok) << t.error;
+  ASSERT_EQ(t.moves.size(), 6u);
+  expect_at(t.moves[0].end, 30, 10);
+  expect_at(t.moves[1].end, 9, 3);
+  expect_at(t.moves[2].end, 2, -2);
+  expect_at(t.moves[3].end, 1, 0);
+  expect_at(t.moves[4].end, 7, 45);
+  expect_at(t.moves[5].end, 0.5, 1);
+}
+
+TEST(ToolpathReader, OwordFlow) {
+  const Toolpath t = parse_toolpath(
+      "o<sq> sub\n  G1 X[#1 + 1]\n  o<sq> return\n  G1 X99\no<sq> endsub\n"  // never run where it stands
+      "o1 repeat [2]\n  o2 repeat [2]\n    #3 = [#3 + 1]\n    G1 X#3 Y0\n  o2 endrepeat\no1 endrepeat\n"  // X1..X4
+      "#4 = 0\no3 while [#4 LT 9]\n  #4 = [#4 + 1]\n  o4 if [#4 EQ 2]\n    o3 continue\n  o4 elseif [#4 EQ 4]\n"
+      "    o3 break\n  o4 else\n    G1 Y#4\n  o4 endif\no3 endwhile\n"  // Y1, Y3
+      "o5 do\n  G1 X10\no5 while [0]\n"                                   // once
+      "o<sq> call [20]\n");                                                  // X21
+  ASSERT_TRUE(t.ok) << t.error;
+  ASSERT_EQ(t.moves.size(), 8u);
+  for (int k = 0; k < 4; ++k) expect_at(t.moves[static_cast<std::size_t>(k)].end, k + 1, 0);
+  expect_at(t.moves[4].end, 4, 1);
+  expect_at(t.moves[5].end, 4, 3);
+  expect_at(t.moves[6].end, 10, 3);
+  expect_at(t.moves[7].end, 21, 3);
+  EXPECT_EQ(t.moves[7].line, 2u);
 }
 
 TEST(ToolpathReader, IndexFindsTheNearestMove) {

@@ -23,7 +23,8 @@ struct RunLine {
   std::string text;      // plain words (a line without # [ or O is given back as read)
 };
 
-// False with "LINE: reason".
-bool run_program(const std::string& text, std::vector<RunLine>& out, std::string& why);
+// False with "LINE: reason" (also past `max_lines` lines run).
+bool run_program(const std::string& text, std::vector<RunLine>& out, std::string& why,
+                 std::size_t max_lines = 10'000'000);
 
 }  // namespace kerf_test
