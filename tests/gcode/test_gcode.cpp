@@ -93,9 +93,11 @@ TEST(GcodeReader, InchesAndRelative) {
 }
 
 TEST(GcodeReader, RefusesWhatItCannotFollow) {
-  EXPECT_EQ(error_of("G0 X0 Y0\nO100 sub\n"), "bad.nc:2: O-words (subroutines, program numbers) are not supported");
-  EXPECT_EQ(error_of("G1 X#1\n"), "bad.nc:1: parameters (#n) are not supported");
-  EXPECT_EQ(error_of("\n\nG1 X[1+2]\n"), "bad.nc:3: expressions ([...]) are not supported");
+  // Parameters, expressions and O-words are read (job/gcode_expr.hpp); their syntax errors are refused here.
+  EXPECT_EQ(error_of("G0 X0 Y0\nO100 loop\n"), "bad.nc:2: o100 without a keyword (sub, call, if, while, repeat, ...)");
+  EXPECT_EQ(error_of("G1 X#\n"), "bad.nc:1: a value is missing at the end of the line");
+  EXPECT_EQ(error_of("\n\nG1 X[1+2\n"), "bad.nc:3: expected ']' at the end of the line");
+  EXPECT_EQ(error_of("#1 = 2\nM#1\n"), "bad.nc:2: a M code given by a parameter or an expression is not supported");
   EXPECT_EQ(error_of("G1 X1 (open\n"), "bad.nc:1: unclosed ( comment");
   EXPECT_EQ(error_of("X1 Y1\n"), "bad.nc:1: axis words with no motion mode (G0, G1, G2 or G3)");
   EXPECT_EQ(error_of("G0 X0 Y0\nG2 X1 Y1\n"), "bad.nc:2: an arc without I J or R");
@@ -394,6 +396,22 @@ TEST(Weld, CoarseDecimalsStayWithinTol) {
     EXPECT_TRUE(chk.ok) << chk.why;
     EXPECT_LE(chk.max_deviation, 0.02);
   }
+}
+
+TEST(Weld, ParameterAndOwordLinesAreCopiedAsRead) {
+  // A line with a parameter or an expression ends a run and is copied byte
+  // for byte; after the first O-word nothing is welded (a loop runs it again).
+  const std::string head = "G21 G90\n#<r> = 1 (radius)\nG0 X1 Y0\nF#<_hal[plasmac.cut-feed-rate]>\n";
+  const std::string tail = "G1  X[-#<r>]   Y-0.5\no1 repeat [2]\n" + circle_lines(0, 0, 1, 60, 0.5, 4) +
+                           "o1 endrepeat\n" + circle_lines(0, 0, 1, 60, 0.5, 4);
+  const std::string in = head + circle_lines(0, 0, 1, 60, 0.5, 4) + tail;
+  kerf::weld::WeldStats stats;
+  const std::string out = weld(in, 0.01, "band", stats);
+  EXPECT_GE(stats.arcs, 1u);
+  EXPECT_EQ(out.substr(0, head.size()), head);
+  ASSERT_GE(out.size(), tail.size());
+  EXPECT_EQ(out.substr(out.size() - tail.size()), tail);
+  EXPECT_LT(out.size(), in.size());  // the first half circle became arcs
 }
 
 TEST(Weld, RelativeRunsAreKept) {
