@@ -19,9 +19,24 @@ bool is_qtplasmac_directive(const std::string& name) {
   return false;
 }
 
+bool qtplasmac_pin(std::string_view pin, double cut_feed, double& value, std::string& reason) {
+  if (pin == "plasmac.cut-feed-rate") return value = cut_feed, true;
+  reason = "#<_hal[" + std::string(pin) + "]>: kerf has no such pin (of QtPlasmaC's, only plasmac.cut-feed-rate)";
+  return false;
+}
+
+// Each pin read is recorded for the report, at the line that reads it.
 GcodeFlow::GcodeFlow(const GcodeFile& g, GcodeParams::HalRead hal, std::size_t max_blocks,
                      std::map<std::string, Construct>& constructs, std::vector<std::string>& notes)
-    : g_(g), params_(std::move(hal)), max_blocks_(max_blocks), constructs_(constructs), notes_(notes) {}
+    : g_(g),
+      params_([this, hal = std::move(hal)](std::string_view pin, double& v, std::string& why) {
+        if (!hal(pin, v, why)) return false;
+        seen("#<_hal[" + std::string(pin) + "]>", "run", line());
+        return true;
+      }),
+      max_blocks_(max_blocks),
+      constructs_(constructs),
+      notes_(notes) {}
 
 bool GcodeFlow::fail(std::size_t line, std::string why) {
   error_ = g_.file + ":" + std::to_string(line) + ": " + why;

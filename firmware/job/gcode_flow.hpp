@@ -30,6 +30,10 @@ struct Construct;
 // own [cut] rules do that work.
 bool is_qtplasmac_directive(const std::string& name);
 
+// QtPlasmaC's #<_hal[plasmac.cut-feed-rate]> reads `cut_feed` (the cut feed
+// in the program's units); kerf has no other pin: false with the reason.
+bool qtplasmac_pin(std::string_view pin, double cut_feed, double& value, std::string& reason);
+
 class GcodeFlow {
  public:
   static constexpr std::size_t kDefaultMaxBlocks = 10'000'000;

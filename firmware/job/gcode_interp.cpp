@@ -81,10 +81,9 @@ class Interp {
 
   bool run(std::string& error) {
     error.clear();
-    const GcodeFlow* at = nullptr;
-    GcodeFlow flow(g_, [&](std::string_view pin, double& v, std::string& why) { return hal(pin, at->line(), v, why); },
-                   s_.max_blocks, out_.constructs, out_.notes);
-    at = &flow;
+    GcodeFlow flow(g_, [&](std::string_view pin, double& v, std::string& why) {
+      return qtplasmac_pin(pin, cut_feed_ / scale(), v, why);
+    }, s_.max_blocks, out_.constructs, out_.notes);
     if (!flow.prepare(error)) return false;
     const GBlock* bp = nullptr;
     std::span<const GWord> words;
@@ -134,30 +133,19 @@ class Interp {
     return out_.state.g5x[out_.state.coord][k] + (out_.state.g92_on ? out_.state.g92[k] : 0.0);
   }
 
-  // QtPlasmaC's #<_hal[plasmac.cut-feed-rate]>: the cut feed of the material in force.
-  bool hal(std::string_view pin, std::size_t line, double& v, std::string& why) {
-    if (pin != "plasmac.cut-feed-rate")
-      return why = "#<_hal[" + std::string(pin) + "]>: kerf has no such pin (of QtPlasmaC's, only plasmac.cut-feed-rate)",
-             false;
-    v = cut_feed_ / scale();
-    seen("#<_hal[plasmac.cut-feed-rate]>", "run", line);
-    return true;
-  }
   // QtPlasmaC's M190 Pn: material n, the one [tools] maps n to; P-1 is the default cut feed.
   void material_change(const Words& w) {
     const int n = static_cast<int>(std::lround(w.at('P')));
     seen("M190 P (material)", "run", w.line);
     const auto mat = s_.tool_material.find(n);
-    if (n == -1 || mat == s_.tool_material.end()) {
-      if (n != -1) note("M190 P" + std::to_string(n) + " (line " + std::to_string(w.line) +
-                        ") maps to no material: the cut settings are kept");
-      if (n == -1) cut_feed_ = s_.cut_feed;
-      return;
+    if (mat == s_.tool_material.end()) {
+      if (n == -1) return void(cut_feed_ = s_.cut_feed);
+      return note("M190 P" + std::to_string(n) + " (line " + std::to_string(w.line) +
+                  ") maps to no material: the cut settings are kept");
     }
     if (mat->second.feed_mm_min > 0) cut_feed_ = mat->second.feed_mm_min;
     Canon& t = emit(CanonKind::tool, w.line);
-    t.index = n;
-    t.value = mat->second.pierce_delay_s;
+    t.index = n, t.value = mat->second.pierce_delay_s;
   }
 
   bool check_letters(const Words& w) {
