@@ -96,7 +96,8 @@ void Controller::start(const ResumePoint& from) {
   // its dwells, pauses and waits are not run again. The actions just
   // before the path run only when nothing of it was cut (control/README.md).
   first_actions_ = i == 0 && distance(pierce_at_, job_.paths[path_].start) < kSamePoint;
-  actions_.replay_outputs(first_actions_ ? path_ : path_ + 1);
+  if (!actions_.replay_outputs(first_actions_ ? path_ : path_ + 1) && stop_request_.empty())
+    stop_request_ = actions_.error();  // a fault in the first cycle, before anything moves
 }
 
 std::int64_t Controller::job_segment_of(std::uint32_t seq) const {
@@ -258,6 +259,7 @@ void Controller::stop(State s, const std::string& why, double now_s) {
     torch_ = false;
     gpio_.set_torch(false);
   }
+  if (cfg_.outputs != nullptr) cfg_.outputs->all_off();  // the program's outputs go safe with the torch
   link_.command(hal::Command::abort);  // brake on the path, drop the queue; the link may be down
   state_ = s;
   report_.state = s;
@@ -381,9 +383,12 @@ void Controller::run_state(double now_s) {
       if (first_actions_) run_actions_or_travel(now_s);
       else begin_travel(pierce_at_);
       return;
-    case State::action:
-      if (actions_.step(now_s, start_pressed)) actions_done(now_s);
+    case State::action: {
+      const bool done = actions_.step(now_s, start_pressed);
+      if (!actions_.error().empty()) stop(State::fault, actions_.error(), now_s);  // an output or input failed
+      else if (done) actions_done(now_s);
       return;
+    }
     case State::travel:
       if (hold_pressed) {
         if (!queue_.empty() && link_ok(link_.command(hal::Command::hold))) {

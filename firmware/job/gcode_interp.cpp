@@ -328,6 +328,8 @@ class Interp {
       const int l = static_cast<int>(lv);
       if (w.any('E')) {
         if (l != 0) return refuse("M66 E (analog input) supports only L0");
+        if (!io_number(w.at('E'))) return refuse("M66 E must be an input number 0..255");
+        out_.analog_inputs.emplace(static_cast<int>(std::lround(w.at('E'))), line);
         seen("M66 E", "ignored", line);
         return true;
       }
