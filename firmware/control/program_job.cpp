@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <set>
 #include <utility>
 
 #include "control/cut_rules.hpp"
@@ -122,11 +121,14 @@ bool machine_can_run(job::GcodeProgram& prog, const MachineIo& io, std::string& 
       return false;
     }
   // Each ignored analog number, once, in the notes (printed at load and in the report).
-  std::set<std::pair<std::string, int>> noted;
+  std::vector<std::pair<std::string, int>> noted;  // once a number, at its first line
   auto note = [&](const char* what, int n, std::size_t line) {
-    if (noted.insert({what, n}).second)
-      prog.interp.notes.push_back(std::string(what) + " " + std::to_string(n) +
-                                  " ignored ([analog] ignore), first at line " + std::to_string(line));
+    if (std::find(noted.begin(), noted.end(), std::make_pair(std::string(what), n)) != noted.end()) return;
+    noted.emplace_back(what, n);
+    const std::string text = std::string(what) + " " + std::to_string(n) +
+                             " ignored ([analog] ignore), first at line " + std::to_string(line);
+    if (std::find(prog.interp.notes.begin(), prog.interp.notes.end(), text) == prog.interp.notes.end())
+      prog.interp.notes.push_back(text);
   };
   for (const JobAction& a : prog.actions)
     if (a.kind == job::CanonKind::analog_out) note("analog output", a.index, a.line);
