@@ -279,5 +279,37 @@ TEST(ControllerResume, AnOffGridPointInsideAnArcCutsItsRestOnTheCircle) {
   }
 }
 
+// A rest that emit_on_grid splits in two (a tiny arc whose centre is off the
+// grid: its sweep would change by more than 0.5 rad on the grid): two board
+// segments for one job segment, which is completed once, after the second.
+TEST(ControllerResume, ARestSplitInTwoCompletesItsSegmentOnce) {
+  hal::SegmentCommand arc;
+  arc.kind = SegmentKind::arc;
+  arc.end = {0.001, 0};
+  arc.centre = {0, 0.0003};
+  arc.dir = 1;
+  arc.feed = 5.0;
+  hal::SegmentCommand line = arc;
+  line.kind = SegmentKind::line;
+  line.end = {0.01, 0};
+  line.dir = 0;
+  control::Job job;
+  control::CutPath p;
+  p.start = {-0.001, 0};
+  p.segments = {arc, line};
+  job.paths = {p};
+  const control::ResumedSegment rest = control::resume_segment(arc, p.start, {-0.0010427, 0.0002478});
+  ASSERT_EQ(rest.count, 2);  // the case this test is about
+  FakeGpio gpio;
+  control::ResumePoint from;
+  from.first = 0;
+  from.from = {-0.0010427, 0.0002478};
+  const auto r = simulated::run_sim_machine(job, fast_cut(), {}, gpio, nullptr, from);
+  EXPECT_EQ(r.run.state, State::done) << r.run.reason;
+  EXPECT_EQ(r.executed, (std::vector<std::int64_t>{0, 1}));
+  EXPECT_EQ(r.run.completed_this_run, 2u);
+  EXPECT_EQ(r.run.last_completed, 1);
+}
+
 }  // namespace
 }  // namespace kerf::test
