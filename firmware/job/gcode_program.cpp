@@ -153,6 +153,7 @@ bool build_program(const GcodeFile& g, const InterpSettings& settings, const Int
   out.interp.constructs = it.constructs;  // not the canonical moves: the points hold them
   out.interp.notes = it.notes;
   out.interp.state = it.state;
+  out.interp.analog_inputs = it.analog_inputs;
   if (out.paths.empty()) {
     error = g.file + ": no cut moves (G1/G2/G3" + (out.dry_run ? std::string(")") : " with the torch on)");
     return false;
