@@ -1,5 +1,6 @@
 #include "job/gcode_interp.hpp"
 #include "job/gcode_flow.hpp"
+#include "job/gcode_names.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -51,24 +52,6 @@ struct Words {
   bool g_has(int c) const { return std::find(g.begin(), g.end(), c) != g.end(); }
   bool m_has(int c) const { return std::find(m.begin(), m.end(), c) != m.end(); }
 };
-
-// A word's value as written in messages: %g.
-struct WordValue {
-  char text[32];
-  operator const char*() const { return text; }
-};
-WordValue word_value(double v) {
-  WordValue w;
-  std::snprintf(w.text, sizeof w.text, "%g", v);
-  return w;
-}
-
-std::string code_name(char letter, int c10) {
-  char buf[24];
-  if (c10 % 10 == 0) std::snprintf(buf, sizeof buf, "%c%d", letter, c10 / 10);
-  else std::snprintf(buf, sizeof buf, "%c%d.%d", letter, c10 / 10, c10 % 10);
-  return buf;
-}
 
 class Interp {
  public:
