@@ -71,6 +71,7 @@ bool GcodeFlow::match(std::string& error) {
     Oword kind;
     std::size_t last_branch;
   };
+  if (codes_.empty()) return true;  // a plain program: nothing to match
   std::vector<Open> stack;
   partner_.assign(g_.blocks.size(), 0);
   next_branch_.assign(g_.blocks.size(), 0);

@@ -36,8 +36,6 @@ bool qtplasmac_pin(std::string_view pin, double cut_feed, double& value, std::st
 
 class GcodeFlow {
  public:
-  static constexpr std::size_t kDefaultMaxBlocks = 10'000'000;
-
   GcodeFlow(const GcodeFile& g, GcodeParams::HalRead hal, std::size_t max_blocks,
             std::map<std::string, Construct>& constructs, std::vector<std::string>& notes);
 
@@ -46,7 +44,6 @@ class GcodeFlow {
   // The next block to run, with its words' values: false at the end of the
   // file, or on an error (then `error` is "FILE:LINE: reason").
   bool next(const GBlock*& block, std::span<const GWord>& words, std::string& error);
-  std::size_t blocks_run() const { return run_; }
   // The line of the block being run (for what a parameter read records).
   std::size_t line() const { return pc_ < g_.blocks.size() ? g_.blocks[pc_].line : 0; }
 
