@@ -314,9 +314,13 @@ bool GcodeFlow::next(const GBlock*& block, std::span<const GWord>& words, std::s
       ++pc_;
       continue;
     }
-    if (++run_ > max_blocks_)
-      return fail(b.line, "the program runs more than " + std::to_string(max_blocks_) +
-                              " blocks (a loop that never ends?)"), error = error_, false;
+    // Only what loops run again counts: a straight file of any length is never refused.
+    if (++run_ > g_.blocks.size() + max_blocks_) {
+      fail(b.line, "loops run more than " + std::to_string(max_blocks_) +
+                       " blocks beyond the file's own (a loop that never ends?)");
+      error = error_;
+      return false;
+    }
     if (!b.dynamic) {
       ++pc_;
       block = &b;

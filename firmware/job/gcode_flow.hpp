@@ -7,9 +7,10 @@
 // (job/gcode_interp.hpp) gives them their meaning.
 //
 // On a line, every parameter is read before any of its assignments takes
-// effect (LinuxCNC's rule). The blocks run are counted, and a program that
-// runs more than `max_blocks` (a loop that never ends) is refused at the
-// block that passes the cap: nothing runs blind, nothing hangs.
+// effect (LinuxCNC's rule). The blocks run are counted, and a program whose
+// loops run more than `max_blocks` beyond the file's own blocks (a loop that
+// never ends) is refused at the block that passes the cap: nothing runs
+// blind, nothing hangs, and a long straight file is never refused.
 #pragma once
 
 #include <cstddef>

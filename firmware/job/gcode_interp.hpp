@@ -79,7 +79,7 @@ struct InterpSettings {
   int mist_output = -1;       // M7
   int flood_output = -1;      // M8
   double cut_feed = 3000;     // mm/min: [cut] feed, what #<_hal[plasmac.cut-feed-rate]> reads with no material
-  std::size_t max_blocks = 10'000'000;  // blocks run (loops included) before a program is refused
+  std::size_t max_blocks = 2'000'000;  // blocks that loops run beyond the file's own before it is refused
 };
 
 // How a construct was handled, for the run report.

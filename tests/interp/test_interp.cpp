@@ -145,4 +145,21 @@ TEST(InterpStrict, KerfRunRefusesAnUnconfiguredUserMcodeWithTheKeyToAdd) {
                    "\"dwell\" or \"ignore\" to the configuration");
 }
 
+// The loop cap counts only what loops run again: a straight file longer than
+// the cap runs (a 10-million-line laser job is a correct program), while the
+// same cap still stops a loop (the loop_cap golden).
+TEST(InterpLoopCap, AStraightFileLongerThanTheCapRuns) {
+  InterpSettings s = settings();
+  s.max_blocks = 1000;
+  std::string text = "G0 X0 Y0\nM3\n";
+  for (int i = 1; i <= 3000; ++i) text += "G1 X" + std::to_string(i % 50) + " Y" + std::to_string(i % 7) + " F600\n";
+  Interpretation it;
+  std::string error;
+  ASSERT_TRUE(interpret(parse_gcode(text, "long.ngc"), s, MachineState{}, it, error)) << error;
+  EXPECT_GE(it.canon.size(), 3000u);
+  Interpretation looped;
+  EXPECT_FALSE(interpret(parse_gcode("o1 while [1]\nG1 X1 F600\no1 endwhile\n", "w.ngc"), s, MachineState{}, looped, error));
+  EXPECT_NE(error.find("w.ngc:"), std::string::npos) << error;
+}
+
 }  // namespace
