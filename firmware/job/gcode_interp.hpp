@@ -77,6 +77,7 @@ struct InterpSettings {
   int torch_output = -1;      // an M62..M65 P number that is the torch; -1: none
   int mist_output = -1;       // M7
   int flood_output = -1;      // M8
+  bool z_axis = false;        // the machine has a z axis: Z runs as moves (job/gcode_program.hpp)
 };
 
 // How a construct was handled, for the run report.
