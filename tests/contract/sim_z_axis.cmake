@@ -1,10 +1,15 @@
 # One G-code file through `kerf sim` on a machine with a z axis (see
 # CMakeLists.txt): it runs to done, sim_corpus_check passes on its trace and
 # report, and the report has the z moves and the final z the file asks for.
-# Set: KERF, EMULATOR, CHECK, CONFIG, FILE, TOL, OUT_DIR, Z_MOVES, FINAL_Z (mm).
+# Set: KERF, EMULATOR, CHECK, CONFIG, FILE, TOL, OUT_DIR, Z_MOVES, FINAL_Z (mm);
+# LINK (optional): --link, e.g. can (the third CiA 402 node drives z).
+set(link_args)
+if(LINK)
+  set(link_args --link ${LINK})
+endif()
 file(MAKE_DIRECTORY ${OUT_DIR})
 execute_process(
-  COMMAND ${EMULATOR} ${KERF} sim ${FILE} --config ${CONFIG} --tol ${TOL} --speed 0
+  COMMAND ${EMULATOR} ${KERF} sim ${FILE} --config ${CONFIG} ${link_args} --tol ${TOL} --speed 0
           --trace ${OUT_DIR}/trace.csv --report ${OUT_DIR}/report.json
   OUTPUT_VARIABLE out ERROR_VARIABLE err RESULT_VARIABLE rc)
 message("${out}${err}")
