@@ -83,7 +83,8 @@ class Builder {
       c.first_line = line;
     };
     record("Z move", "run as a move at rest (z axis)", out_.z_moves, first_z_line_);
-    record("Z with the torch on", "ran as plunge then XY: kerf moves Z at rest", ramps_, first_ramp_line_);
+    record("Z with the torch on", "ran as plunge then XY: kerf moves Z at rest (torch off, pierced again)", ramps_,
+           first_ramp_line_);
   }
   void add(Vec2<double> q, std::size_t line, double feed) {
     io::PointFile& p = out_.points;

@@ -19,7 +19,8 @@
 // (ProgramPath::after: the retract comes before a tool change); the rest
 // lead to the next path (ProgramPath::before). A feed move that changes Z
 // with the torch on (a helical ramp) ends the path, runs Z at rest, then cuts
-// its XY as the first move of the next path.
+// its XY as the first move of the next path (the torch goes off for the Z
+// move and the next path is pierced again).
 // Each point carries the feed of the move that reaches it (programmed F, or
 // the material's, times QtPlasmaC's `M67 E3` feed %), so a feed change inside
 // a path neither splits it nor waits for the next one. Each path carries the
