@@ -5,6 +5,7 @@
 #include <string>
 
 #include "control/fit_paths.hpp"
+#include "control/machine_config.hpp"
 #include "control/program_job.hpp"
 #include "job/gcode_program.hpp"
 #include "io/options.hpp"
@@ -46,7 +47,7 @@ int run_job(const RunOptions& opts, const char* who, RunCheck check, LinesOpener
       return kExitUsage;
     }
     if (!job::read_gcode_program(opts.job, config::interp_settings(cfg, true), state, prog, error) ||
-        !control::machine_can_run(prog, error)) {
+        !control::machine_can_run(prog, control::machine_io(cfg), error)) {
       std::fprintf(stderr, "%s\n", error.c_str());
       return kExitUsage;
     }

@@ -161,6 +161,7 @@ bool parse(const std::string& text, const std::string& display_name, Config& out
     check_machine(machine, c.machine);
     check_link(link, c.link, machine, c.machine);
     check_gpio(gpio_lines, problems);
+    check_program_outputs(gpio_lines, c.program, problems);
     check_cut(cut, c.cut, machine, c.machine);
   }
   if (problems.any()) {

@@ -78,11 +78,12 @@ struct Cut {
 
 // What the G-code interpreter takes from the configuration (config/program_section.cpp):
 // [tools] N = "material", [materials.NAME] feed/pierce_delay, [mcodes.MNNN]
-// action/output/seconds, [outputs] torch/mist/flood.
+// action/output/seconds, [outputs] torch/mist/flood, [analog] ignore.
 struct Program {
   std::map<int, job::Material> tool_material;
   std::map<int, job::UserMcode> mcodes;
   int torch_output = -1, mist_output = -1, flood_output = -1;
+  std::vector<int> analog_ignore;  // analog numbers (M67/M68 E, M66 E) kerf run accepts and ignores
 };
 
 struct Sim {

@@ -1,6 +1,7 @@
 // The [gpio] section: the default chip, one table per line, and the limit
 // switches as an array of tables.
 #include <algorithm>
+#include <string>
 #include <string_view>
 
 #include "config/sections.hpp"
@@ -18,13 +19,17 @@ std::string bare_chip(std::string chip) {
   return chip;
 }
 
-// Reads one line's table (`path`: gpio.torch, gpio.limit[0], ...).
+// Reads one line's table (`path`: gpio.torch, gpio.limit[0], ...). With
+// `number` (gpio.output[i], gpio.input[i]) the table also holds the program
+// number (M62..M66 P), required.
 hal::GpioLineConfig read_line(const toml::table& t, const std::string& path, std::uint32_t line,
                               const std::string& default_chip, bool is_output, Problems& problems,
-                              std::vector<LineUse>& uses) {
+                              std::vector<LineUse>& uses, int* number = nullptr) {
   TableReader r(t, path, line, problems);
   hal::GpioLineConfig c;
   c.used = true;
+  if (number != nullptr && !r.integer("number", *number, 0, 255) && !r.has("number"))
+    problems.add(line, path, std::string("needs number (the ") + (is_output ? "M62..M65" : "M66") + " P number)");
   c.chip = default_chip;
   r.string("chip", c.chip);
   const bool has_offset = r.integer("offset", c.offset, 0, kMaxOffset);
@@ -51,7 +56,7 @@ hal::GpioLineConfig read_line(const toml::table& t, const std::string& path, std
   if (has_offset || has_name) {
     c.offset = has_offset ? c.offset : -1;
     uses.push_back({path, bare_chip(c.chip), c.offset, has_offset ? "" : c.name,
-                    r.line(has_offset ? "offset" : "name")});
+                    r.line(has_offset ? "offset" : "name"), -1, is_output, 0});
   }
   return c;
 }
@@ -61,6 +66,47 @@ struct NamedLine {
   hal::GpioLineConfig hal::GpioConfig::*field;
   bool is_output;
 };
+
+// An array of line tables ([[gpio.limit]], [[gpio.output]], [[gpio.input]]):
+// `each(table, path, line)` for every table, at most `max` of them.
+template <class Each>
+void read_line_array(TableReader& r, const char* key, const char* expected, std::size_t max, Each each) {
+  const toml::array* lines = r.array(key, expected);
+  if (lines == nullptr) return;
+  for (std::size_t i = 0; i < lines->size(); ++i) {
+    const toml::node& node = *lines->get(i);
+    const std::string path = r.key_path(key) + "[" + std::to_string(i) + "]";
+    const std::uint32_t line = line_of(node, r.line(key));
+    if (i == max) {
+      r.problems().add(line, r.key_path(key),
+                       "at most " + std::to_string(max) + " " + key + " lines, got " + std::to_string(lines->size()));
+      return;
+    }
+    if (const toml::table* t = node.as_table()) each(*t, path, line);
+    else r.problems().add(line, path, std::string("expected a table, got ") + type_phrase(node));
+  }
+}
+
+// [[gpio.output]] / [[gpio.input]]: numbered program lines, each number once.
+void read_program_lines(TableReader& r, const char* key, bool is_output, const std::string& chip,
+                        std::vector<hal::GpioProgramLine>& out, std::vector<LineUse>& uses) {
+  const std::string expected = std::string("an array of tables ([[gpio.") + key + "]])";
+  read_line_array(r, key, expected.c_str(), 256, [&](const toml::table& t, const std::string& path, std::uint32_t line) {
+    hal::GpioProgramLine p;
+    p.number = -1;
+    p.line = read_line(t, path, line, chip, is_output, r.problems(), uses, &p.number);
+    if (p.number < 0) return;
+    for (const hal::GpioProgramLine& q : out)
+      if (q.number == p.number)
+        r.problems().add(line_of(*t.get("number"), line), path + ".number",
+                         std::string(key) + " " + std::to_string(p.number) + " is configured twice");
+    out.push_back(p);
+    if (!uses.empty() && uses.back().path == path) {
+      uses.back().number = p.number;
+      uses.back().number_line = line_of(*t.get("number"), line);
+    }
+  });
+}
 
 }  // namespace
 
@@ -83,26 +129,13 @@ void read_gpio(TableReader& r, hal::GpioConfig& gpio, std::vector<LineUse>& uses
       gpio.*l.field = read_line(*t, r.key_path(l.key), line_of(*t, r.line(l.key)), chip,
                                 l.is_output, r.problems(), uses);
   }
-  if (const toml::array* limits = r.array("limit", "an array of tables ([[gpio.limit]])")) {
-    gpio.limits.clear();
-    for (std::size_t i = 0; i < limits->size(); ++i) {
-      const toml::node& node = *limits->get(i);
-      const std::string path = r.key_path("limit") + "[" + std::to_string(i) + "]";
-      const std::uint32_t line = line_of(node, r.line("limit"));
-      if (i == hal::kMaxLimitLines) {
-        r.problems().add(line, r.key_path("limit"),
-                         "at most " + std::to_string(hal::kMaxLimitLines) + " limit lines, got " +
-                             std::to_string(limits->size()));
-        break;
-      }
-      const toml::table* t = node.as_table();
-      if (!t) {
-        r.problems().add(line, path, std::string("expected a table, got ") + type_phrase(node));
-        continue;
-      }
-      gpio.limits.push_back(read_line(*t, path, line, chip, false, r.problems(), uses));
-    }
-  }
+  if (r.has("limit")) gpio.limits.clear();
+  read_line_array(r, "limit", "an array of tables ([[gpio.limit]])", hal::kMaxLimitLines,
+                  [&](const toml::table& t, const std::string& path, std::uint32_t line) {
+                    gpio.limits.push_back(read_line(t, path, line, chip, false, r.problems(), uses));
+                  });
+  read_program_lines(r, "output", true, chip, gpio.outputs, uses);
+  read_program_lines(r, "input", false, chip, gpio.inputs, uses);
   r.finish();
 }
 
@@ -128,6 +161,13 @@ void check_gpio(const std::vector<LineUse>& uses, Problems& problems) {
       break;
     }
   }
+}
+
+void check_program_outputs(const std::vector<LineUse>& uses, const Program& p, Problems& problems) {
+  for (const LineUse& u : uses)
+    if (u.output && u.number >= 0 && u.number == p.torch_output)
+      problems.add(u.number_line, u.path + ".number",
+                   "output " + std::to_string(u.number) + " is outputs.torch, which gpio.torch drives: remove one");
 }
 
 }  // namespace kerf::config

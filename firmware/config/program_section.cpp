@@ -4,6 +4,7 @@
 //   [materials.mild-3mm] feed = 2500 (mm/min), pierce_delay = 0.4 (s)
 //   [mcodes.M101]        action = "on" | "off" | "dwell" | "ignore", output = 3, seconds = 0.5
 //   [outputs]            torch = 0, mist = 1, flood = 2   (M62..M65 P numbers)
+//   [analog]             ignore = [0, 1]   (M67/M68 E and M66 E numbers kerf run ignores)
 //   [sim]                operator_delay = 1.0 (s), start = [x, y] (mm)
 #include <cstdlib>
 #include <string>
@@ -96,6 +97,26 @@ void read_mcodes(TableReader& root, Program& p) {
   }
 }
 
+// [analog] ignore = [0, 1]: kerf has no analog lines; these analog numbers
+// (M67/M68 E outputs, M66 E inputs) are accepted by kerf run and ignored.
+void read_analog(TableReader& root, Program& p) {
+  const toml::table* t = root.table("analog");
+  if (!t) return;
+  TableReader r(*t, "analog", line_of(*t, 1), root.problems());
+  if (const toml::array* a = r.array("ignore", "an array of analog numbers, e.g. [0, 1]")) {
+    for (const toml::node& n : *a) {
+      const auto* k = n.as_integer();
+      if (k == nullptr || k->get() < 0 || k->get() > 255) {
+        r.problem("ignore", "expected analog numbers 0..255, got " +
+                                (k != nullptr ? std::to_string(k->get()) : std::string(type_phrase(n))));
+        break;
+      }
+      p.analog_ignore.push_back(static_cast<int>(k->get()));
+    }
+  }
+  r.finish();
+}
+
 }  // namespace
 
 void read_program(TableReader& root, Program& p, Sim& sim) {
@@ -103,6 +124,7 @@ void read_program(TableReader& root, Program& p, Sim& sim) {
   read_materials(root, materials);
   read_tools(root, materials, p);
   read_mcodes(root, p);
+  read_analog(root, p);
   if (const toml::table* t = root.table("outputs")) {
     TableReader r(*t, "outputs", line_of(*t, 1), root.problems());
     r.integer("torch", p.torch_output, 0, 255);

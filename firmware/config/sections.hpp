@@ -20,6 +20,9 @@ struct LineUse {
   int offset = -1;
   std::string name;
   std::uint32_t line = 0;  // of the offset, or of the name
+  int number = -1;         // [[gpio.output]] / [[gpio.input]]: the program number
+  bool output = false;
+  std::uint32_t number_line = 0;
 };
 
 void read_machine(TableReader& r, Machine& m);
@@ -36,6 +39,9 @@ void check_machine(TableReader& machine, const Machine& m);
 void check_link(TableReader& link_reader, const Link& link, const TableReader& machine,
                 const Machine& m);
 void check_gpio(const std::vector<LineUse>& uses, Problems& problems);
+// A program output that is also [outputs] torch, mist or flood's number is
+// fine for mist/flood (M7/M8 drive it) but not for the torch (gpio.torch is it).
+void check_program_outputs(const std::vector<LineUse>& uses, const Program& p, Problems& problems);
 void check_cut(TableReader& cut_reader, const Cut& cut, TableReader& machine, const Machine& m);
 
 }  // namespace kerf::config

@@ -63,7 +63,7 @@ void Controller::start(const ResumePoint& from) {
   std::size_t longest = 0;
   for (const CutPath& p : job_.paths) longest = p.segments.size() > longest ? p.segments.size() : longest;
   queue_.clear();
-  queue_.reserve(longest + 1);
+  queue_.reserve(longest + 2);  // + a resumed segment's split (resume_segment.hpp)
   job_of_wire_.clear();
   job_of_wire_.reserve(n + job_.paths.size() + 1);
   next_seg_ = from.first;
@@ -75,9 +75,18 @@ void Controller::start(const ResumePoint& from) {
     if (journal_ && !journal_->state().finished) journal_->finished();
     return;
   }
-  // Resumed at (or within a count of) a segment's end: that segment was cut
-  // whole; record it and start at the next one.
-  if (distance(from.from, job_.segment(next_seg_).end) < kSamePoint) {
+  // Resumed inside a segment: its rest on the link's grid, by the fit's
+  // contract (control/resume_segment.hpp). At (within a count of) or past its
+  // end it was cut whole; record it and start at the next one.
+  resumed_.clear();
+  queue_extra_ = 0;
+  const Vec2<double> seg_start = job_.segment_start(next_seg_);
+  if (distance(from.from, seg_start) > kSamePoint) {
+    resumed_ = resume_segment(job_.segment(next_seg_), seg_start, from.from);
+    pierce_at_ = resumed_.from;
+  }
+  if (resumed_.whole || distance(from.from, job_.segment(next_seg_).end) < kSamePoint) {
+    resumed_.clear();
     if (journal_) journal_->completed(static_cast<std::uint32_t>(next_seg_));
     report_.last_completed = static_cast<std::int64_t>(next_seg_);
     ++report_.completed_this_run;
@@ -96,12 +105,25 @@ void Controller::start(const ResumePoint& from) {
   // its dwells, pauses and waits are not run again. The actions just
   // before the path run only when nothing of it was cut (control/README.md).
   first_actions_ = i == 0 && distance(pierce_at_, job_.paths[path_].start) < kSamePoint;
-  actions_.replay_outputs(first_actions_ ? path_ : path_ + 1);
+  if (!actions_.replay_outputs(first_actions_ ? path_ : path_ + 1) && stop_request_.empty())
+    stop_request_ = actions_.error();  // a fault in the first cycle, before anything moves
 }
 
+// job_of_wire_: the job segment k of each wire segment; -1 a rapid; -2 - k
+// the first part of k's rest split in two on resume (it does not complete k).
 std::int64_t Controller::job_segment_of(std::uint32_t seq) const {
   if (seq <= base_ || seq > next_seq_) return -1;
-  return job_of_wire_[seq - base_ - 1];
+  const std::int64_t v = job_of_wire_[seq - base_ - 1];
+  return v < -1 ? -v - 2 : v;
+}
+
+bool Controller::completes_job_segment(std::uint32_t seq) const {
+  return seq > base_ && seq <= next_seq_ && job_of_wire_[seq - base_ - 1] >= 0;
+}
+
+std::int64_t Controller::wire_job(std::size_t i) const {
+  const auto k = static_cast<std::int64_t>(next_seg_ + (i > queue_extra_ ? i - queue_extra_ : 0));
+  return i < queue_extra_ ? -k - 2 : k;
 }
 
 void Controller::cycle(double now_s) {
@@ -214,7 +236,7 @@ void Controller::record_completions() {
   while (seen_executed_ < st_.last_executed) {
     ++seen_executed_;
     const std::int64_t k = job_segment_of(seen_executed_);
-    if (k < 0) continue;
+    if (k < 0 || !completes_job_segment(seen_executed_)) continue;
     if (journal_ && !journal_->completed(static_cast<std::uint32_t>(k))) {
       journal_failed_ = true;
       return;
@@ -259,6 +281,7 @@ void Controller::stop(State s, const std::string& why, double now_s) {
     torch_ = false;
     gpio_.set_torch(false);
   }
+  if (cfg_.outputs != nullptr) cfg_.outputs->all_off();  // the program's outputs go safe with the torch
   link_.command(hal::Command::abort);  // brake on the path, drop the queue; the link may be down
   state_ = s;
   report_.state = s;
@@ -327,6 +350,13 @@ void Controller::begin_cut() {
   queue_.clear();
   std::size_t i = 0;
   const std::size_t p = job_.path_of(next_seg_, i);
+  queue_extra_ = 0;
+  if (resumed_.count > 0) {  // the first segment's rest, from the resume point
+    for (int k = 0; k < resumed_.count; ++k) queue_.push_back(resumed_.segments[k]);
+    queue_extra_ = static_cast<std::size_t>(resumed_.count - 1);
+    resumed_.clear();
+    ++i;
+  }
   for (; i < job_.paths[p].segments.size(); ++i) queue_.push_back(job_.paths[p].segments[i]);
   sent_ = 0;
   started_ = finish_sent_ = false;
@@ -348,7 +378,7 @@ bool Controller::pump() {
     has_tail_ = true;
     ++next_seq_;
     if (c.z_move) ++report_.z_moves;
-    job_of_wire_.push_back(block_ == Block::cut ? static_cast<std::int64_t>(next_seg_ + sent_) : -1);
+    job_of_wire_.push_back(block_ == Block::cut ? wire_job(sent_) : -1);
     block_last_seq_ = next_seq_;
     ++sent_;
   }
@@ -366,7 +396,8 @@ bool Controller::block_done() const {
 
 void Controller::path_finished(double now_s) {
   set_torch(false, now_s);
-  next_seg_ += queue_.size();
+  next_seg_ += queue_.size() - queue_extra_;
+  queue_extra_ = 0;
   const std::vector<hal::SegmentCommand>& after = job_.paths[path_].after;
   ++path_;
   if (path_ < job_.paths.size()) pierce_at_ = job_.paths[path_].start;
@@ -412,9 +443,12 @@ void Controller::run_state(double now_s) {
       if (first_actions_) run_actions_or_travel(now_s);
       else begin_travel(pierce_at_);
       return;
-    case State::action:
-      if (actions_.step(now_s, start_pressed)) actions_done(now_s);
+    case State::action: {
+      const bool done = actions_.step(now_s, start_pressed);
+      if (!actions_.error().empty()) stop(State::fault, actions_.error(), now_s);  // an output or input failed
+      else if (done) actions_done(now_s);
       return;
+    }
     case State::travel:
       if (hold_pressed) {
         if (!queue_.empty() && link_ok(link_.command(hal::Command::hold))) {

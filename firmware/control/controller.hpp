@@ -38,6 +38,7 @@
 #include "control/job_actions.hpp"
 #include "control/following_error.hpp"
 #include "control/journal.hpp"
+#include "control/resume_segment.hpp"
 #include "control/safety_latch.hpp"
 #include "kerf/hal/gpio.hpp"
 #include "kerf/hal/segment_link.hpp"
@@ -119,6 +120,8 @@ class Controller {
   const RunReport& report() const { return report_; }
   // The job segment a board sequence number carries; -1 for a rapid or unknown.
   std::int64_t job_segment_of(std::uint32_t seq) const;
+  // False for a rapid and for the first part of a resumed segment split in two.
+  bool completes_job_segment(std::uint32_t seq) const;
 
  private:
   enum class Block : std::uint8_t { none, rapid, cut };
@@ -132,6 +135,7 @@ class Controller {
   void begin_pierce(double now_s);
   void begin_cut();
   bool pump();  // sends what the board has room for; false on a link error
+  std::int64_t wire_job(std::size_t queue_index) const;  // job_of_wire_'s entry for queue_[i]
   bool block_done() const;
   void record_completions();
   void record_cut_to();     // while the torch is on: how far the cut has come
@@ -187,6 +191,8 @@ class Controller {
   std::size_t sent_ = 0;
   bool started_ = false, finish_sent_ = false;
   std::uint32_t block_last_seq_ = 0;
+  std::size_t queue_extra_ = 0;  // wire segments beyond one for the queue's first job segment (resume split)
+  ResumedSegment resumed_;       // the rest of the segment a run resumes inside, until its block is queued
   Vec2<double> tail_{};  // where the last segment sent ends
   bool has_tail_ = false;
   bool after_path_ = false;  // the travel block is the moves after a path (then its actions)

@@ -25,6 +25,11 @@ double Controller::pierce_delay() const {
 }
 
 void Controller::finish_job(double now_s) {
+  // The program's outputs end off, as the torch does.
+  if (cfg_.outputs != nullptr && !cfg_.outputs->all_off()) {
+    stop(State::fault, cfg_.outputs->last_error(), now_s);
+    return;
+  }
   state_ = State::done;
   report_.state = State::done;
   if (journal_ && !journal_->finished()) {

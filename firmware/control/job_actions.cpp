@@ -4,10 +4,40 @@
 
 namespace kerf::control {
 
-void MemoryOutputs::set_digital(int index, bool on) { digital.emplace_back(index, on); }
-void MemoryOutputs::set_analog(int index, double value) { analog.emplace_back(index, value); }
-bool MemoryOutputs::digital_input(int index) {
-  return index >= 0 && static_cast<std::size_t>(index) < inputs.size() && inputs[static_cast<std::size_t>(index)];
+bool MemoryOutputs::set_digital(int index, bool on) {
+  digital.emplace_back(index, on);
+  return true;
+}
+bool MemoryOutputs::set_analog(int index, double value) {
+  analog.emplace_back(index, value);
+  return true;
+}
+bool MemoryOutputs::digital_input(int index, double, bool& value) {
+  value = index >= 0 && static_cast<std::size_t>(index) < inputs.size() && inputs[static_cast<std::size_t>(index)];
+  return true;
+}
+bool MemoryOutputs::all_off() {
+  ++all_off_calls;
+  return true;
+}
+
+bool ActionRunner::failed() {
+  if (error_.empty()) error_ = outputs_->last_error();  // the first failure is the one to tell
+  return false;
+}
+
+bool ActionRunner::set_digital(int index, bool on) {
+  return outputs_ == nullptr || outputs_->set_digital(index, on) || failed();
+}
+
+bool ActionRunner::set_analog(int index, double value) {
+  return outputs_ == nullptr || outputs_->set_analog(index, value) || failed();
+}
+
+bool ActionRunner::input(int index, double now_s) {
+  bool v = false;
+  if (outputs_ == nullptr) return false;
+  return outputs_->digital_input(index, now_s, v) ? v : failed();
 }
 
 void ActionRunner::begin(std::size_t path, double now_s) {
@@ -18,13 +48,18 @@ void ActionRunner::begin(std::size_t path, double now_s) {
   started_ = now_s;
 }
 
-void ActionRunner::replay_outputs(std::size_t path) {
+bool ActionRunner::replay_outputs(std::size_t path) {
+  // From the program's start: a stop turned every output off, and a restart
+  // after a reset (controller_safety.cpp) replays them all.
+  next_ = 0;
+  error_.clear();
+  bool ok = true;
   for (; next_ < job_.actions.size() && job_.actions[next_].before_path < path; ++next_) {
     const JobAction& a = job_.actions[next_];
-    if (outputs_ == nullptr) continue;
-    if (a.kind == job::CanonKind::digital_out) outputs_->set_digital(a.index, a.value != 0);
-    if (a.kind == job::CanonKind::analog_out) outputs_->set_analog(a.index, a.value);
+    if (a.kind == job::CanonKind::digital_out) ok = set_digital(a.index, a.value != 0) && ok;
+    if (a.kind == job::CanonKind::analog_out) ok = set_analog(a.index, a.value) && ok;
   }
+  return ok;
 }
 
 void ActionRunner::done(double now_s, const std::string& what) {
@@ -48,7 +83,7 @@ bool ActionRunner::step(double now_s, bool cycle_start_pressed) {
       started_ = now_s;
       if (start(a, now_s)) continue;
       waiting_ = true;
-      if (a.kind == job::CanonKind::wait_input && outputs_ != nullptr) last_input_ = outputs_->digital_input(a.index);
+      if (a.kind == job::CanonKind::wait_input) last_input_ = input(a.index, now_s);
       cycle_start_pressed = false;  // a press before the pause does not end it
     }
     if (!poll(a, now_s, cycle_start_pressed)) return false;
@@ -59,12 +94,12 @@ bool ActionRunner::step(double now_s, bool cycle_start_pressed) {
 bool ActionRunner::start(const JobAction& a, double now_s) {
   switch (a.kind) {
     case job::CanonKind::digital_out:
-      if (outputs_ != nullptr) outputs_->set_digital(a.index, a.value != 0);
+      set_digital(a.index, a.value != 0);
       done(now_s, "output " + std::to_string(a.index) + (a.value != 0 ? " on" : " off") +
                       (a.sync ? " (with motion)" : " (immediate)"));
       return true;
     case job::CanonKind::analog_out:
-      if (outputs_ != nullptr) outputs_->set_analog(a.index, a.value);
+      set_analog(a.index, a.value);
       done(now_s, format_text("analog output %d = %g", a.index, a.value));
       return true;
     case job::CanonKind::tool: done(now_s, "tool " + std::to_string(a.index)); return true;
@@ -72,7 +107,7 @@ bool ActionRunner::start(const JobAction& a, double now_s) {
     case job::CanonKind::end: done(now_s, "program end"); return true;
     case job::CanonKind::wait_input:
       if (a.mode == 0) {
-        const bool v = outputs_ != nullptr && outputs_->digital_input(a.index);
+        const bool v = input(a.index, now_s);
         done(now_s, format_text("input %d read: %d", a.index, v ? 1 : 0));
         return true;
       }
@@ -98,7 +133,7 @@ bool ActionRunner::poll(const JobAction& a, double now_s, bool cycle_start_press
     return true;
   }
   // M66 L1..L4.
-  const bool v = outputs_ != nullptr && outputs_->digital_input(a.index);
+  const bool v = input(a.index, now_s);
   const bool met = a.mode == 1 ? (v && !last_input_) : a.mode == 2 ? (!v && last_input_) : a.mode == 3 ? v : !v;
   last_input_ = v;
   const std::string head = "M66 P" + std::to_string(a.index) + " L" + std::to_string(a.mode);

@@ -18,28 +18,54 @@
 #include <vector>
 
 #include "control/job.hpp"
+#include "kerf/hal/gpio.hpp"
 
 namespace kerf::control {
 
-// The machine's program outputs and inputs (beyond the torch, on hal::Gpio).
+// The machine's program outputs and inputs (beyond the torch). Each call
+// returns false on an I/O error (last_error says which line): the
+// controller makes that a fault, as for the torch.
 class Outputs {
  public:
   virtual ~Outputs() = default;
-  virtual void set_digital(int index, bool on) = 0;
-  virtual void set_analog(int index, double value) = 0;
-  virtual bool digital_input(int index) = 0;
+  virtual bool set_digital(int index, bool on) = 0;
+  virtual bool set_analog(int index, double value) = 0;
+  // Reads input `index` at `now_s` (debounced on a real machine) into `value`.
+  virtual bool digital_input(int index, double now_s, bool& value) = 0;
+  // Every digital output off: a fault, an E-stop, the job's end.
+  virtual bool all_off() = 0;
+  virtual const char* last_error() const { return ""; }
 };
 
 // What the simulator and the tests use: remembers outputs; inputs are the
 // values set in `inputs` (false when absent).
 class MemoryOutputs : public Outputs {
  public:
-  void set_digital(int index, bool on) override;
-  void set_analog(int index, double value) override;
-  bool digital_input(int index) override;
+  bool set_digital(int index, bool on) override;
+  bool set_analog(int index, double value) override;
+  bool digital_input(int index, double now_s, bool& value) override;
+  bool all_off() override;
   std::vector<std::pair<int, bool>> digital;   // every switch, in order
   std::vector<std::pair<int, double>> analog;
   std::vector<bool> inputs;
+  int all_off_calls = 0;                        // all_off() does not add to `digital`
+};
+
+// kerf run's: the program lines of hal::Gpio ([[gpio.output]],
+// [[gpio.input]]). Analog numbers have no line: the ones the job uses were
+// checked at load against [analog] ignore (program_job.hpp), so set_analog
+// drives nothing.
+class GpioOutputs : public Outputs {
+ public:
+  explicit GpioOutputs(hal::Gpio& gpio) : gpio_(gpio) {}
+  bool set_digital(int index, bool on) override { return gpio_.set_output(index, on); }
+  bool set_analog(int, double) override { return true; }
+  bool digital_input(int index, double now_s, bool& value) override { return gpio_.read_input(index, now_s, value); }
+  bool all_off() override { return gpio_.outputs_off(); }
+  const char* last_error() const override { return gpio_.last_error(); }
+
+ private:
+  hal::Gpio& gpio_;
 };
 
 struct ActionEvent {
@@ -62,14 +88,21 @@ class ActionRunner {
   void begin(std::size_t path, double now_s);
   // Applies the outputs of every action before paths[path] without running
   // the rest (a resumed run: dwells, pauses and waits before the resume point are skipped).
-  void replay_outputs(std::size_t path);
+  // False when an output could not be set (error()).
+  bool replay_outputs(std::size_t path);
   bool pending() const { return next_ < end_; }
   bool paused() const { return waiting_ && job_.actions[next_].kind == job::CanonKind::pause; }
   // One cycle: runs what can run now; true once every pending action is done.
   bool step(double now_s, bool cycle_start_pressed);
   const std::vector<ActionEvent>& log() const { return log_; }
+  // The first output or input that failed ("gpio: output 3: ..."); empty while all is well.
+  const std::string& error() const { return error_; }
 
  private:
+  bool set_digital(int index, bool on);
+  bool set_analog(int index, double value);
+  bool input(int index, double now_s);  // false on error too (error_ says so)
+  bool failed();                        // keeps the outputs' first error; false
   bool start(const JobAction& a, double now_s);  // true: done at once
   bool poll(const JobAction& a, double now_s, bool cycle_start_pressed);
   void done(double now_s, const std::string& what);
@@ -81,6 +114,7 @@ class ActionRunner {
   bool waiting_ = false, last_input_ = false;
   double started_ = 0;
   std::vector<ActionEvent> log_;
+  std::string error_;
 };
 
 }  // namespace kerf::control

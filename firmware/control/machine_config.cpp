@@ -18,4 +18,13 @@ ControllerConfig controller_config(const config::Config& cfg) {
   return c;
 }
 
+MachineIo machine_io(const config::Config& cfg) {
+  MachineIo io;
+  for (const hal::GpioProgramLine& l : cfg.gpio.outputs) io.outputs.push_back(l.number);
+  for (const hal::GpioProgramLine& l : cfg.gpio.inputs) io.inputs.push_back(l.number);
+  io.analog_ignore = cfg.program.analog_ignore;
+  io.bench = cfg.bench.enabled;
+  return io;
+}
+
 }  // namespace kerf::control

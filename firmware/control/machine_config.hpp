@@ -5,9 +5,13 @@
 
 #include "config/config.hpp"
 #include "control/controller.hpp"
+#include "control/program_job.hpp"
 
 namespace kerf::control {
 
 ControllerConfig controller_config(const config::Config& cfg);
+
+// The program lines kerf run's machine has (program_job.hpp's check at load).
+MachineIo machine_io(const config::Config& cfg);
 
 }  // namespace kerf::control

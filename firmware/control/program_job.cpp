@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include "control/cut_rules.hpp"
 #include "job/fit_job.hpp"
@@ -110,17 +111,63 @@ int fit_program_or_say(const job::GcodeProgram& prog, job::Criterion criterion, 
   return 0;
 }
 
-bool machine_can_run(const job::GcodeProgram& prog, std::string& error) {
-  for (const JobAction& a : prog.actions) {
-    const char* what = a.kind == job::CanonKind::digital_out  ? "a digital output"
-                       : a.kind == job::CanonKind::analog_out ? "an analog output"
-                       : a.kind == job::CanonKind::wait_input ? "a wait on an input (M66)"
-                                                              : nullptr;
-    if (what == nullptr) continue;
-    error = prog.points.file + ":" + std::to_string(a.line) + ": " + what +
-            ": kerf run has no program output or input lines yet (only the torch); kerf sim runs it";
-    return false;
+namespace {
+
+bool has(const std::vector<int>& numbers, int n) { return std::find(numbers.begin(), numbers.end(), n) != numbers.end(); }
+
+// "" when the machine can run `a`; otherwise why not, with the key to add.
+std::string cannot_run(const JobAction& a, const MachineIo& io) {
+  const std::string n = std::to_string(a.index);
+  switch (a.kind) {
+    case job::CanonKind::digital_out:
+      if (io.bench) return "digital output " + n + ": a bench ([bench] enabled = true) runs motion only";
+      return has(io.outputs, a.index) ? ""
+                                      : "digital output " + n + " has no line: add [[gpio.output]] with number = " +
+                                            n + " (and its offset or name) to the configuration";
+    case job::CanonKind::wait_input:
+      return has(io.inputs, a.index) ? ""
+                                     : "input " + n + " (M66 P" + n + ") has no line: add [[gpio.input]] with number = " +
+                                           n + " (and its offset or name) to the configuration";
+    case job::CanonKind::analog_out:
+      return has(io.analog_ignore, a.index) ? ""
+                                            : "analog output " + n + " (M67/M68 E" + n +
+                                                  "): kerf has no analog lines: add " + n +
+                                                  " to [analog] ignore to run the program without it";
+    default: return "";
   }
+}
+
+}  // namespace
+
+bool machine_can_run(job::GcodeProgram& prog, const MachineIo& io, std::string& error) {
+  const std::string& file = prog.points.file;
+  for (const JobAction& a : prog.actions) {
+    const std::string why = cannot_run(a, io);
+    if (!why.empty()) {
+      error = file + ":" + std::to_string(a.line) + ": " + why;
+      return false;
+    }
+  }
+  for (const auto& [n, line] : prog.interp.analog_inputs)
+    if (!has(io.analog_ignore, n)) {
+      const std::string k = std::to_string(n);
+      error = file + ":" + std::to_string(line) + ": analog input " + k + " (M66 E" + k +
+              "): kerf has no analog lines: add " + k + " to [analog] ignore to run the program without it";
+      return false;
+    }
+  // Each ignored analog number, once, in the notes (printed at load and in the report).
+  std::vector<std::pair<std::string, int>> noted;  // once a number, at its first line
+  auto note = [&](const char* what, int n, std::size_t line) {
+    if (std::find(noted.begin(), noted.end(), std::make_pair(std::string(what), n)) != noted.end()) return;
+    noted.emplace_back(what, n);
+    const std::string text = std::string(what) + " " + std::to_string(n) +
+                             " ignored ([analog] ignore), first at line " + std::to_string(line);
+    if (std::find(prog.interp.notes.begin(), prog.interp.notes.end(), text) == prog.interp.notes.end())
+      prog.interp.notes.push_back(text);
+  };
+  for (const JobAction& a : prog.actions)
+    if (a.kind == job::CanonKind::analog_out) note("analog output", a.index, a.line);
+  for (const auto& [n, line] : prog.interp.analog_inputs) note("analog input", n, line);
   return true;
 }
 

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "control/fit_paths.hpp"
 #include "control/run_report.hpp"
@@ -19,11 +20,19 @@ int fit_program_or_say(const job::GcodeProgram& prog, job::Criterion criterion, 
                        double max_feed_mm_s, FittedJob& out, job::Numeric numeric = job::Numeric::floating,
                        const config::CutRules* rules = nullptr);
 
-// kerf run: false with "FILE:LINE: reason" for a program that needs what
-// the machine does not have yet: program outputs and inputs (M7/M8 with a
-// gas output, M62..M65 other than the torch, M66, M67/M68 other than the feed
-// %, user M-codes that switch an output). hal::Gpio drives only the torch.
-bool machine_can_run(const job::GcodeProgram& prog, std::string& error);
+// What kerf run's machine has for a program (the configuration's
+// [[gpio.output]] and [[gpio.input]] numbers, [analog] ignore, [bench]).
+struct MachineIo {
+  std::vector<int> outputs, inputs, analog_ignore;
+  bool bench = false;
+};
+
+// kerf run: false with "FILE:LINE: reason" and the configuration key to add
+// for a program that uses a digital output (M62..M65, M7/M8, a user M-code)
+// or an input (M66 P) with no line, or an analog number (M67/M68 E other
+// than QtPlasmaC's E3 feed %, M66 E) not in [analog] ignore; a bench runs
+// no program output at all. Each ignored analog number adds a note (once).
+bool machine_can_run(job::GcodeProgram& prog, const MachineIo& io, std::string& error);
 
 // The program's part of the run summary: dry run, constructs, notes.
 void describe_program(const job::GcodeProgram& prog, RunSummary& sum);

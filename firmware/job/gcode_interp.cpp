@@ -209,14 +209,22 @@ class Interp {
         case 930: return refuse("G93: inverse time feed is not supported");
         case 950: return refuse("G95: feed per revolution is not supported");
         case 200: case 210: break;  // done above
-        case 640:
+        case 640: {
+          // P: the path tolerance; Q: LinuxCNC's naive-CAM tolerance (collinear
+          // moves within Q merge into one). kerf's fit does both at once, so
+          // the path's tolerance is the least of P, Q and fit.tol (0: no bound).
           seen(w.any('P') ? "G64 P" : "G64", "recorded", line);
-          if (w.any('P')) {
-            const double p = w.at('P') * scale();
-            if (p < 0) return refuse("G64 P must be >= 0");
-            emit(CanonKind::tolerance, line).value = p > 0 ? std::min(p, s_.fit_tol) : s_.fit_tol;
+          if (w.any('Q')) seen("G64 Q", "run", line);
+          double tol = s_.fit_tol;
+          for (const char k : {'P', 'Q'}) {
+            if (!w.any(k)) continue;
+            const double v = w.at(k) * scale();
+            if (v < 0) return refuse(std::string("G64 ") + k + " must be >= 0");
+            if (v > 0) tol = std::min(tol, v);
           }
+          if (w.any('P') || w.any('Q')) emit(CanonKind::tolerance, line).value = tol;
           break;
+        }
         case 900: case 910: m_.relative = c == 910, seen(name, "recorded", line); break;
         case 901: case 911: m_.arc_absolute = c == 901, seen(name, "recorded", line); break;
         case 540: case 550: case 560: case 570: case 580: case 590: case 591: case 592: case 593:
@@ -328,6 +336,8 @@ class Interp {
       const int l = static_cast<int>(lv);
       if (w.any('E')) {
         if (l != 0) return refuse("M66 E (analog input) supports only L0");
+        if (!io_number(w.at('E'))) return refuse("M66 E must be an input number 0..255");
+        out_.analog_inputs.emplace(static_cast<int>(std::lround(w.at('E'))), line);
         seen("M66 E", "ignored", line);
         return true;
       }

@@ -91,6 +91,7 @@ struct Interpretation {
   std::vector<Canon> canon;
   std::map<std::string, Construct> constructs;  // "G54", "M6", "G64 P" ...
   std::vector<std::string> notes;               // once each: unmapped tools, unconfigured M-codes
+  std::map<int, std::size_t> analog_inputs;     // M66 E (L0, read and ignored): number -> first line
   MachineState state;                           // offsets after the program
 };
 

@@ -214,6 +214,7 @@ bool build_program(const GcodeFile& g, const InterpSettings& settings, const Int
   Builder(it, settings.z_axis, out).run(settings.start);
   out.interp.notes = it.notes;
   out.interp.state = it.state;
+  out.interp.analog_inputs = it.analog_inputs;
   if (out.paths.empty()) {
     error = g.file + ": no cut moves (G1/G2/G3" + (out.dry_run ? std::string(")") : " with the torch on)");
     return false;

@@ -52,6 +52,8 @@ bool check_lines(const config::Config& cfg, std::string& error) {
       if (line->used) return refuse(key, "a bench ([bench] enabled = true) runs motion only: remove this output");
     for (const auto& [key, number] : program_outputs)
       if (number >= 0) return refuse(key, "a bench ([bench] enabled = true) runs motion only: remove this output");
+    if (!cfg.gpio.outputs.empty())
+      return refuse("gpio.output", "a bench ([bench] enabled = true) runs motion only: remove these outputs");
   } else {
     const std::pair<const char*, const hal::GpioLineConfig*> cut_lines[] = {{"gpio.torch", &cfg.gpio.torch},
                                                                             {"gpio.arc_ok", &cfg.gpio.arc_ok}};

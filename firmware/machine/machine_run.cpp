@@ -40,6 +40,8 @@ int run_on_machine(const Job& job, const config::Config& cfg, hal::SegmentLink& 
 
   control::ControllerConfig ccfg = control::controller_config(cfg);
   ccfg.reset_at_start = reset_at_start;
+  control::GpioOutputs outputs(gpio);  // [[gpio.output]] / [[gpio.input]]: the program's lines
+  ccfg.outputs = &outputs;
   const std::unique_ptr<Controller> made = make_controller(job, ccfg, link, gpio, journal);
   Controller& ctl = *made;
   ctl.start(from);

@@ -66,7 +66,7 @@ SimMachineResult run_sim_machine(const control::Job& job, const control::Control
                          static_cast<std::uint32_t>(k < 0 ? 0 : k + 1), ctl.torch(), s.thc_lock, s.z});
     for (std::uint32_t q = last_executed + 1; q <= s.last_executed; ++q) {
       const std::int64_t done = ctl.job_segment_of(q);
-      if (done >= 0) res.executed.push_back(done);
+      if (done >= 0 && ctl.completes_job_segment(q)) res.executed.push_back(done);
     }
     last_executed = std::max(last_executed, s.last_executed);
   };

@@ -54,6 +54,15 @@ TEST(ConfigFiles, PlasmaTableExampleLoads) {
   EXPECT_EQ(c.gpio.limits[1].offset, 6);
   EXPECT_EQ(c.gpio.limits[1].chip, "gpiochip0");
   EXPECT_TRUE(c.gpio.limits[1].active_low);
+  ASSERT_EQ(c.gpio.outputs.size(), 1u);
+  EXPECT_EQ(c.gpio.outputs[0].number, 1);
+  EXPECT_EQ(c.gpio.outputs[0].line.offset, 12);
+  EXPECT_EQ(c.gpio.outputs[0].line.chip, "gpiochip0");
+  ASSERT_EQ(c.gpio.inputs.size(), 1u);
+  EXPECT_EQ(c.gpio.inputs[0].number, 0);
+  EXPECT_TRUE(c.gpio.inputs[0].line.active_low);
+  EXPECT_DOUBLE_EQ(c.gpio.inputs[0].line.debounce_s, 0.01);
+  EXPECT_EQ(c.program.analog_ignore, std::vector<int>{0});
 
   EXPECT_STREQ(kerf::job::to_string(c.fit.criterion), "band");
   EXPECT_EQ(c.fit.tol, 0.025);

@@ -243,5 +243,77 @@ TEST_F(GpiodBackend, IoErrorsAreReportedNotThrown) {
   line("/dev/gpiochip0", 17).fail_io = false;  // so the destructor can turn it off
 }
 
+// [[gpio.output]] / [[gpio.input]]: numbered program lines beside the torch.
+TEST_F(GpiodBackend, ProgramOutputsToggleAndEndOffAndInputsAreDebounced) {
+  GpioConfig cfg;
+  cfg.torch = at("gpiochip0", 17);
+  cfg.outputs = {{3, at("gpiochip0", 20)}, {4, at("gpiochip1", 5, /*active_low=*/true)}};
+  cfg.inputs = {{1, at("gpiochip0", 21, /*active_low=*/true, /*debounce_s=*/0.01)}};
+  std::string error;
+  {
+    auto gpio = open_gpiod(cfg, error);
+    ASSERT_NE(gpio, nullptr) << error;
+    // Requested logically off: active-low 4 starts high.
+    EXPECT_FALSE(line("/dev/gpiochip0", 20).level);
+    EXPECT_TRUE(line("/dev/gpiochip1", 5).level);
+    EXPECT_EQ(line("/dev/gpiochip1", 5).consumer, "kerf");
+    ASSERT_TRUE(gpio->set_output(3, true));
+    ASSERT_TRUE(gpio->set_output(4, true));
+    EXPECT_TRUE(line("/dev/gpiochip0", 20).level);
+    EXPECT_FALSE(line("/dev/gpiochip1", 5).level);
+    EXPECT_FALSE(line("/dev/gpiochip0", 17).level);  // the torch is not touched
+    ASSERT_TRUE(gpio->outputs_off());
+    EXPECT_FALSE(line("/dev/gpiochip0", 20).level);
+    EXPECT_TRUE(line("/dev/gpiochip1", 5).level);
+    ASSERT_TRUE(gpio->set_output(3, true));
+
+    EXPECT_FALSE(gpio->set_output(9, true));
+    EXPECT_STREQ(gpio->last_error(), "gpio: output 9: no such line ([[gpio.output]] number = 9)");
+    bool v = true;
+    line("/dev/gpiochip0", 21).level = true;  // released (active-low)
+    ASSERT_TRUE(gpio->read_input(1, 0.0, v));
+    EXPECT_FALSE(v);
+    line("/dev/gpiochip0", 21).level = false;  // asserted
+    ASSERT_TRUE(gpio->read_input(1, 0.005, v));
+    EXPECT_FALSE(v);  // not yet held for 10 ms
+    ASSERT_TRUE(gpio->read_input(1, 0.02, v));
+    EXPECT_TRUE(v);
+    EXPECT_FALSE(gpio->read_input(2, 0.025, v));
+    EXPECT_STREQ(gpio->last_error(), "gpio: input 2: no such line ([[gpio.input]] number = 2)");
+    line("/dev/gpiochip0", 21).fail_io = true;
+    EXPECT_FALSE(gpio->read_input(1, 0.03, v));
+    EXPECT_NE(std::string(gpio->last_error()).find("gpio: input 1: reading line 21 on gpiochip0 failed"),
+              std::string::npos)
+        << gpio->last_error();
+  }
+  // The destructor drove every program output off before releasing it.
+  EXPECT_FALSE(line("/dev/gpiochip0", 20).level);
+  EXPECT_TRUE(line("/dev/gpiochip1", 5).level);
+}
+
+TEST_F(GpiodBackend, ProgramLineErrors) {
+  GpioConfig cfg;
+  cfg.outputs = {{3, at("gpiochip0", 20)}, {3, at("gpiochip0", 21)}};
+  std::string error;
+  EXPECT_EQ(open_gpiod(cfg, error), nullptr);
+  EXPECT_EQ(error, "gpio: output 3: configured twice");
+  cfg.outputs = {{3, at("gpiochip0", 20)}};
+  cfg.inputs = {{0, at("gpiochip0", 20)}};
+  EXPECT_EQ(open_gpiod(cfg, error), nullptr);
+  EXPECT_EQ(error, "gpio: input 0: line 20 on gpiochip0 is already output 3's");
+  cfg.inputs = {{256, at("gpiochip0", 21)}};
+  EXPECT_EQ(open_gpiod(cfg, error), nullptr);
+  EXPECT_EQ(error, "gpio: input 256: the number must be 0..255");
+  line("/dev/gpiochip0", 20).fail_io = true;
+  cfg.inputs.clear();
+  auto gpio = open_gpiod(cfg, error);
+  ASSERT_NE(gpio, nullptr) << error;
+  EXPECT_FALSE(gpio->set_output(3, true));
+  EXPECT_NE(std::string(gpio->last_error()).find("gpio: output 3: setting line 20 on gpiochip0 failed"),
+            std::string::npos)
+      << gpio->last_error();
+  EXPECT_FALSE(gpio->outputs_off());
+}
+
 }  // namespace
 }  // namespace kerf::hal

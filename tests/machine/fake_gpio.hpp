@@ -4,6 +4,8 @@
 #pragma once
 
 #include <functional>
+#include <map>
+#include <string>
 #include <vector>
 
 #include "kerf/hal/gpio.hpp"
@@ -46,8 +48,46 @@ class FakeGpio final : public hal::Gpio {
     thc_lock = on;
     return true;
   }
-  const char* last_error() const override { return ""; }
+  // Program lines ([[gpio.output]] / [[gpio.input]]): the numbers in
+  // `outputs` and `program_inputs` exist; others fail as the libgpiod backend does.
+  bool set_output(int number, bool on) override {
+    const auto it = outputs.find(number);
+    if (it == outputs.end() || fail_outputs) {
+      error_ = "gpio: output " + std::to_string(number) + ": setting it failed";
+      return false;
+    }
+    if (it->second != on) output_changes.push_back({number, on, now_});
+    it->second = on;
+    return true;
+  }
+  bool outputs_off() override {
+    ++outputs_off_calls;
+    bool ok = true;
+    for (auto& [n, on] : outputs) ok = set_output(n, false) && ok;
+    return ok;
+  }
+  bool read_input(int number, double now_s, bool& value) override {
+    (void)now_s;
+    const auto it = program_inputs.find(number);
+    if (it == program_inputs.end()) {
+      error_ = "gpio: input " + std::to_string(number) + ": no such line";
+      return false;
+    }
+    value = it->second;
+    return true;
+  }
+  const char* last_error() const override { return error_.c_str(); }
   bool torch() const { return torch_; }
+
+  struct OutputChange {
+    int number;
+    bool on;
+    double t;
+  };
+  std::map<int, bool> outputs, program_inputs;
+  std::vector<OutputChange> output_changes;
+  int outputs_off_calls = 0;
+  bool fail_outputs = false;
 
   hal::GpioInputs inputs{};
   bool arc_works = true;
@@ -66,6 +106,7 @@ class FakeGpio final : public hal::Gpio {
   double now_ = 0.0, torch_on_t_ = 0.0;
   bool torch_ = false;
   bool watchdog_ = false;
+  std::string error_;
 };
 
 }  // namespace kerf::test

@@ -222,5 +222,94 @@ TEST(ControllerFaults, HoldDuringTheRepierceStillResumesTheHeldPath) {
   EXPECT_EQ(r.run.pierces, 4u);
 }
 
+// A resume point a fraction of a count, or a few counts, past a segment's
+// end (the journal's cut_to is the board's position: it may lie beyond the
+// end, and off the link's 1 um grid): that segment was cut whole, and the run
+// goes on with the next one. Before the resumed segment went through the
+// segment contract (control/resume_segment.hpp), the board got a line or arc
+// whose ends coincide on its grid (a bad-segment fault), or, 2 um past the
+// arc's end, an arc of sweep nearly 2 pi: a full circle cut.
+TEST(ControllerResume, APointJustPastASegmentsEndResumesAtTheNextOne) {
+  const control::Job job = two_paths();
+  struct Case {
+    std::size_t first;
+    Vec2<double> at;
+    std::vector<std::int64_t> executed;
+  };
+  const double d04 = 0.0004 / 10, d2 = 0.002 / 10;  // 0.4 and 2 um along the arc of radius 10
+  const Case cases[] = {
+      {0, {40.0004, 0.0001}, {1, 2, 3}},                        // past the first line's end
+      {2, {70 + 10 * std::cos(d04), 10 * std::sin(d04)}, {3}},  // past the arc's end (CCW)
+      {2, {70 + 10 * std::cos(d2), 10 * std::sin(d2)}, {3}},
+  };
+  for (const Case& c : cases) {
+    FakeGpio gpio;
+    control::ResumePoint from;
+    from.first = c.first;
+    from.from = c.at;
+    const auto r = simulated::run_sim_machine(job, fast_cut(), {}, gpio, nullptr, from);
+    EXPECT_EQ(r.run.state, State::done) << r.run.reason;
+    EXPECT_EQ(r.executed, c.executed);
+    EXPECT_EQ(r.run.completed_this_run, c.executed.size() + 1);  // the one cut whole, then the rest
+    for (const auto& s : r.trace) {
+      if (s.torch && c.first == 2) {  // on the last line only: no circle
+        EXPECT_NEAR(s.pos.y, 0.0, 1e-3) << s.t_s;
+        EXPECT_GE(s.pos.x, 80.0 - 1e-3) << s.t_s;
+      }
+    }
+  }
+}
+
+// A resume point off the grid inside an arc: the rest of the arc, from the
+// grid point nearest it, stays on the circle; the arc is completed once.
+TEST(ControllerResume, AnOffGridPointInsideAnArcCutsItsRestOnTheCircle) {
+  const control::Job job = two_paths();
+  FakeGpio gpio;
+  control::ResumePoint from;
+  from.first = 2;
+  const double a = -2.0;  // rad, on the arc's first half (CCW from pi to 2 pi)
+  from.from = {70 + 10 * std::cos(a) + 0.00031, 10 * std::sin(a) - 0.00027};
+  const auto r = simulated::run_sim_machine(job, fast_cut(), {}, gpio, nullptr, from);
+  EXPECT_EQ(r.run.state, State::done) << r.run.reason;
+  EXPECT_EQ(r.executed, (std::vector<std::int64_t>{2, 3}));
+  for (const auto& s : r.trace) {
+    if (s.torch && s.seq == 3) {
+      EXPECT_NEAR(distance(s.pos, {70, 0}), 10.0, 2e-3) << s.t_s;
+    }
+  }
+}
+
+// A rest that emit_on_grid splits in two (a tiny arc whose centre is off the
+// grid: its sweep would change by more than 0.5 rad on the grid): two board
+// segments for one job segment, which is completed once, after the second.
+TEST(ControllerResume, ARestSplitInTwoCompletesItsSegmentOnce) {
+  hal::SegmentCommand arc;
+  arc.kind = SegmentKind::arc;
+  arc.end = {0.001, 0};
+  arc.centre = {0, 0.0003};
+  arc.dir = 1;
+  arc.feed = 5.0;
+  hal::SegmentCommand line = arc;
+  line.kind = SegmentKind::line;
+  line.end = {0.01, 0};
+  line.dir = 0;
+  control::Job job;
+  control::CutPath p;
+  p.start = {-0.001, 0};
+  p.segments = {arc, line};
+  job.paths = {p};
+  const control::ResumedSegment rest = control::resume_segment(arc, p.start, {-0.0010427, 0.0002478});
+  ASSERT_EQ(rest.count, 2);  // the case this test is about
+  FakeGpio gpio;
+  control::ResumePoint from;
+  from.first = 0;
+  from.from = {-0.0010427, 0.0002478};
+  const auto r = simulated::run_sim_machine(job, fast_cut(), {}, gpio, nullptr, from);
+  EXPECT_EQ(r.run.state, State::done) << r.run.reason;
+  EXPECT_EQ(r.executed, (std::vector<std::int64_t>{0, 1}));
+  EXPECT_EQ(r.run.completed_this_run, 2u);
+  EXPECT_EQ(r.run.last_completed, 1);
+}
+
 }  // namespace
 }  // namespace kerf::test

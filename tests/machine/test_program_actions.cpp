@@ -8,6 +8,7 @@
 
 #include "control/program_job.hpp"
 #include "fake_gpio.hpp"
+#include "program_fixture.hpp"
 #include "simulated/sim_machine.hpp"
 
 namespace kerf::test {
@@ -15,27 +16,6 @@ namespace {
 
 using control::State;
 using job::CanonKind;
-
-control::FittedJob fitted(const std::string& gcode) {
-  const job::GcodeFile g = job::parse_gcode(gcode, "t.ngc");
-  job::Interpretation it;
-  job::GcodeProgram prog;
-  std::string error;
-  const job::InterpSettings s;
-  EXPECT_TRUE(job::interpret(g, s, {}, it, error)) << error;
-  EXPECT_TRUE(job::build_program(g, s, it, prog, error)) << error;
-  control::FittedJob out;
-  EXPECT_EQ(control::fit_program_or_say(prog, job::Criterion::band, 0.01, 50.0, 200.0, out), 0);
-  return out;
-}
-
-control::ControllerConfig fast() {
-  control::ControllerConfig c;
-  c.pierce_delay_s = 0.1;
-  c.arc_ok_timeout_s = 0.5;
-  c.rapid_feed_mm_s = 200.0;
-  return c;
-}
 
 // The time span over which the board stood still at p with the torch off.
 double rest_at(const simulated::SimMachineResult& r, Vec2<double> p) {
@@ -55,10 +35,6 @@ double start_of(const simulated::SimMachineResult& r, std::uint32_t seq) {
   return -1;
 }
 
-// Two cuts with `between` in between them.
-std::string two_cuts(const std::string& between) {
-  return "G21 G90\nG0 X0 Y0\nM3\nG1 X20 F1200\nM5\n" + between + "\nG0 X0 Y10\nM3\nG1 X20\nM5\n";
-}
 
 TEST(ProgramActions, DwellHoldsTheMachineAtRestTorchOff) {
   const control::FittedJob f = fitted("G21 G90\nG0 X0 Y0\nM3\nG1 X20 F1200\nG4 P0.75\nG1 X30\nM5\n");

@@ -29,7 +29,7 @@ long chip_number(const std::string& path) {
 }
 
 bool add_line(const std::string& role, const GpioLineConfig& line, bool output, int limit_index,
-              std::vector<LineRole>& out, std::string& error) {
+              std::vector<LineRole>& out, std::string& error, int number = -1) {
   if (!line.used) return true;
   if (line.offset < 0 && line.name.empty()) {
     error = prefix(role) + "neither an offset nor a line name is set";
@@ -39,7 +39,27 @@ bool add_line(const std::string& role, const GpioLineConfig& line, bool output, 
     error = prefix(role) + "debounce must be a time >= 0 s";
     return false;
   }
-  out.push_back(LineRole{role, &line, output, limit_index});
+  out.push_back(LineRole{role, &line, output, limit_index, number});
+  return true;
+}
+
+// Program outputs or inputs: numbers 0..255, each once.
+bool add_program_lines(const char* kind, const std::vector<GpioProgramLine>& lines, bool output,
+                       std::vector<LineRole>& out, std::string& error) {
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    const int n = lines[i].number;
+    const std::string role = std::string(kind) + " " + std::to_string(n);
+    if (n < 0 || n > 255) {
+      error = prefix(role) + "the number must be 0..255";
+      return false;
+    }
+    for (std::size_t j = 0; j < i; ++j)
+      if (lines[j].number == n) {
+        error = prefix(role) + "configured twice";
+        return false;
+      }
+    if (!add_line(role, lines[i].line, output, -1, out, error, n)) return false;
+  }
   return true;
 }
 
@@ -64,7 +84,9 @@ bool list_lines(const GpioConfig& cfg, std::vector<LineRole>& out, std::string& 
   if (!add_line("cycle_start", cfg.cycle_start, false, -1, out, error)) return false;
   if (!add_line("reset", cfg.reset, false, -1, out, error)) return false;
   if (!add_line("watchdog", cfg.watchdog, true, -1, out, error)) return false;
-  return add_line("thc_lock", cfg.thc_lock, true, -1, out, error);
+  if (!add_line("thc_lock", cfg.thc_lock, true, -1, out, error)) return false;
+  return add_program_lines("output", cfg.outputs, true, out, error) &&
+         add_program_lines("input", cfg.inputs, false, out, error);
 }
 
 std::string chip_path_for(const std::string& spec) {

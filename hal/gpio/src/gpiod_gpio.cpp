@@ -31,7 +31,17 @@ struct Input {
   int offset = -1;
   api::Line* line = nullptr;
   Debouncer debounce;
-  int slot = 0;  // which GpioInputs field: see field()
+  int slot = 0;  // which GpioInputs field: see field(); -1: a program input
+  int number = -1;
+};
+
+// A program output (M62..M65 P number).
+struct Output {
+  int number = -1;
+  std::string chip;
+  int offset = -1;
+  api::Line* line = nullptr;
+  bool active_low = false;
 };
 
 class GpiodGpio final : public Gpio {
@@ -41,7 +51,10 @@ class GpiodGpio final : public Gpio {
     // Torch off before anything is released: a released output keeps its
     // level on most chips, and the torch must never be left burning.
     if (torch_ != nullptr) api::line_set(torch_, torch_active_low_);
+    outputs_off();
     for (Input& in : inputs_) api::line_release(in.line);
+    for (Input& in : program_inputs_) api::line_release(in.line);
+    for (Output& o : outputs_) api::line_release(o.line);
     api::line_release(torch_);
     api::line_release(watchdog_);
     api::line_release(thc_lock_);
@@ -89,6 +102,44 @@ class GpiodGpio final : public Gpio {
     return false;
   }
 
+  bool set_output(int number, bool on) override {
+    for (Output& o : outputs_) {
+      if (o.number != number) continue;
+      if (api::line_set(o.line, on != o.active_low)) return true;
+      const int err = errno;
+      std::snprintf(error_, sizeof error_, "gpio: output %d: setting line %d on %s failed: %s", number, o.offset,
+                    o.chip.c_str(), std::strerror(err));
+      return false;
+    }
+    std::snprintf(error_, sizeof error_, "gpio: output %d: no such line ([[gpio.output]] number = %d)", number,
+                  number);
+    return false;
+  }
+
+  bool outputs_off() override {
+    bool ok = true;
+    for (Output& o : outputs_) ok = set_output(o.number, false) && ok;  // every one, even after a failure
+    return ok;
+  }
+
+  bool read_input(int number, double now_s, bool& value) override {
+    for (Input& in : program_inputs_) {
+      if (in.number != number) continue;
+      const int level = api::line_get(in.line);
+      if (level < 0) {
+        const int err = errno;
+        std::snprintf(error_, sizeof error_, "gpio: %s: reading line %d on %s failed: %s", in.role.c_str(),
+                      in.offset, in.chip.c_str(), std::strerror(err));
+        return false;
+      }
+      value = in.debounce.update(level != 0, now_s);
+      return true;
+    }
+    std::snprintf(error_, sizeof error_, "gpio: input %d: no such line ([[gpio.input]] number = %d)", number,
+                  number);
+    return false;
+  }
+
   const char* last_error() const override { return error_; }
 
  private:
@@ -121,6 +172,8 @@ class GpiodGpio final : public Gpio {
   GpioConfig cfg_;
   std::vector<OpenChip> chips_;
   std::vector<Input> inputs_;
+  std::vector<Input> program_inputs_;
+  std::vector<Output> outputs_;
   api::Line* torch_ = nullptr;
   api::Line* watchdog_ = nullptr;
   api::Line* thc_lock_ = nullptr;
@@ -225,6 +278,13 @@ bool GpiodGpio::request(const LineRole& r, OpenChip& chip, int offset, std::stri
                          : gpio_lines::request_failed(r.role, chip.info.name, offset, err);
     return false;
   }
+  if (r.number >= 0) {  // a program line: outputs start logically off, as the torch does
+    if (r.output) outputs_.push_back(Output{r.number, chip.info.name, offset, line, r.cfg->active_low});
+    else
+      program_inputs_.push_back(Input{r.role, chip.info.name, offset, line,
+                                      Debouncer(r.cfg->debounce_s, r.cfg->active_low), -1, r.number});
+    return true;
+  }
   if (r.output && r.role == "thc_lock") {
     thc_lock_ = line;
     thc_lock_active_low_ = r.cfg->active_low;
@@ -243,7 +303,7 @@ bool GpiodGpio::request(const LineRole& r, OpenChip& chip, int offset, std::stri
     return true;
   }
   inputs_.push_back(Input{r.role, chip.info.name, offset, line,
-                          Debouncer(r.cfg->debounce_s, r.cfg->active_low), slot_of(r)});
+                          Debouncer(r.cfg->debounce_s, r.cfg->active_low), slot_of(r), -1});
   return true;
 }
 
@@ -265,6 +325,8 @@ bool GpiodGpio::open(std::string& error) {
   }
   if (!gpio_lines::check_distinct(roles, where, error)) return false;
   inputs_.reserve(roles.size());
+  program_inputs_.reserve(roles.size());
+  outputs_.reserve(roles.size());
   for (std::size_t i = 0; i < roles.size(); ++i)
     if (!request(roles[i], chips_[chip_of[i]], offsets[i], error)) return false;
   return true;

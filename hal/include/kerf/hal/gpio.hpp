@@ -27,6 +27,14 @@ struct GpioLineConfig {
 
 inline constexpr std::size_t kMaxLimitLines = 8;
 
+// A numbered program line: an output a program switches with M62..M65 P
+// `number` (and M7/M8/user M-codes that name it), or an input M66 P `number`
+// reads.
+struct GpioProgramLine {
+  int number = 0;  // 0..255
+  GpioLineConfig line;
+};
+
 struct GpioConfig {
   std::string consumer = "kerf";  // the label the kernel shows for requested lines
   GpioLineConfig torch;           // output
@@ -38,6 +46,8 @@ struct GpioConfig {
   GpioLineConfig reset;           // unlatches the E-stop chain (its rising edge)
   GpioLineConfig watchdog;        // output: toggles every cycle while all is well
   GpioLineConfig thc_lock;        // output: torch-height control holds (board's thc_lock, torch on)
+  std::vector<GpioProgramLine> outputs;  // program outputs (M62..M65 P)
+  std::vector<GpioProgramLine> inputs;   // program inputs (M66 P)
 };
 
 struct GpioInputs {
@@ -72,6 +82,23 @@ class Gpio {
   // one (none: nothing to do). False on an I/O error.
   virtual bool set_thc_lock(bool on) {
     (void)on;
+    return true;
+  }
+  // Drives program output `number` (M62..M65 P) when there is such a line
+  // (none: nothing to do). False on an I/O error.
+  virtual bool set_output(int number, bool on) {
+    (void)number;
+    (void)on;
+    return true;
+  }
+  // Every program output off (a fault, an E-stop, the job's end). False on an I/O error.
+  virtual bool outputs_off() { return true; }
+  // Reads program input `number` (M66 P) at `now_s`, debounced; a missing
+  // line reads false. False on an I/O error.
+  virtual bool read_input(int number, double now_s, bool& value) {
+    (void)number;
+    (void)now_s;
+    value = false;
     return true;
   }
   virtual const char* last_error() const = 0;

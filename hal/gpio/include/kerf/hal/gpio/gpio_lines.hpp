@@ -23,6 +23,7 @@ struct LineRole {
   const GpioLineConfig* cfg = nullptr;
   bool output = false;
   int limit_index = -1;  // limits only
+  int number = -1;       // program outputs and inputs: the M62..M66 P number
 };
 
 // Where a line ended up.
@@ -31,9 +32,10 @@ struct LineAddress {
   int offset = -1;
 };
 
-// The used lines of `cfg`, torch first. False with `error` when the
-// configuration itself is wrong (too many limits, neither offset nor name,
-// negative or non-finite debounce).
+// The used lines of `cfg`, torch first, then the program outputs ("output
+// N") and inputs ("input N"). False with `error` when the configuration
+// itself is wrong (too many limits, neither offset nor name, negative or
+// non-finite debounce, a program number out of 0..255 or given twice).
 bool list_lines(const GpioConfig& cfg, std::vector<LineRole>& out, std::string& error);
 
 // The device path a chip spec names: "gpiochip3" and "3" -> "/dev/gpiochip3",
