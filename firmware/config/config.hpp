@@ -14,12 +14,16 @@
 #include "job/criterion.hpp"
 #include "job/gcode_interp.hpp"
 #include "kerf/hal/gpio.hpp"
+#include "kerf/motion/axis_move.hpp"
 
 namespace kerf::config {
 
 struct Axis {
   std::string name;            // "x", "y", "z"
   double counts_per_mm = 1000; // > 0; required in each [[machine.axis]] of a file
+  // z only (z moves run alone, at rest in XY): mm/min and mm/s^2, > 0;
+  // absent: machine.rapid_feed and machine.accel.
+  double feed = 0, accel = 0;
 };
 
 struct Machine {
@@ -36,6 +40,14 @@ struct Machine {
   double ferror = 1.0;
   double min_ferror = 0.25;
 };
+
+// The z axis's limits (the servo period, feed mm/s, accel), or none
+// (period 0) on a machine without one.
+inline motion::AxisLimits<double> z_limits(const Machine& m) {
+  if (m.axes.size() < 3) return {};
+  const Axis& z = m.axes[2];
+  return {m.servo_period, (z.feed > 0 ? z.feed : m.rapid_feed) / 60.0, z.accel > 0 ? z.accel : m.accel};
+}
 
 struct Link {
   enum class Kind : std::uint8_t { modbus_tcp, modbus_rtu, can };

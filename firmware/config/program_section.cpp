@@ -168,6 +168,7 @@ job::InterpSettings interp_settings(const Config& c, bool strict) {
   s.flood_output = c.program.flood_output;
   s.start[0] = c.sim.start[0];
   s.start[1] = c.sim.start[1];
+  s.z_axis = c.machine.axes.size() > 2;  // [[machine.axis]] name = "z": Z runs as moves
   return s;
 }
 

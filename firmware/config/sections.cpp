@@ -43,6 +43,10 @@ void read_axes(TableReader& r, Machine& m) {
     a.positive("counts_per_mm", axis.counts_per_mm);
     // No default here: a wrong scale would cut a wrongly sized part.
     if (!a.has("counts_per_mm")) a.problem("counts_per_mm", "missing (drive counts per mm)");
+    if (i == 2) {  // z's own limits
+      a.positive("feed", axis.feed);
+      a.positive("accel", axis.accel);
+    }
     a.finish();
     out.push_back(axis);
   }

@@ -221,12 +221,13 @@ bool Controller::poll_link(double now_s) {
     return false;
   }
   // At rest: the same position over three polls while not running a queue.
-  if (have_status_ && s.position == st_.position && s.state != hal::BoardState::running)
+  if (have_status_ && s.position == st_.position && s.z == st_.z && s.state != hal::BoardState::running)
     ++rest_polls_;
   else
     rest_polls_ = 0;
   at_rest_ = rest_polls_ >= 2 || s.state == hal::BoardState::done || s.state == hal::BoardState::idle;
   st_ = s;
+  report_.final_z = s.z;
   have_status_ = true;
   return true;
 }
@@ -295,10 +296,13 @@ void Controller::begin_travel(Vec2<double> to) {
   queue_.clear();
   sent_ = 0;
   started_ = finish_sent_ = false;
+  after_path_ = false;
   // From the end of the last segment sent (exact), not the board's position
   // (rounded to counts): a path that starts where the last one ended needs
   // no travel, and a travel a fraction of a count long would be empty on the board.
-  if (distance(has_tail_ ? tail_ : st_.position, to) > kSamePoint) {
+  Vec2<double> at = has_tail_ ? tail_ : st_.position;
+  if (path_ < job_.paths.size()) queue_moves(job_.paths[path_].before, at);
+  if (distance(at, to) > kSamePoint) {
     hal::SegmentCommand c;
     c.kind = SegmentKind::line;
     c.end = to;
@@ -307,6 +311,20 @@ void Controller::begin_travel(Vec2<double> to) {
     queue_.push_back(c);
   }
   state_ = State::travel;
+}
+
+void Controller::queue_moves(const std::vector<hal::SegmentCommand>& moves, Vec2<double>& at) {
+  for (hal::SegmentCommand c : moves) {
+    if (c.z_move) {
+      c.end = at;  // Z alone, where the axes stand
+    } else if (distance(at, c.end) <= kSamePoint) {
+      continue;
+    }
+    c.torch = false;
+    if (!(c.feed > 0)) c.feed = cfg_.rapid_feed_mm_s;  // a rapid (a z move's is capped by the z axis)
+    at = c.end;
+    queue_.push_back(c);
+  }
 }
 
 void Controller::begin_pierce(double now_s) {
@@ -359,6 +377,7 @@ bool Controller::pump() {
     tail_ = c.end;
     has_tail_ = true;
     ++next_seq_;
+    if (c.z_move) ++report_.z_moves;
     job_of_wire_.push_back(block_ == Block::cut ? wire_job(sent_) : -1);
     block_last_seq_ = next_seq_;
     ++sent_;
@@ -379,8 +398,20 @@ void Controller::path_finished(double now_s) {
   set_torch(false, now_s);
   next_seg_ += queue_.size() - queue_extra_;
   queue_extra_ = 0;
+  const std::vector<hal::SegmentCommand>& after = job_.paths[path_].after;
   ++path_;
   if (path_ < job_.paths.size()) pierce_at_ = job_.paths[path_].start;
+  if (!after.empty()) {  // z axis: the retract and what else follows the path, then its actions
+    block_ = Block::rapid;
+    queue_.clear();
+    sent_ = 0;
+    started_ = finish_sent_ = false;
+    Vec2<double> at = tail_;
+    queue_moves(after, at);
+    after_path_ = true;
+    state_ = State::travel;
+    return;
+  }
   run_actions_or_travel(now_s);
 }
 
@@ -426,7 +457,10 @@ void Controller::run_state(double now_s) {
         }
         return;
       }
-      if (pump() && block_done()) begin_pierce(now_s);
+      if (pump() && block_done()) {
+        if (!after_path_) begin_pierce(now_s);
+        else run_actions_or_travel(now_s);
+      }
       return;
     case State::piercing:
       if (hold_pressed) {

@@ -86,6 +86,8 @@ struct RunReport {
   Vec2<double> stopped_at{};          // board position once at rest
   std::uint64_t link_errors = 0;      // failed transactions (each retried next cycle)
   std::uint32_t pierces = 0;
+  std::uint32_t z_moves = 0;          // z moves sent this run (z axis)
+  double final_z = 0;                 // mm, the board's z when the run ended
   std::vector<ActionEvent> actions;   // the program's actions run (dwell, pause, outputs, waits)
   // Safety: the last refused reset, resets accepted, watchdog toggles, and
   // the following error (largest seen; at a following-error fault, the gap
@@ -129,6 +131,7 @@ class Controller {
   bool check_inputs(double now_s);
   void run_state(double now_s);
   void begin_travel(Vec2<double> to);
+  void queue_moves(const std::vector<hal::SegmentCommand>& moves, Vec2<double>& at);  // z axis: CutPath before/after
   void begin_pierce(double now_s);
   void begin_cut();
   bool pump();  // sends what the board has room for; false on a link error
@@ -192,6 +195,7 @@ class Controller {
   ResumedSegment resumed_;       // the rest of the segment a run resumes inside, until its block is queued
   Vec2<double> tail_{};  // where the last segment sent ends
   bool has_tail_ = false;
+  bool after_path_ = false;  // the travel block is the moves after a path (then its actions)
 
   // Where the job stands.
   std::size_t path_ = 0;        // current path

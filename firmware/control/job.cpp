@@ -71,6 +71,13 @@ JobId Job::id() const {
         f.number(s.centre.y);
       }
     }
+    // z axis: the moves between paths (none without one: those jobs keep their ids).
+    for (const auto* moves : {&p.before, &p.after})
+      for (const hal::SegmentCommand& m : *moves) {
+        f.number(static_cast<std::uint64_t>(m.z_move ? 0x2d : 0x27));
+        f.number(m.z_move ? m.z : m.end.x);
+        f.number(m.end.y);
+      }
   }
   for (const JobAction& a : actions) {
     f.number(static_cast<std::uint64_t>(a.kind) << 32 | a.before_path);

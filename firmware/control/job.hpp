@@ -19,6 +19,12 @@ struct CutPath {
   std::vector<hal::SegmentCommand> segments; // end, centre, dir, feed; seq is set when sent
   bool torch = true;                         // false: a dry-run path, run with the torch off
   double pierce_delay_s = -1;                // < 0: the controller's (the material's otherwise)
+  // With a z axis (job/gcode_program.hpp ProgramMove): the moves, torch off,
+  // that lead to the pierce point and that run right after the path; z moves
+  // (z_move) and XY rapids. Not job segments: like the travel, they are sent
+  // again by a resumed run (a z move goes to an absolute z). A z move's XY
+  // end is set when it is sent (where the axes then stand).
+  std::vector<hal::SegmentCommand> before, after;
 };
 
 // What a G-code program does between its paths, at rest: dwell, pause,

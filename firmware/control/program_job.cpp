@@ -1,6 +1,7 @@
 #include "control/program_job.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <utility>
 
@@ -8,6 +9,30 @@
 #include "job/fit_job.hpp"
 
 namespace kerf::control {
+
+namespace {
+
+// z axis: the program's moves between paths as link commands (torch off;
+// feed 0 means rapid, which the controller fills in; a z move's XY is set
+// when it is sent). XY ends go on the link's grid, as the fitted paths' do:
+// a rapid that rounds to nothing is then seen as nothing (the board refuses
+// a zero-length line).
+void append_moves(const std::vector<job::ProgramMove>& moves, double max_feed_mm_s,
+                  std::vector<hal::SegmentCommand>& out) {
+  for (const job::ProgramMove& m : moves) {
+    hal::SegmentCommand c;
+    c.kind = SegmentKind::line;
+    const double per_mm = kLinkGrid.per_mm;
+    c.end = {std::round(m.xy.x * per_mm) / per_mm, std::round(m.xy.y * per_mm) / per_mm};
+    c.z_move = m.z;
+    c.z = m.z_end;
+    c.feed = m.feed_mm_min > 0 ? std::min(m.feed_mm_min / 60.0, max_feed_mm_s) : 0.0;
+    c.torch = false;
+    out.push_back(c);
+  }
+}
+
+}  // namespace
 
 int fit_program_or_say(const job::GcodeProgram& prog, job::Criterion criterion, double tol, double feed_mm_s,
                        double max_feed_mm_s, FittedJob& out, job::Numeric numeric,
@@ -18,6 +43,7 @@ int fit_program_or_say(const job::GcodeProgram& prog, job::Criterion criterion, 
   // kept_before[k]: how many paths before program path k reach the job (a
   // path shorter than the link's grid does not), for the actions' places.
   std::vector<std::size_t> kept_before(begins.size() + 1, 0);
+  std::vector<hal::SegmentCommand> carry;  // the moves of paths too short to keep
   for (std::size_t p = 0; p < begins.size(); ++p) {
     kept_before[p] = out.job.paths.size();
     const std::size_t b = begins[p];
@@ -34,8 +60,12 @@ int fit_program_or_say(const job::GcodeProgram& prog, job::Criterion criterion, 
     std::string error;
     Status status = Status::ok;
     if (!fit_paths(one, criterion, pp.tol > 0 ? std::min(pp.tol, tol) : tol, feed_mm_s, f, error, status, numeric)) {
-      if (f.job.paths.empty() && status == Status::invalid_argument && error.find("shorter than the link") != std::string::npos)
-        continue;  // a path shorter than a count: nothing to cut (kept_before counts it out)
+      if (f.job.paths.empty() && status == Status::invalid_argument && error.find("shorter than the link") != std::string::npos) {
+        // A path shorter than a count: nothing to cut (kept_before counts it out); its moves go on.
+        append_moves(prog.paths[p].before, max_feed_mm_s, carry);
+        append_moves(prog.paths[p].after, max_feed_mm_s, carry);
+        continue;
+      }
       if (error.compare(0, 7, "path 1 ") == 0) error = "path " + std::to_string(p + 1) + error.substr(6);
       std::fprintf(stderr, "kerf: %s: %s\n", in.file.c_str(), error.c_str());
       return status == Status::invalid_argument || status == Status::degenerate ? 2 : 1;
@@ -53,6 +83,10 @@ int fit_program_or_say(const job::GcodeProgram& prog, job::Criterion criterion, 
     CutPath& path = f.job.paths.front();
     path.torch = pp.torch;
     path.pierce_delay_s = pp.pierce_delay_s;
+    path.before.swap(carry);
+    carry.clear();
+    append_moves(pp.before, max_feed_mm_s, path.before);
+    append_moves(pp.after, max_feed_mm_s, path.after);
     for (std::size_t k = 0; k < path.segments.size(); ++k) {
       path.segments[k].feed = feed_of(f.pieces[k]);
       path.segments[k].torch = pp.torch;
@@ -63,6 +97,7 @@ int fit_program_or_say(const job::GcodeProgram& prog, job::Criterion criterion, 
     out.job.paths.push_back(std::move(path));
   }
   kept_before[begins.size()] = out.job.paths.size();
+  if (!out.job.paths.empty()) out.job.paths.back().after.insert(out.job.paths.back().after.end(), carry.begin(), carry.end());
   if (out.job.paths.empty()) {
     std::fprintf(stderr, "kerf: %s: every path is shorter than the link's resolution (0.001 mm)\n", in.file.c_str());
     return 2;

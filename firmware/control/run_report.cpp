@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstring>
 
 namespace kerf::control {
 
@@ -13,6 +14,8 @@ RunSummary summarise_run(const RunReport& r, std::size_t paths, const std::strin
   s.link = link;
   s.paths = paths;
   s.pierces = r.pierces;
+  s.z_moves = r.z_moves;
+  s.final_z = r.final_z;
   s.planned = r.planned;
   s.executed = r.completed_this_run;
   s.last_executed = r.last_completed + 1;
@@ -115,6 +118,11 @@ std::string format_run_json(const RunSummary& s) {
       s.duration_s, s.wall_s, s.rt.empty() ? "null" : json_string(s.rt).c_str(), histogram.c_str());
   std::string out = buf;
   if (!program.empty()) out.insert(out.find("  \"link\":"), program);
+  if (s.z_moves > 0) {  // a machine with a z axis
+    char z[96];
+    std::snprintf(z, sizeof z, "  \"z_moves\": %zu,\n  \"final_z\": %.6f,\n", s.z_moves, s.final_z);
+    out.insert(out.find("  \"segments_planned\":"), z);
+  }
   char ferror[160];
   std::snprintf(ferror, sizeof ferror, "{\"max_mm\": %.6f, \"at_fault_mm\": %.6f, \"limit_at_fault_mm\": %.6f}",
                 s.max_ferror_mm, s.ferror_at_fault_mm, s.ferror_limit_mm);
@@ -141,6 +149,10 @@ std::string format_run_summary(const RunSummary& s) {
                 s.simulated ? "sim" : "run", s.state.c_str(), s.link.c_str(), s.paths, s.executed, s.planned,
                 static_cast<long long>(s.last_executed), static_cast<unsigned long long>(s.executed_total),
                 static_cast<unsigned long long>(s.duplicates), s.pierces);
+  if (s.z_moves > 0) {
+    const std::size_t used = std::strlen(head);
+    std::snprintf(head + used, sizeof head - used, ", %zu z moves (final z %.3f mm)", s.z_moves, s.final_z);
+  }
   if (s.simulated)
     std::snprintf(tail, sizeof tail, "; max path deviation %.6f mm; %.3f s simulated, %.3f s wall", s.max_path_deviation_mm,
                   s.duration_s, s.wall_s);

@@ -27,6 +27,8 @@ struct RunSummary {
   std::string reason;  // empty when done
   std::string link;    // modbus-tcp | modbus-rtu
   std::size_t paths = 0, pierces = 0;
+  std::size_t z_moves = 0;          // z axis: z moves sent (0 without one)
+  double final_z = 0;               // mm, the board's z at the end
   std::size_t planned = 0;          // segments in the job
   std::size_t executed = 0;         // completed in this run
   std::uint64_t executed_total = 0; // completed over every run of the job (the journal's count)

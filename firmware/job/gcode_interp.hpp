@@ -80,6 +80,7 @@ struct InterpSettings {
   int flood_output = -1;      // M8
   double cut_feed = 3000;     // mm/min: [cut] feed, what #<_hal[plasmac.cut-feed-rate]> reads with no material
   std::size_t max_blocks = 2'000'000;  // blocks that loops run beyond the file's own before it is refused
+  bool z_axis = false;        // the machine has a z axis: Z runs as moves (job/gcode_program.hpp)
 };
 
 // How a construct was handled, for the run report.

@@ -30,16 +30,24 @@ void sample_arc(Vec2<double> from, Vec2<double> to, Vec2<double> c, bool ccw, do
 
 class Builder {
  public:
-  Builder(const Interpretation& it, GcodeProgram& out) : it_(it), out_(out) {}
+  Builder(const Interpretation& it, bool z_axis, GcodeProgram& out) : it_(it), out_(out), z_axis_(z_axis) {}
 
   void run(const double start[2]) {
     pos_ = {start[0], start[1]};
+    out_.final_z = z_ = 0;
     bool torch_word = false;
     for (const Canon& c : it_.canon)
       if (c.kind == CanonKind::torch && c.index == 1) torch_word = true;
     out_.dry_run = !torch_word;
     for (const Canon& c : it_.canon) step(c);
     close();
+    // What follows the last path runs right after it (before the end's actions).
+    if (!out_.paths.empty()) {
+      std::vector<ProgramMove>& after = out_.paths.back().after;
+      after.insert(after.end(), pending_.begin(), pending_.end());
+    }
+    out_.final_z = z_;
+    if (z_axis_) record_z();
   }
 
  private:
@@ -49,11 +57,34 @@ class Builder {
       p.points.resize(path_start_);
       p.point_lines.resize(path_start_);
       out_.point_feed.resize(path_start_);
+      pending_.insert(pending_.begin(), cur_.before.begin(), cur_.before.end());  // they lead on
     } else if (open_) {
       p.path_begin.push_back(path_start_);
       out_.paths.push_back(cur_);
+      after_path_ = true;
     }
     open_ = false;
+  }
+  // z axis: the moves between paths (gcode_program.hpp).
+  void push_xy(Vec2<double> to, std::size_t line) {
+    if (to == pos_) return;
+    pending_.push_back({false, to, z_, 0, line});
+  }
+  void push_z(double z, double feed_mm_min, std::size_t line) {
+    pending_.push_back({true, pos_, z, feed_mm_min, line});
+    ++out_.z_moves;
+  }
+  void record_z() {
+    auto record = [&](const char* name, const char* how, std::size_t count, std::size_t line) {
+      if (count == 0) return;
+      Construct& c = out_.interp.constructs[name];
+      c.handling = how;
+      c.count = count;
+      c.first_line = line;
+    };
+    record("Z move", "run as a move at rest (z axis)", out_.z_moves, first_z_line_);
+    record("Z with the torch on", "ran as plunge then XY: kerf moves Z at rest (torch off, pierced again)", ramps_,
+           first_ramp_line_);
   }
   void add(Vec2<double> q, std::size_t line, double feed) {
     io::PointFile& p = out_.points;
@@ -67,6 +98,13 @@ class Builder {
   }
   void action(const Canon& c) {
     close();
+    // The moves since the last path, before its first action, run right after it.
+    if (after_path_ && !out_.paths.empty()) {
+      std::vector<ProgramMove>& after = out_.paths.back().after;
+      after.insert(after.end(), pending_.begin(), pending_.end());
+      pending_.clear();
+    }
+    after_path_ = false;
     ProgramAction a;
     a.kind = c.kind;
     a.before_path = out_.paths.size();
@@ -104,10 +142,27 @@ class Builder {
   void move(const Canon& c) {
     const Vec2<double> to{c.end[0], c.end[1]};
     const bool z_change = c.end[2] != z_;
+    const double z_from = z_;
     z_ = c.end[2];
-    const bool cutting = c.kind != CanonKind::traverse && (out_.dry_run || torch_) && !z_change;
-    if (!cutting) {
+    const bool feed_move = c.kind != CanonKind::traverse && (out_.dry_run || torch_);
+    if (z_axis_ && z_change) {
       close();
+      if (first_z_line_ == 0) first_z_line_ = c.line;
+      if (feed_move) {  // with the torch on: Z at rest, then the XY as a cut
+        const bool xy = to != pos_ || c.kind == CanonKind::arc;  // an arc back to its start is a circle
+        if (xy && ramps_++ == 0) first_ramp_line_ = c.line;
+        push_z(z_, c.feed_mm_min, c.line);
+        if (!xy) return;
+      } else {  // torch off: Z first when it rises, XY first when it falls
+        if (z_ > z_from) push_z(z_, c.kind == CanonKind::traverse ? 0 : c.feed_mm_min, c.line);
+        push_xy(to, c.line);
+        pos_ = to;
+        if (z_ < z_from) push_z(z_, c.kind == CanonKind::traverse ? 0 : c.feed_mm_min, c.line);
+        return;
+      }
+    } else if (!feed_move || z_change) {
+      close();
+      if (z_axis_) push_xy(to, c.line);
       pos_ = to;
       return;
     }
@@ -120,6 +175,8 @@ class Builder {
       cur_.feed_mm_min = feed;
       cur_.tol = tol_;
       cur_.pierce_delay_s = pierce_;
+      cur_.before.swap(pending_);
+      pending_.clear();
       add(pos_, c.line, feed);
     }
     if (c.kind == CanonKind::feed) {
@@ -136,6 +193,10 @@ class Builder {
   GcodeProgram& out_;
   Vec2<double> pos_{};
   double z_ = 0;
+  bool z_axis_ = false;
+  std::vector<ProgramMove> pending_;  // z axis: moves since the last path
+  bool after_path_ = false;           // no action since the last path closed
+  std::size_t ramps_ = 0, first_ramp_line_ = 0, first_z_line_ = 0;
   bool torch_ = false, open_ = false;
   double percent_ = 100, tol_ = 0, pierce_ = -1;
   std::size_t path_start_ = 0;
@@ -149,8 +210,8 @@ bool build_program(const GcodeFile& g, const InterpSettings& settings, const Int
                    std::string& error) {
   out = GcodeProgram{};
   out.points.file = g.file;
-  Builder(it, out).run(settings.start);
   out.interp.constructs = it.constructs;  // not the canonical moves: the points hold them
+  Builder(it, settings.z_axis, out).run(settings.start);
   out.interp.notes = it.notes;
   out.interp.state = it.state;
   out.interp.analog_inputs = it.analog_inputs;

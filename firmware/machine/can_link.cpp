@@ -53,6 +53,8 @@ void read_can_link_options(const config::Config& cfg, CanLinkOptions& o) {
   if (cfg.machine.axes.size() > 1) o.counts_per_mm.y = cfg.machine.axes[1].counts_per_mm;
   o.accel_mm_s2 = cfg.machine.accel;
   o.vad = cfg.cut.rules.vad / 100.0;
+  o.z = config::z_limits(cfg.machine);
+  if (cfg.machine.axes.size() > 2) o.z_counts_per_mm = cfg.machine.axes[2].counts_per_mm;
 }
 
 std::uint8_t can_node_of(const CanLinkOptions& o, std::size_t axis) {
@@ -79,6 +81,10 @@ bool CanMasterLink::start(hal::CanBus& bus, const CanLinkOptions& o, bool wall_c
   c.vad = o.vad;
   c.corner_angle_rad = o.corner_angle_rad;
   c.queue_slots = o.queue_slots;
+  if (o.axes > 2) {  // z: the third node
+    c.z = o.z;
+    c.z_counts_per_mm = o.z_counts_per_mm;
+  }
   csp_ = hal::CspSegmentLink::create(*master_, c, error);
   return csp_ != nullptr;
 }

@@ -19,7 +19,7 @@
 namespace kerf::machine {
 
 struct CanLinkOptions {
-  std::size_t axes = 2;          // 2 or 3: x, y (and a third axis that holds its position)
+  std::size_t axes = 2;          // 2 or 3: x, y and z (without z limits the third axis holds its position)
   std::vector<std::uint8_t> node_ids;  // one per axis (the config's link.node_ids); empty: 1..axes
   double sync_ms = 1;            // SYNC period, a whole number of ms in 1..10
   std::string iface;             // SocketCAN interface; the simulator: empty for its in-process bus
@@ -28,6 +28,8 @@ struct CanLinkOptions {
   double vad = 0.9;  // [cut] vad / 100: thc_lock below this fraction of the cut feed
   double corner_angle_rad = 0.05;
   std::size_t queue_slots = 32;
+  motion::AxisLimits<double> z{};  // the z axis (config::z_limits): the third drive runs the z moves
+  double z_counts_per_mm = 1000.0;
 };
 
 // The options a machine configuration gives: axes and their counts/mm,

@@ -80,6 +80,7 @@ std::unique_ptr<SimPlant> make_modbus_plant(const SimMachineConfig& cfg, double 
   sim::BoardConfig bc;
   bc.servo_period_s = cfg.motion.servo_period_s;
   bc.start = cfg.start;
+  bc.z = cfg.z;
   auto plant = std::make_unique<ModbusPlant>(bc, std::move(exec));
   if (!plant->open(cfg, link_watchdog_s, error)) return nullptr;
   return plant;

@@ -320,7 +320,7 @@ int run_sim(const SimOptions& given) {
       if (a.kind == job::CanonKind::dwell || a.kind == job::CanonKind::pause)
         plot.marks.push_back({a.at, a.kind == job::CanonKind::dwell ? "dwell" : "pause", a.what});
   }
-  if (!write_or_say("--trace", opts.trace, format_trace_csv(res.trace)) ||
+  if (!write_or_say("--trace", opts.trace, format_trace_csv(res.trace, config::z_limits(cfg.machine).configured())) ||
       !write_or_say("--report", opts.report, control::format_run_json(sum)) ||
       (!opts.plot.empty() && !write_or_say("--plot", opts.plot, io::format_run_svg(plot))))
     return kExitFailure;

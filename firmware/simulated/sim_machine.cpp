@@ -36,6 +36,7 @@ SimMachineConfig sim_machine_config(const config::Config& cfg) {
   m.motion.vad = cfg.cut.rules.vad / 100.0;  // [cut] vad is in %
   m.motion.counts_per_mm = cfg.machine.axes.empty() ? 1000.0 : cfg.machine.axes.front().counts_per_mm;
   m.cycle_s = cfg.machine.cycle;
+  m.z = config::z_limits(cfg.machine);
   return m;
 }
 
@@ -62,7 +63,7 @@ SimMachineResult run_sim_machine(const control::Job& job, const control::Control
     const hal::BoardStatus s = plant.truth();
     const std::int64_t k = ctl.job_segment_of(s.executing);
     res.trace.push_back({static_cast<double>(ticks) * servo, s.position,
-                         static_cast<std::uint32_t>(k < 0 ? 0 : k + 1), ctl.torch(), s.thc_lock});
+                         static_cast<std::uint32_t>(k < 0 ? 0 : k + 1), ctl.torch(), s.thc_lock, s.z});
     for (std::uint32_t q = last_executed + 1; q <= s.last_executed; ++q) {
       const std::int64_t done = ctl.job_segment_of(q);
       if (done >= 0 && ctl.completes_job_segment(q)) res.executed.push_back(done);

@@ -46,6 +46,7 @@ struct SimMachineConfig {
   double cycle_s = 0.002;       // controller period: a whole number of servo periods
   double speed = 0.0;           // simulated s per wall s; 0 = as fast as possible
   Vec2<double> start{};         // where the axes are at power-up
+  motion::AxisLimits<double> z{};  // the z axis (config::z_limits); period 0: none
   std::vector<BoardFault> faults;
   double max_sim_s = 600.0;     // give up (a stuck run, a hold never released) after this
 };

@@ -23,14 +23,19 @@ double max_path_deviation(const std::vector<sim::TraceSample>& trace,
   return worst;
 }
 
-std::string format_trace_csv(const std::vector<sim::TraceSample>& trace) {
-  std::string out = "t_s,x_mm,y_mm,segment,torch,thc_lock\n";
-  char line[160];
+std::string format_trace_csv(const std::vector<sim::TraceSample>& trace, bool with_z) {
+  std::string out = with_z ? "t_s,x_mm,y_mm,segment,torch,thc_lock,z_mm\n" : "t_s,x_mm,y_mm,segment,torch,thc_lock\n";
+  char line[192];
   for (const sim::TraceSample& s : trace) {
-    std::snprintf(line, sizeof line, "%.6f,%.6f,%.6f,%u,%d,%d\n", s.t_s, s.pos.x, s.pos.y,
+    std::snprintf(line, sizeof line, "%.6f,%.6f,%.6f,%u,%d,%d", s.t_s, s.pos.x, s.pos.y,
                   static_cast<unsigned>(s.seq), s.torch ? 1 : 0,
                   s.thc_lock ? 1 : 0);
     out += line;
+    if (with_z) {
+      std::snprintf(line, sizeof line, ",%.6f", s.z);
+      out += line;
+    }
+    out += '\n';
   }
   return out;
 }

@@ -16,6 +16,7 @@ namespace kerf::simulated {
 double max_path_deviation(const std::vector<sim::TraceSample>& trace,
                           const std::vector<fit::Piece<double>>& pieces);
 
-std::string format_trace_csv(const std::vector<sim::TraceSample>& trace);
+// One line a sample; with_z (a machine with a z axis) adds a last column z_mm.
+std::string format_trace_csv(const std::vector<sim::TraceSample>& trace, bool with_z = false);
 
 }  // namespace kerf::simulated

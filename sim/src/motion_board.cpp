@@ -11,8 +11,9 @@ MotionBoard::MotionBoard(const BoardConfig& cfg, std::unique_ptr<SegmentExecutor
       motion_(std::move(executor)),
       ring_(cfg.capacity),
       exec_(*motion_, {ring_.data(), ring_.size()}, cfg.start) {
+  if (cfg.z.configured()) exec_.configure_z(cfg.z, cfg.start_z);
   trace_.reserve(cfg.trace_reserve);
-  trace_.push_back({0.0, cfg.start, 0, false});
+  trace_.push_back({0.0, cfg.start, 0, false, true, cfg.start_z});
 }
 
 MotionBoard::~MotionBoard() { stop_servo(); }
@@ -59,7 +60,7 @@ void MotionBoard::tick_locked() {
   ++ticks_;
   for (std::uint32_t s = e.completed_from + 1; s <= e.completed_to; ++s) executed_.push_back(s);
   trace_.push_back({static_cast<double>(ticks_) * cfg_.servo_period_s, e.position, e.executing, e.torch,
-                    e.thc_lock});
+                    e.thc_lock, e.z});
   changed_.notify_all();
 }
 

@@ -5,6 +5,7 @@
 // SIGINT or SIGTERM.
 //
 //   kerf-board-sim [--port N] [--rtu] [--accel MM_S2] [--vad PERCENT] [--watchdog S]
+//                  [--z-feed MM_MIN --z-accel MM_S2]  (a z axis: z moves run; default none)
 #include <CLI/CLI.hpp>
 #include <csignal>
 #include <cstdio>
@@ -17,7 +18,7 @@ int main(int argc, char** argv) {
   CLI::App app("kerf-board-sim: the simulated motion board over Modbus", "kerf-board-sim");
   int port = 0;
   bool rtu = false;
-  double accel = 1500.0, watchdog = 0.5, vad = 90.0;
+  double accel = 1500.0, watchdog = 0.5, vad = 90.0, z_feed = 0.0, z_accel = 500.0;
   app.add_option("--port", port, "TCP port on 127.0.0.1 (0: any free one)")->check(CLI::Range(0, 65535));
   app.add_flag("--rtu", rtu, "Modbus RTU on a new pseudo-terminal instead of TCP");
   app.add_option("--accel", accel, "Path acceleration, mm/s^2")->check(CLI::PositiveNumber);
@@ -25,6 +26,9 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0.0, 100.0));
   app.add_option("--watchdog", watchdog, "Stop safely when the host is silent this long (s); 0: never")
       ->check(CLI::NonNegativeNumber);
+  app.add_option("--z-feed", z_feed, "A z axis: its top feed, mm/min (0: no z axis, z moves are refused)")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--z-accel", z_accel, "The z axis's acceleration, mm/s^2")->check(CLI::PositiveNumber);
   CLI11_PARSE(app, argc, argv);
 
   // Block the stop signals before any thread starts, then wait for one.
@@ -43,7 +47,9 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "kerf-board-sim: %s\n", error.c_str());
     return 1;
   }
-  sim::MotionBoard board({}, std::move(exec));
+  sim::BoardConfig bc;
+  if (z_feed > 0) bc.z = {bc.servo_period_s, z_feed / 60.0, z_accel};
+  sim::MotionBoard board(bc, std::move(exec));
   sim::ServerConfig sc;
   sc.transport = rtu ? sim::ServerConfig::Transport::rtu : sim::ServerConfig::Transport::tcp;
   sc.port = port;

@@ -51,6 +51,14 @@ const BadCase kCases[] = {
      TCP "[[machine.axis]]\nname = \"x\"\ncounts_per_mm = 10\n[[machine.axis]]\nname = \"z\"\n"
          "counts_per_mm = 10\n",
      "kerf.toml:7: machine.axis[1].name: expected \"y\" (axes are x, y, then optionally z), got \"z\""},
+    {"z_feed_zero",
+     TCP "[[machine.axis]]\nname = \"x\"\ncounts_per_mm = 10\n[[machine.axis]]\nname = \"y\"\n"
+         "counts_per_mm = 10\n[[machine.axis]]\nname = \"z\"\ncounts_per_mm = 10\nfeed = 0\n",
+     "kerf.toml:12: machine.axis[2].feed: must be > 0, got 0"},
+    {"feed_on_x",
+     TCP "[[machine.axis]]\nname = \"x\"\ncounts_per_mm = 10\nfeed = 100\n[[machine.axis]]\nname = \"y\"\n"
+         "counts_per_mm = 10\n",
+     "kerf.toml:6: machine.axis[0].feed: unknown key"},
     {"axis_not_tables", TCP "[machine]\naxis = [1, 2]\n",
      "kerf.toml:4: machine.axis[0]: expected a table, got an integer"},
     {"rapid_above_max", TCP "[machine]\nmax_feed = 8000\nrapid_feed = 9000\n",

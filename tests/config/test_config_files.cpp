@@ -90,6 +90,28 @@ TEST(ConfigFiles, SimulatorExampleLoadsWithoutGpioLines) {
   EXPECT_FALSE(c.rt.lock_memory);
 }
 
+// The z-axis example: z's own feed and accel, and the interpreter told to run Z as moves.
+TEST(ConfigFiles, ZAxisExampleGivesZLimits) {
+  Config c;
+  std::string error;
+  ASSERT_TRUE(load(kExamples + "/sim_z.toml", c, error)) << error;
+  ASSERT_EQ(c.machine.axes.size(), 3u);
+  EXPECT_EQ(c.machine.axes[2].name, "z");
+  const auto z = z_limits(c.machine);
+  EXPECT_TRUE(z.configured());
+  EXPECT_DOUBLE_EQ(z.feed, 3000.0 / 60.0);
+  EXPECT_DOUBLE_EQ(z.accel, 500.0);
+  EXPECT_DOUBLE_EQ(z.period, 0.001);
+  EXPECT_TRUE(interp_settings(c, false).z_axis);
+  // Without z's own keys: the machine's rapid feed and accel; without z: none.
+  c.machine.axes[2].feed = c.machine.axes[2].accel = 0;
+  EXPECT_DOUBLE_EQ(z_limits(c.machine).feed, c.machine.rapid_feed / 60.0);
+  EXPECT_DOUBLE_EQ(z_limits(c.machine).accel, c.machine.accel);
+  c.machine.axes.pop_back();
+  EXPECT_FALSE(z_limits(c.machine).configured());
+  EXPECT_FALSE(interp_settings(c, false).z_axis);
+}
+
 TEST(ConfigFiles, Defaults) {
   const Config c = defaults();
   ASSERT_EQ(c.machine.axes.size(), 2u);

@@ -76,6 +76,21 @@ void check_interpretation(const GcodeFile& g) {
     before = a.before_path;
   }
   for (const auto& q : prog.points.points) FUZZ_CHECK(std::isfinite(q.x) && std::isfinite(q.y), "a non-finite point");
+  // The same program on a machine with a z axis: every z move lands before or after a path.
+  InterpSettings with_z = settings;
+  with_z.z_axis = true;
+  GcodeProgram zp;
+  if (!build_program(g, with_z, it, zp, error)) return;
+  std::size_t z_moves = 0;
+  for (const ProgramPath& p : zp.paths)
+    for (const std::vector<ProgramMove>* moves : {&p.before, &p.after})
+      for (const ProgramMove& m : *moves) {
+        FUZZ_CHECK(std::isfinite(m.xy.x) && std::isfinite(m.xy.y) && std::isfinite(m.z_end) && m.feed_mm_min >= 0,
+                   "a z-axis move not finite, or with a negative feed");
+        z_moves += m.z ? 1 : 0;
+      }
+  FUZZ_CHECK(z_moves == zp.z_moves, "a z move lost between the paths");
+  FUZZ_CHECK(zp.paths.size() >= prog.paths.size(), "fewer paths with a z axis");
 }
 
 }  // namespace

@@ -2,7 +2,8 @@
 // tests/interp holds input.ngc and expected.txt, the canonical moves and
 // actions (job::format_canon), then the program the controller runs (paths
 // and actions), or the error. An optional state.txt is the machine state
-// the program starts from. KERF_UPDATE_GOLDENS=1 rewrites expected.txt.
+// the program starts from; a file z_axis runs the case on a machine with a
+// z axis. KERF_UPDATE_GOLDENS=1 rewrites expected.txt.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -46,11 +47,19 @@ std::string format_program(const GcodeProgram& p) {
            " at " + f4(p.actions[a].at.x) + " " + f4(p.actions[a].at.y) + "\n";
   };
   s += std::string("PROGRAM") + (p.dry_run ? " dry-run" : "") + "\n";
+  // z axis: the moves between paths (none without one).
+  auto moves = [&](const char* when, const std::vector<ProgramMove>& v) {
+    for (const ProgramMove& m : v)
+      s += std::string("    ") + when + (m.z ? " Z " + f4(m.z_end) + " at " : " XY ") + f4(m.xy.x) + " " +
+           f4(m.xy.y) + (m.feed_mm_min > 0 ? " F" + f4(m.feed_mm_min) : " rapid") + " line " +
+           std::to_string(m.line) + "\n";
+  };
   for (std::size_t k = 0; k < p.paths.size(); ++k) {
     actions_before(k);
     const std::size_t b = p.points.path_begin[k];
     const std::size_t e = k + 1 < p.paths.size() ? p.points.path_begin[k + 1] : p.points.points.size();
     const ProgramPath& pp = p.paths[k];
+    moves("BEFORE", pp.before);
     double lo = 1e300, hi = 0;  // the feeds along the path
     for (std::size_t i = b; i < e; ++i) lo = std::min(lo, p.point_feed[i]), hi = std::max(hi, p.point_feed[i]);
     s += "  PATH " + std::string(pp.torch ? "torch" : "dry") + " feed " + f4(pp.feed_mm_min) +
@@ -59,8 +68,16 @@ std::string format_program(const GcodeProgram& p) {
          f4(p.points.points[b].x) + " " + f4(p.points.points[b].y) + " to " + f4(p.points.points[e - 1].x) + " " +
          f4(p.points.points[e - 1].y) + " lines " + std::to_string(p.points.point_lines[b]) + ".." +
          std::to_string(p.points.point_lines[e - 1]) + "\n";
+    moves("AFTER", pp.after);
   }
   actions_before(p.paths.size());
+  if (p.z_moves > 0) s += "  Z MOVES " + std::to_string(p.z_moves) + " final z " + f4(p.final_z) + "\n";
+  for (const char* name : {"Z move", "Z with the torch on"}) {
+    const auto c = p.interp.constructs.find(name);
+    if (c != p.interp.constructs.end())
+      s += std::string("  CONSTRUCT ") + name + ": " + c->second.handling + " (" + std::to_string(c->second.count) +
+           ", first line " + std::to_string(c->second.first_line) + ")\n";
+  }
   return s;
 }
 
@@ -70,11 +87,13 @@ std::string run_case(const fs::path& dir) {
   if (fs::exists(dir / "state.txt") && !load_machine_state((dir / "state.txt").string(), state, error))
     return "ERROR " + error + "\n";
   const GcodeFile g = parse_gcode(slurp(dir / "input.ngc"), "input.ngc");
+  InterpSettings set = settings();
+  set.z_axis = fs::exists(dir / "z_axis");  // the case's machine has a z axis
   Interpretation it;
-  if (!interpret(g, settings(), state, it, error)) return "ERROR " + error + "\n";
+  if (!interpret(g, set, state, it, error)) return "ERROR " + error + "\n";
   GcodeProgram prog;
   std::string out = format_canon(it);
-  if (!build_program(g, settings(), it, prog, error)) return out + "PROGRAM ERROR " + error + "\n";
+  if (!build_program(g, set, it, prog, error)) return out + "PROGRAM ERROR " + error + "\n";
   return out + format_program(prog);
 }
 

@@ -27,6 +27,7 @@ struct RigOptions {
   double response_timeout_s = 0.5;
   int retries = 3;
   double watchdog_s = 0.0;
+  motion::AxisLimits<double> z{};  // a z axis (none by default)
 };
 
 // For tests whose faults must run into the response timeout; they only
@@ -46,6 +47,7 @@ struct LinkRig {
   LinkRig(Wire wire, const RigOptions& opt = {}) {
     sim::BoardConfig bc;
     bc.capacity = opt.capacity;
+    bc.z = opt.z;
     board = std::make_unique<sim::MotionBoard>(bc, std::make_unique<sim::EndpointExecutor>());
     sim::ServerConfig sc;
     sc.transport = wire == Wire::tcp ? sim::ServerConfig::Transport::tcp

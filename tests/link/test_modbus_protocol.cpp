@@ -61,7 +61,7 @@ TEST(RegisterMap, StatusRoundTripsTorchAndThcLock) {
     st.thc_lock = (bits & 2) != 0;
     std::uint16_t r[map::kStatusRegs] = {};
     map::encode_status(st, r);
-    EXPECT_EQ(r[map::kRegVersion], 3);
+    EXPECT_EQ(r[map::kRegVersion], 4);
     EXPECT_EQ(r[map::kRegTorch], bits);
     hal::BoardStatus back;
     back.torch = !st.torch;
@@ -78,7 +78,7 @@ TEST(RegisterMap, StatusRoundTripsTorchAndThcLock) {
   r[map::kRegTorch] = 4;  // a bit this map does not define
   EXPECT_FALSE(map::decode_status(r, st));
   map::encode_status(st, r);
-  r[map::kRegVersion] = 2;
+  r[map::kRegVersion] = 3;  // the map before z moves
   EXPECT_FALSE(map::decode_status(r, st));
 }
 

@@ -28,6 +28,10 @@ std::unique_ptr<CspSegmentLink> CspSegmentLink::create(AxisLink& axes, const Csp
     error = "CSP link: needs at least two axes (x and y)";
     return nullptr;
   }
+  if (cfg.z.configured() && (axes.axis_count() < 3 || !(cfg.z_counts_per_mm > 0))) {
+    error = "CSP link: a z axis needs a third drive and counts per mm > 0";
+    return nullptr;
+  }
   if (cfg.queue_slots < 1 || cfg.queue_slots > 200) {
     error = "CSP link: queue slots must be 1..200";
     return nullptr;
@@ -63,7 +67,15 @@ bool CspSegmentLink::configure(std::string& error) {
   actual_ = position_;
   for (auto& s : sent_) s = {static_cast<std::int32_t>(target_[0]), static_cast<std::int32_t>(target_[1])};
   exec_.emplace(motion_, Span<SegmentCommand>{ring_.data(), ring_.size()}, position_);
+  if (has_z()) {
+    cfg_.z.period = axes_.period_s();  // z steps with the SYNC
+    exec_->configure_z(cfg_.z, static_cast<double>(axes_.axis(2).actual) / cfg_.z_counts_per_mm);
+  }
   return true;
+}
+
+std::int32_t CspSegmentLink::z_counts() const {
+  return static_cast<std::int32_t>(std::llround(exec_->z() * cfg_.z_counts_per_mm));
 }
 
 BoardStatus CspSegmentLink::status_locked() const {
@@ -77,7 +89,8 @@ LinkError CspSegmentLink::push(const SegmentCommand& seg, BoardStatus& status) {
   std::lock_guard<std::mutex> lock(mu_);
   const char* why = nullptr;
   if (seg.seq > exec_->last_accepted() && (std::fabs(seg.end.x * cfg_.counts_per_mm.x) >= kMaxCounts ||
-                                           std::fabs(seg.end.y * cfg_.counts_per_mm.y) >= kMaxCounts))
+                                           std::fabs(seg.end.y * cfg_.counts_per_mm.y) >= kMaxCounts ||
+                                           (seg.z_move && std::fabs(seg.z * cfg_.z_counts_per_mm) >= kMaxCounts)))
     why = "end point beyond the drives' 32-bit position range";
   switch (why != nullptr ? motion::BoardAccept::invalid : exec_->accept(seg)) {
     case motion::BoardAccept::queued:
@@ -154,6 +167,7 @@ void CspSegmentLink::cycle() {
       target_[1] = axes_.axis(1).target;
       exec_->reset({static_cast<double>(target_[0]) / cfg_.counts_per_mm.x,
                     static_cast<double>(target_[1]) / cfg_.counts_per_mm.y});
+      if (has_z()) exec_->configure_z(cfg_.z, static_cast<double>(axes_.axis(2).target) / cfg_.z_counts_per_mm);
     }
     changed_.notify_all();
     return;
@@ -168,9 +182,11 @@ void CspSegmentLink::cycle() {
   for (std::uint32_t s = e.completed_from + 1; s <= e.completed_to; ++s) executed_.push_back(s);
   const std::int32_t tx = static_cast<std::int32_t>(target_[0]);
   const std::int32_t ty = static_cast<std::int32_t>(target_[1]);
+  const std::int32_t tz = has_z() ? z_counts() : 0;
   lock.unlock();
   axes_.set_target(0, tx);
   axes_.set_target(1, ty);
+  if (has_z()) axes_.set_target(2, tz);
   const AxisError err = axes_.cycle();
   lock.lock();
   const AxisState& ax = axes_.axis(0);
@@ -191,7 +207,7 @@ void CspSegmentLink::cycle() {
   position_ = {cmd[0] / cfg_.counts_per_mm.x, cmd[1] / cfg_.counts_per_mm.y};
   actual_ = {act[0] / cfg_.counts_per_mm.x, act[1] / cfg_.counts_per_mm.y};
   // At rest means the drives have caught up with the last setpoint.
-  settled_ = ax.actual == tx && ay.actual == ty;
+  settled_ = ax.actual == tx && ay.actual == ty && (!has_z() || axes_.axis(2).actual == tz);
   if (err != AxisError::none) fault_locked(fault_bit(err), axes_.last_error());
   if (settled_) exec_->drives_settled();
   CspSample s;
@@ -201,6 +217,7 @@ void CspSegmentLink::cycle() {
   s.target[1] = ty;
   s.actual[0] = ax.actual;
   s.actual[1] = ay.actual;
+  s.target_z = tz;
   s.torch = exec_->torch();
   trace_.push_back(s);
   changed_.notify_all();

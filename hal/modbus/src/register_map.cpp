@@ -5,10 +5,14 @@ namespace kerf::hal::modbus_map {
 bool encode_slot(const SegmentCommand& s, std::uint16_t* slot) {
   std::int32_t ex = 0, ey = 0, cx = 0, cy = 0, feed = 0;
   if (!to_units(s.end.x, ex) || !to_units(s.end.y, ey)) return false;
-  if (!to_units(s.centre.x, cx) || !to_units(s.centre.y, cy)) return false;
+  if (s.z_move) {  // centre_x carries the z end, centre_y and dir are 0
+    if (s.kind != SegmentKind::line || s.dir != 0 || !to_units(s.z, cx)) return false;
+  } else if (!to_units(s.centre.x, cx) || !to_units(s.centre.y, cy)) {
+    return false;
+  }
   if (!to_units(s.feed, feed) || feed <= 0) return false;
   put32(slot + kSlotSeq, s.seq);
-  slot[kSlotKind] = s.kind == SegmentKind::arc ? 1 : 0;
+  slot[kSlotKind] = s.z_move ? kKindZMove : s.kind == SegmentKind::arc ? kKindArc : kKindLine;
   slot[kSlotDir] = static_cast<std::uint16_t>(static_cast<std::int16_t>(s.dir));
   put32(slot + kSlotEndX, static_cast<std::uint32_t>(ex));
   put32(slot + kSlotEndY, static_cast<std::uint32_t>(ey));
@@ -26,18 +30,24 @@ bool decode_slot(const std::uint16_t* slot, SegmentCommand& s, const char*& reas
   const auto dir = static_cast<std::int16_t>(slot[kSlotDir]);
   const std::int32_t feed = get_i32(slot + kSlotFeed);
   if (s.seq == 0) { reason = "sequence number 0"; return false; }
-  if (kind > 1) { reason = "unknown segment type"; return false; }
-  if (kind == 1 && dir != 1 && dir != -1) { reason = "arc direction not +1/-1"; return false; }
-  if (kind == 0 && dir != 0) { reason = "line with a direction"; return false; }
+  if (kind > kKindZMove) { reason = "unknown segment type"; return false; }
+  if (kind == kKindArc && dir != 1 && dir != -1) { reason = "arc direction not +1/-1"; return false; }
+  if (kind == kKindLine && dir != 0) { reason = "line with a direction"; return false; }
+  if (kind == kKindZMove && (dir != 0 || get_i32(slot + kSlotCentreY) != 0)) {
+    reason = "z move with a direction or centre_y";
+    return false;
+  }
   if (feed <= 0) { reason = "feed <= 0"; return false; }
   if ((slot[kSlotFlags] & ~kFlagTorch) != 0 || slot[kSlotReserved] != 0) {
     reason = "reserved bits set";
     return false;
   }
-  s.kind = kind == 1 ? SegmentKind::arc : SegmentKind::line;
+  s.kind = kind == kKindArc ? SegmentKind::arc : SegmentKind::line;
   s.dir = static_cast<std::int8_t>(dir);
   s.end = {to_mm(get_i32(slot + kSlotEndX)), to_mm(get_i32(slot + kSlotEndY))};
-  s.centre = {to_mm(get_i32(slot + kSlotCentreX)), to_mm(get_i32(slot + kSlotCentreY))};
+  s.z_move = kind == kKindZMove;
+  s.z = s.z_move ? to_mm(get_i32(slot + kSlotCentreX)) : 0.0;
+  s.centre = s.z_move ? Vec2<double>{} : Vec2<double>{to_mm(get_i32(slot + kSlotCentreX)), to_mm(get_i32(slot + kSlotCentreY))};
   s.feed = to_mm(feed);
   s.torch = (slot[kSlotFlags] & kFlagTorch) != 0;
   return true;
@@ -47,9 +57,10 @@ void encode_status(const BoardStatus& st, std::uint16_t* r) {
   std::int32_t x = 0, y = 0;
   to_units(st.position.x, x);
   to_units(st.position.y, y);
-  std::int32_t ax = 0, ay = 0;
+  std::int32_t ax = 0, ay = 0, z = 0;
   to_units(st.actual.x, ax);
   to_units(st.actual.y, ay);
+  to_units(st.z, z);
   r[kRegVersion] = kMapVersion;
   r[kRegState] = static_cast<std::uint16_t>(st.state);
   r[kRegCredit] = st.credit;
@@ -63,6 +74,7 @@ void encode_status(const BoardStatus& st, std::uint16_t* r) {
   r[kRegDuplicates] = st.duplicates;
   put32(r + kRegActualX, static_cast<std::uint32_t>(ax));
   put32(r + kRegActualY, static_cast<std::uint32_t>(ay));
+  put32(r + kRegPosZ, static_cast<std::uint32_t>(z));
 }
 
 bool decode_status(const std::uint16_t* r, BoardStatus& st) {
@@ -80,6 +92,7 @@ bool decode_status(const std::uint16_t* r, BoardStatus& st) {
   st.thc_lock = (r[kRegTorch] & kStatusThcLock) != 0;
   st.duplicates = r[kRegDuplicates];
   st.actual = {to_mm(get_i32(r + kRegActualX)), to_mm(get_i32(r + kRegActualY))};
+  st.z = to_mm(get_i32(r + kRegPosZ));
   return true;
 }
 

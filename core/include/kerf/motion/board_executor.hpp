@@ -20,6 +20,11 @@
 // - finish: no more segments; running with an empty queue and the stage at
 //   rest (and the drives settled, when the caller says so) is done.
 // - The torch follows the sequence number the stage is running.
+// - A z move (BoardSegment::z_move) waits until every segment before it has
+//   finished and the stage is at rest, then runs alone on the z axis
+//   (AxisMove, within configure_z's limits); the segments after it wait for
+//   it. Its XY end must be the previous end (within kZXyTolerance), and a
+//   board with no z axis refuses it: both are kBoardFaultBadSegment.
 //
 // Motion (the stage) provides: free_slots(), push(from, segment) -> bool,
 // step() -> MotionStep<S>, hold(), resume(), abort(), reset(at). It is a
@@ -31,6 +36,7 @@
 #include <cstdint>
 
 #include "kerf/core/span.hpp"
+#include "kerf/motion/axis_move.hpp"
 #include "kerf/motion/board_protocol.hpp"
 
 namespace kerf::motion {
@@ -41,6 +47,9 @@ class BoardExecutor {
   // Sequence numbers of segments in the queue and in the stage together
   // must fit this window (the torch flag is kept by number, modulo it).
   static constexpr std::size_t kTorchWindow = 512;
+  // How far a z move's XY end may be from the previous end, mm (the links
+  // carry whole micrometres; a fault leaves the axes between counts).
+  static constexpr double kZXyTolerance = 0.002;
 
   // queue: the board's slots (its size is the credit); motion: configured,
   // empty, and outliving the executor; start: where the axes stand.
@@ -54,6 +63,11 @@ class BoardExecutor {
   // Fault -> idle now, the axes at `at` (the caller has reset the drives,
   // which took their own positions as the setpoint).
   void reset(Vec2<S> at);
+  // The z axis's limits (none by default: z moves are refused), and where it stands.
+  void configure_z(const AxisLimits<S>& limits, S at) {
+    z_.configure(limits);
+    z_.reset(at);
+  }
 
   // One servo period. A caller whose drives follow the setpoint with a lag
   // passes wait_for_drives and calls drives_settled() once they hold it:
@@ -75,6 +89,7 @@ class BoardExecutor {
   std::uint32_t last_executed() const { return last_executed_; }
   std::uint16_t duplicates() const { return duplicates_; }
   Vec2<S> position() const { return position_; }
+  S z() const { return z_.position(); }
   bool torch() const { return torch_; }
   bool thc_lock() const { return thc_lock_; }  // the last step's: below vad of the cut feed
   bool moving() const { return moving_; }
@@ -83,12 +98,14 @@ class BoardExecutor {
 
  private:
   void hand_over();  // queued segments into the stage while it has room
+  bool start_z(const BoardSegment<S>& seg);
   void reset_now(Vec2<S> at);
   void finish_if_done();
   bool torch_of(std::uint32_t seq) const;
   void set_torch_of(std::uint32_t seq, bool on);
 
   Motion& motion_;
+  AxisMove<S> z_;
   Span<BoardSegment<S>> queue_;
   std::size_t head_ = 0, count_ = 0;
   BoardState state_ = BoardState::idle;

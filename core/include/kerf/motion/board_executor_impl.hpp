@@ -42,11 +42,13 @@ bool BoardExecutor<S, Motion>::command(BoardCommand c) {
       if (state_ != BoardState::running) return false;
       state_ = BoardState::hold;
       motion_.hold();
+      z_.hold();
       return true;
     case BoardCommand::resume:
       if (state_ != BoardState::hold) return false;
       state_ = BoardState::running;
       motion_.resume();
+      z_.resume();
       moving_ = true;  // step again even if the queue waits on the host
       return true;
     case BoardCommand::abort: fault(kBoardFaultAbort); return true;
@@ -72,6 +74,7 @@ void BoardExecutor<S, Motion>::fault(std::uint16_t bits) {
   executing_ = 0;
   count_ = 0;
   motion_.abort();
+  z_.abort();
 }
 
 template <class S, class Motion>
@@ -91,22 +94,37 @@ void BoardExecutor<S, Motion>::reset_now(Vec2<S> at) {
   position_ = tail_end_ = at;         // the next segment starts where the axes stopped
   dropped_through_ = last_accepted_;  // what the fault dropped never ran
   motion_.reset(at);
+  z_.reset(z_.position());
 }
 
 template <class S, class Motion>
 void BoardExecutor<S, Motion>::hand_over() {
-  while (count_ > 0 && motion_.free_slots() > 0) {
+  while (count_ > 0 && motion_.free_slots() > 0 && !z_.busy()) {
     const BoardSegment<S>& seg = queue_[head_];
-    if (!motion_.push(tail_end_, seg)) {
+    if (seg.z_move) {
+      if (busy_) return;  // after the segments before it, at rest
+      if (!start_z(seg)) {
+        fault(kBoardFaultBadSegment);
+        return;
+      }
+    } else if (!motion_.push(tail_end_, seg)) {
       fault(kBoardFaultBadSegment);
       return;
+    } else {
+      tail_end_ = seg.end;
     }
     set_torch_of(seg.seq, seg.torch);
-    tail_end_ = seg.end;
     busy_ = true;
     head_ = head_ + 1 == queue_.size() ? 0 : head_ + 1;
     --count_;
   }
+}
+
+template <class S, class Motion>
+bool BoardExecutor<S, Motion>::start_z(const BoardSegment<S>& seg) {
+  const S tol = S(kZXyTolerance);
+  if (Scalar<S>::abs(seg.end.x - tail_end_.x) > tol || Scalar<S>::abs(seg.end.y - tail_end_.y) > tol) return false;
+  return z_.start(seg.z, seg.feed, seg.seq);
 }
 
 template <class S, class Motion>
@@ -117,23 +135,28 @@ BoardStep<S> BoardExecutor<S, Motion>::step(bool wait_for_drives) {
   if (active() || state_ == BoardState::fault) {
     if (state_ == BoardState::running) hand_over();
     const MotionStep<S> e = motion_.step();
+    const std::uint32_t z_running = z_.running();
+    const std::uint32_t z_done = z_.step();
     out.stepped = true;
     position_ = e.position;
-    busy_ = !e.at_rest;
-    moving_ = e.moving;
-    thc_lock_ = e.thc_lock;
+    busy_ = !e.at_rest || z_.busy();
+    moving_ = e.moving || z_.moving();
+    thc_lock_ = e.thc_lock || z_running != 0;
     // Sequence numbers are consecutive (only last + 1 is queued), so every
-    // number up to last_completed ran, except those a fault dropped.
-    if (e.last_completed > from) out.completed_to = e.last_completed;
-    if (e.last_completed > last_executed_) last_executed_ = e.last_completed;
+    // number up to last_completed ran, except those a fault dropped. A z
+    // move runs alone, after every segment before it.
+    const std::uint32_t completed = e.last_completed > z_done ? e.last_completed : z_done;
+    if (completed > from) out.completed_to = completed;
+    if (completed > last_executed_) last_executed_ = completed;
     if (state_ != BoardState::fault) {
-      executing_ = e.running;
-      torch_ = e.running != 0 && torch_of(e.running);
+      executing_ = e.running != 0 ? e.running : z_.running();
+      torch_ = executing_ != 0 && torch_of(executing_);
     }
-    if (state_ == BoardState::fault && reset_pending_ && e.at_rest) reset_now(position_);
+    if (state_ == BoardState::fault && reset_pending_ && !busy_) reset_now(position_);
     if (!wait_for_drives) finish_if_done();
   }
   out.position = position_;
+  out.z = z_.position();
   out.executing = executing_;
   out.torch = torch_;
   out.thc_lock = thc_lock_;

@@ -11,7 +11,10 @@
 namespace kerf::motion {
 
 // One segment as the board receives it: the start is where the previous one
-// ended (or the board's position for the first).
+// ended (or the board's position for the first). A z move (z_move) is an
+// item of its own: Z alone to `z` at rest in XY, run once every segment
+// before it has finished; its `end` is the XY end of the item before (the
+// board checks it), kind line, dir 0, centre unused, feed the Z feed.
 template <class S>
 struct BoardSegment {
   std::uint32_t seq = 0;  // 1, 2, 3 ... in streaming order; 0 is "none"
@@ -21,6 +24,8 @@ struct BoardSegment {
   std::int8_t dir = 0;  // +1 CCW, -1 CW, 0 line
   S feed{};             // mm/s
   bool torch = true;    // cut (torch on) or travel
+  bool z_move = false;  // Z alone (above)
+  S z{};                // mm, the z move's end
 };
 
 enum class BoardState : std::uint8_t { idle = 0, running = 1, hold = 2, done = 3, fault = 4 };
@@ -46,6 +51,7 @@ enum class BoardAccept : std::uint8_t {
 // The fault bits the executor itself raises (hal::FaultBit lists them all).
 inline constexpr std::uint16_t kBoardFaultAbort = 1u << 0;       // abort command
 inline constexpr std::uint16_t kBoardFaultBadSegment = 1u << 2;  // the motion refused a segment
+                                                                  // (or a z move: no z axis, XY off)
 
 // One period of the motion stage (the interpolator, or a stand-in).
 template <class S>
@@ -66,6 +72,7 @@ struct BoardStep {
   bool torch = false;
   bool thc_lock = true;  // the stage's MotionStep::thc_lock (raw: not masked by the torch)
   bool stepped = false;  // the motion stage ran this period
+  S z{};                 // mm, the z axis (0 on a board without one)
   // The segments completed_from + 1 .. completed_to finished this period.
   std::uint32_t completed_from = 0;
   std::uint32_t completed_to = 0;

@@ -46,6 +46,7 @@ struct BoardStatus {
   // mm, measured (encoder, CiA 402 0x6064). A board without feedback reports
   // its commanded position here; the controller checks the gap (following error).
   Vec2<double> actual{};
+  double z = 0;  // mm, commanded z (0 on a machine without a z axis)
   bool torch = false;
   bool thc_lock = true;  // speed below vad of the cut feed: torch-height control holds
   std::uint16_t duplicates = 0;    // resends the board dropped (wraps)
@@ -62,6 +63,7 @@ BoardStatus status_of(const Executor& e) {
   s.executing = e.executing();
   s.last_executed = e.last_executed();
   s.position = e.position();
+  s.z = static_cast<double>(e.z());
   s.torch = e.torch();
   s.thc_lock = e.thc_lock();
   s.duplicates = e.duplicates();

@@ -26,6 +26,7 @@ struct TraceSample {
   std::uint32_t seq;  // segment being executed, 0 when idle
   bool torch;
   bool thc_lock = true;  // the board's thc_lock this tick (speed below vad of the cut feed)
+  double z = 0;          // mm (0 without a z axis)
 };
 
 struct BoardConfig {
@@ -33,6 +34,8 @@ struct BoardConfig {
   double servo_period_s = 0.001;  // simulated time per tick
   Vec2<double> start{};           // position at power-up (mm)
   std::size_t trace_reserve = 0;  // samples to reserve up front
+  motion::AxisLimits<double> z{}; // the z axis (period 0: none; z moves are refused)
+  double start_z = 0;             // mm
 };
 
 using Accept = motion::BoardAccept;

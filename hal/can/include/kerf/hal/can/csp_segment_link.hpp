@@ -3,7 +3,8 @@
 // same executor a motion board runs (core/motion/board_executor.hpp: queue,
 // sequence numbers, credit, state machine) over core/motion's interpolator;
 // each SYNC period its setpoint goes out through a hal::AxisLink (axis 0 = x,
-// 1 = y; further axes hold their position). status() reports like the
+// 1 = y, 2 = z when CspConfig::z is set: the executor's z moves; further
+// axes hold their position). status() reports like the
 // board, with actual the drives' 0x6064 from their TPDO and position the
 // setpoint of the SYNC that feedback was sampled at; done waits until the
 // drives hold the last setpoint.
@@ -39,6 +40,9 @@ struct CspConfig {
   double vad = 0.9;                // thc_lock below this fraction of the cut feed
   std::size_t queue_slots = 32;    // the credit the host sees, and the look-ahead behind it
   std::size_t trace_reserve = 0;
+  // A z axis (axis 2): its limits and resolution; period 0 (the default): none.
+  motion::AxisLimits<double> z{};
+  double z_counts_per_mm = 1000.0;
 };
 
 struct CspSample {
@@ -46,6 +50,7 @@ struct CspSample {
   std::uint32_t seq = 0;            // segment being executed, 0 when none
   std::int64_t target[2]{};         // counts sent this SYNC
   std::int32_t actual[2]{};         // counts the drives reported
+  std::int64_t target_z = 0;        // counts sent to the z drive (0 without one)
   bool torch = false;
 };
 
@@ -76,6 +81,8 @@ class CspSegmentLink final : public SegmentLink {
  private:
   CspSegmentLink(AxisLink& axes, const CspConfig& cfg);
   bool configure(std::string& error);
+  bool has_z() const { return cfg_.z.configured(); }
+  std::int32_t z_counts() const;
   bool has_work_locked() const;
   void fault_locked(std::uint16_t bit, const char* why);
   BoardStatus status_locked() const;

@@ -10,13 +10,14 @@
 
 namespace kerf::hal::modbus_map {
 
-// 2: the actual position (16..19); 3: register 14 is a flag set (torch, thc_lock)
-inline constexpr std::uint16_t kMapVersion = 3;
+// 2: the actual position (16..19); 3: register 14 is a flag set (torch, thc_lock);
+// 4: slot type 2 (z move) and pos_z (20..21)
+inline constexpr std::uint16_t kMapVersion = 4;
 inline constexpr int kDefaultUnit = 17;
 
-// Status block: holding registers 0..19, read-only.
+// Status block: holding registers 0..21, read-only.
 inline constexpr int kStatusAddr = 0;
-inline constexpr int kStatusRegs = 20;
+inline constexpr int kStatusRegs = 22;
 // Command register, written with FC06.
 inline constexpr int kCommandAddr = 32;
 // Segment slots: k consecutive slots written in one FC16/FC23 queue k segments.
@@ -30,7 +31,7 @@ enum StatusReg : int {
   kRegVersion = 0, kRegState = 1, kRegCredit = 2, kRegFaults = 3,
   kRegLastAccepted = 4, kRegExecuting = 6, kRegLastExecuted = 8,
   kRegPosX = 10, kRegPosY = 12, kRegTorch = 14, kRegDuplicates = 15,
-  kRegActualX = 16, kRegActualY = 18,
+  kRegActualX = 16, kRegActualY = 18, kRegPosZ = 20,
 };
 // Offsets inside a slot.
 enum SlotReg : int {
@@ -38,6 +39,8 @@ enum SlotReg : int {
   kSlotCentreX = 8, kSlotCentreY = 10, kSlotFeed = 12, kSlotFlags = 14, kSlotReserved = 15,
 };
 inline constexpr std::uint16_t kFlagTorch = 1;
+// Slot types (kSlotKind).
+inline constexpr std::uint16_t kKindLine = 0, kKindArc = 1, kKindZMove = 2;
 // Bits of status register 14 (kRegTorch).
 inline constexpr std::uint16_t kStatusTorch = 1;
 inline constexpr std::uint16_t kStatusThcLock = 2;  // speed below vad of the cut feed
