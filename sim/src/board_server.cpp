@@ -187,11 +187,13 @@ void BoardServer::handle(const std::uint8_t* q, int len, int fd) {
       break;
     case MODBUS_FC_WRITE_SINGLE_REGISTER:
       if (u16(q + h + 1) != map::kCommandAddr) code = MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS;
+      else if (u16(q + h + 3) == map::kCommandHome) code = start_homing();
       else if (!board_.command(static_cast<std::uint16_t>(u16(q + h + 3))))
         code = MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE;
       break;
     case MODBUS_FC_WRITE_MULTIPLE_REGISTERS:
-      code = write_slots(board_, u16(q + h + 1), u16(q + h + 3), q + h + 6, len - h - 6);
+      if (u16(q + h + 1) == map::kHomeAddr) code = write_home_block(u16(q + h + 3), q + h + 6, len - h - 6);
+      else code = write_slots(board_, u16(q + h + 1), u16(q + h + 3), q + h + 6, len - h - 6);
       break;
     case MODBUS_FC_WRITE_AND_READ_REGISTERS:
       if (u16(q + h + 1) + u16(q + h + 3) > map::kStatusRegs) {
@@ -204,6 +206,22 @@ void BoardServer::handle(const std::uint8_t* q, int len, int fd) {
     default: code = MODBUS_EXCEPTION_ILLEGAL_FUNCTION;
   }
   send_reply(q, len, fd, code);
+}
+
+int BoardServer::write_home_block(int nb, const std::uint8_t* data, int bytes) {
+  if (nb != map::kHomeRegs) return MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS;
+  if (bytes < 2 * nb) return MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE;
+  for (int i = 0; i < nb; ++i) home_block_[i] = static_cast<std::uint16_t>(u16(data + 2 * i));
+  home_block_set_ = true;
+  return 0;
+}
+
+int BoardServer::start_homing() {
+  hal::HomeCommand cmd;
+  const char* reason = nullptr;
+  if (!home_block_set_ || !map::decode_home(home_block_, cmd, reason) || !board_.home(cmd))
+    return MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE;
+  return 0;
 }
 
 void BoardServer::send_reply(const std::uint8_t* q, int len, int fd, int exception_code) {

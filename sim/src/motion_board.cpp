@@ -27,6 +27,13 @@ Accept MotionBoard::accept(const hal::SegmentCommand& seg) {
 
 bool MotionBoard::command(std::uint16_t code) {
   std::lock_guard<std::mutex> lock(mu_);
+  if (homing_.active()) {  // only abort stops a homing cycle; the axis stays unhomed
+    if (code != static_cast<std::uint16_t>(hal::Command::abort)) return false;
+    homing_.abort();
+    end_homing_locked(hal::kFaultAbort);
+    changed_.notify_all();
+    return true;
+  }
   const bool ok = code >= 1 && code <= 6 && exec_.command(static_cast<hal::Command>(code));
   changed_.notify_all();
   return ok;
@@ -34,6 +41,10 @@ bool MotionBoard::command(std::uint16_t code) {
 
 void MotionBoard::inject_fault(std::uint16_t bit) {
   std::lock_guard<std::mutex> lock(mu_);
+  if (homing_.active()) {
+    homing_.abort();
+    end_homing_locked(bit);
+  }
   if (exec_.active()) exec_.fault(bit);
   changed_.notify_all();
 }
@@ -42,12 +53,63 @@ void MotionBoard::link_lost() { inject_fault(hal::kFaultLinkWatchdog); }
 
 hal::BoardStatus MotionBoard::status() const {
   std::lock_guard<std::mutex> lock(mu_);
-  return hal::status_of(exec_);
+  hal::BoardStatus st = hal::status_of(exec_);
+  if (homing_.active()) {
+    st.position = home_pos_;
+    st.state = BoardState::running;
+  }
+  st.homed = homed_;
+  st.homing = homing_.state();
+  return st;
+}
+
+bool MotionBoard::home(const hal::HomeCommand& cmd) {
+  std::lock_guard<std::mutex> lock(mu_);
+  const BoardState s = exec_.state();
+  if (homing_.active() || (s != BoardState::idle && s != BoardState::done) || !exec_.at_rest()) return false;
+  if (cmd.axis < 0 || cmd.axis > 1) return false;  // the simulated board homes x and y
+  home_pos_ = exec_.position();
+  homed_ = static_cast<std::uint8_t>(homed_ & ~(1u << cmd.axis));
+  homing_.start(cmd, cmd.axis == 0 ? home_pos_.x : home_pos_.y);
+  changed_.notify_all();
+  return true;
+}
+
+double MotionBoard::last_latch() const {
+  std::lock_guard<std::mutex> lock(mu_);
+  return homing_.latched_at();
+}
+
+// The executor takes a new position only out of fault: a fault with no bits,
+// then a reset at the new point (the queue is empty, nothing is dropped).
+void MotionBoard::rebase_locked(Vec2<double> at) {
+  exec_.fault(0);
+  exec_.reset(at);
+}
+
+void MotionBoard::home_tick_locked() {
+  const int axis = homing_.command().axis;
+  const double* sw = cfg_.has_home_switch[axis] ? &cfg_.home_switch_at[axis] : nullptr;
+  const double p = homing_.step(cfg_.servo_period_s, sw);
+  (axis == 0 ? home_pos_.x : home_pos_.y) = p;
+  if (homing_.state() == hal::HomingState::done) {
+    (axis == 0 ? home_pos_.x : home_pos_.y) = homing_.command().home_position;
+    homed_ = static_cast<std::uint8_t>(homed_ | (1u << axis));
+    rebase_locked(home_pos_);
+  } else if (!homing_.active()) {
+    end_homing_locked(hal::kFaultHoming);
+  }
+}
+
+// Homing ended without the switch: the axes stop where they are, unhomed, in fault.
+void MotionBoard::end_homing_locked(std::uint16_t fault_bits) {
+  rebase_locked(home_pos_);
+  exec_.fault(fault_bits);
 }
 
 // As fast as possible, simulated time waits for the host (see needs_step);
 // in real time, starving is real.
-bool MotionBoard::has_work_locked() const { return exec_.needs_step(realtime_); }
+bool MotionBoard::has_work_locked() const { return homing_.active() || exec_.needs_step(realtime_); }
 
 void MotionBoard::tick() {
   std::lock_guard<std::mutex> lock(mu_);
@@ -56,6 +118,13 @@ void MotionBoard::tick() {
 
 void MotionBoard::tick_locked() {
   if (!has_work_locked()) return;
+  if (homing_.active()) {
+    home_tick_locked();
+    ++ticks_;
+    trace_.push_back({static_cast<double>(ticks_) * cfg_.servo_period_s, home_pos_, 0, false, true, exec_.z()});
+    changed_.notify_all();
+    return;
+  }
   const motion::BoardStep<double> e = exec_.step();
   ++ticks_;
   for (std::uint32_t s = e.completed_from + 1; s <= e.completed_to; ++s) executed_.push_back(s);

@@ -68,7 +68,7 @@ TEST(RegisterMapZ, StatusCarriesPosZAndRefusesVersion3) {
   st.position = {1.0, 2.0};
   st.z = -17.001;
   std::uint16_t r[map::kStatusRegs] = {};
-  ASSERT_EQ(map::kStatusRegs, 22);
+  ASSERT_EQ(map::kStatusRegs, 24);  // 22..23: homing
   map::encode_status(st, r);
   EXPECT_EQ(r[map::kRegVersion], 4);
   EXPECT_EQ(map::get_i32(r + map::kRegPosZ), -17001);

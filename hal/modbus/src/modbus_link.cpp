@@ -150,7 +150,7 @@ void ModbusSegmentLink::drain() {
 
 template <class F>
 LinkError ModbusSegmentLink::transact(Op op, F&& attempt) {
-  static constexpr const char* kWhat[] = {"push", "status", "command"};
+  static constexpr const char* kWhat[] = {"push", "status", "command", "home"};
   const char* what = kWhat[static_cast<int>(op)];
   LinkError last = LinkError::timeout;
   int last_err = ETIMEDOUT;
@@ -240,6 +240,23 @@ LinkError ModbusSegmentLink::command(Command c) {
   put16(pdu + 1, map::kCommandAddr);
   put16(pdu + 3, static_cast<int>(c));
   return transact(Op::command, [&] { return exchange(pdu, 5, 0, nullptr); });
+}
+
+LinkError ModbusSegmentLink::home(const HomeCommand& h) {
+  std::uint16_t block[map::kHomeRegs];
+  if (!map::encode_home(h, block)) return fail(LinkError::rejected, "home", EINVAL);
+  std::uint8_t pdu[6 + 2 * map::kHomeRegs];
+  pdu[0] = MODBUS_FC_WRITE_MULTIPLE_REGISTERS;
+  put16(pdu + 1, map::kHomeAddr);
+  put16(pdu + 3, map::kHomeRegs);
+  pdu[5] = static_cast<std::uint8_t>(2 * map::kHomeRegs);
+  for (int i = 0; i < map::kHomeRegs; ++i) put16(pdu + 6 + 2 * i, block[i]);
+  const LinkError e = transact(Op::home, [&] { return exchange(pdu, 6 + 2 * map::kHomeRegs, 0, nullptr); });
+  if (e != LinkError::none) return e;
+  std::uint8_t cmd[5] = {MODBUS_FC_WRITE_SINGLE_REGISTER, 0, 0, 0, 0};
+  put16(cmd + 1, map::kCommandAddr);
+  put16(cmd + 3, map::kCommandHome);
+  return transact(Op::home, [&] { return exchange(cmd, 5, 0, nullptr); });
 }
 
 }  // namespace kerf::hal

@@ -53,6 +53,43 @@ bool decode_slot(const std::uint16_t* slot, SegmentCommand& s, const char*& reas
   return true;
 }
 
+bool encode_home(const HomeCommand& h, std::uint16_t* r) {
+  std::int32_t ss = 0, ls = 0, dist = 0, pos = 0, back = 0;
+  if (h.axis < 0 || h.axis > 2 || (h.dir != 1 && h.dir != -1)) return false;
+  if (!to_units(h.search_speed, ss) || !to_units(h.latch_speed, ls) || !to_units(h.search_distance, dist) ||
+      !to_units(h.home_position, pos) || !to_units(h.backoff, back))
+    return false;
+  if (ss <= 0 || ls <= 0 || dist <= 0 || back < 0) return false;
+  r[kHomeAxisMask] = static_cast<std::uint16_t>(1u << h.axis);
+  r[kHomeDir] = static_cast<std::uint16_t>(static_cast<std::int16_t>(h.dir));
+  put32(r + kHomeSearchSpeed, static_cast<std::uint32_t>(ss));
+  put32(r + kHomeLatchSpeed, static_cast<std::uint32_t>(ls));
+  put32(r + kHomeSearchDistance, static_cast<std::uint32_t>(dist));
+  put32(r + kHomePosition, static_cast<std::uint32_t>(pos));
+  put32(r + kHomeBackoff, static_cast<std::uint32_t>(back));
+  return true;
+}
+
+bool decode_home(const std::uint16_t* r, HomeCommand& h, const char*& reason) {
+  const std::uint16_t mask = r[kHomeAxisMask];
+  if (mask != 1 && mask != 2 && mask != 4) { reason = "axis mask is not one of x, y, z"; return false; }
+  const auto dir = static_cast<std::int16_t>(r[kHomeDir]);
+  if (dir != 1 && dir != -1) { reason = "direction not +1/-1"; return false; }
+  if (get_i32(r + kHomeSearchSpeed) <= 0 || get_i32(r + kHomeLatchSpeed) <= 0 ||
+      get_i32(r + kHomeSearchDistance) <= 0 || get_i32(r + kHomeBackoff) < 0) {
+    reason = "speed or distance <= 0";
+    return false;
+  }
+  h.axis = mask == 1 ? 0 : mask == 2 ? 1 : 2;
+  h.dir = dir;
+  h.search_speed = to_mm(get_i32(r + kHomeSearchSpeed));
+  h.latch_speed = to_mm(get_i32(r + kHomeLatchSpeed));
+  h.search_distance = to_mm(get_i32(r + kHomeSearchDistance));
+  h.home_position = to_mm(get_i32(r + kHomePosition));
+  h.backoff = to_mm(get_i32(r + kHomeBackoff));
+  return true;
+}
+
 void encode_status(const BoardStatus& st, std::uint16_t* r) {
   std::int32_t x = 0, y = 0;
   to_units(st.position.x, x);
@@ -75,12 +112,15 @@ void encode_status(const BoardStatus& st, std::uint16_t* r) {
   put32(r + kRegActualX, static_cast<std::uint32_t>(ax));
   put32(r + kRegActualY, static_cast<std::uint32_t>(ay));
   put32(r + kRegPosZ, static_cast<std::uint32_t>(z));
+  r[kRegHomed] = st.homed;
+  r[kRegHoming] = static_cast<std::uint16_t>(st.homing);
 }
 
 bool decode_status(const std::uint16_t* r, BoardStatus& st) {
   if (r[kRegVersion] != kMapVersion) return false;
   if (r[kRegState] > static_cast<std::uint16_t>(BoardState::fault)) return false;
   if ((r[kRegTorch] & ~(kStatusTorch | kStatusThcLock)) != 0) return false;
+  if (r[kRegHomed] > 7 || r[kRegHoming] > static_cast<std::uint16_t>(HomingState::aborted)) return false;
   st.state = static_cast<BoardState>(r[kRegState]);
   st.credit = r[kRegCredit];
   st.faults = r[kRegFaults];
@@ -93,6 +133,8 @@ bool decode_status(const std::uint16_t* r, BoardStatus& st) {
   st.duplicates = r[kRegDuplicates];
   st.actual = {to_mm(get_i32(r + kRegActualX)), to_mm(get_i32(r + kRegActualY))};
   st.z = to_mm(get_i32(r + kRegPosZ));
+  st.homed = static_cast<std::uint8_t>(r[kRegHomed]);
+  st.homing = static_cast<HomingState>(r[kRegHoming]);
   return true;
 }
 

@@ -33,7 +33,39 @@ enum FaultBit : std::uint16_t {
   kFaultEmcy = 1u << 6,       // a drive sent an emergency message
   kFaultBusOff = 1u << 7,     // the CAN controller went bus-off
   kFaultSend = 1u << 8,       // a cyclic frame could not be queued
+  kFaultHoming = 1u << 9,     // homing failed: the switch never tripped within the search distance
 };
+
+// Homing of one axis, run by the board (Modbus) or the drive (CiA 402 mode 6):
+// search towards the switch at search_speed for at most search_distance,
+// back off by backoff, latch at latch_speed; the latch point becomes
+// home_position. Speeds in mm/s, lengths in mm.
+struct HomeCommand {
+  int axis = 0;          // 0 x, 1 y, 2 z
+  int dir = -1;          // -1: the switch is towards negative, +1 towards positive
+  double search_speed = 20;
+  double latch_speed = 1;
+  double search_distance = 1000;
+  double backoff = 2;
+  double home_position = 0;
+};
+
+// Where a homing cycle is (status register 23, hal/modbus/REGISTERS.md).
+enum class HomingState : std::uint8_t {
+  none = 0, search = 1, backoff = 2, latch = 3, done = 4, no_switch = 5, aborted = 6,
+};
+inline const char* to_string(HomingState s) {
+  switch (s) {
+    case HomingState::none: return "not homing";
+    case HomingState::search: return "searching for the switch";
+    case HomingState::backoff: return "backing off the switch";
+    case HomingState::latch: return "latching";
+    case HomingState::done: return "homed";
+    case HomingState::no_switch: return "the switch never tripped within the search distance";
+    case HomingState::aborted: return "homing aborted";
+  }
+  return "?";
+}
 
 struct BoardStatus {
   BoardState state = BoardState::idle;
@@ -50,6 +82,8 @@ struct BoardStatus {
   bool torch = false;
   bool thc_lock = true;  // speed below vad of the cut feed: torch-height control holds
   std::uint16_t duplicates = 0;    // resends the board dropped (wraps)
+  std::uint8_t homed = 0;          // bit 0 x, bit 1 y, bit 2 z: homed since power-up
+  HomingState homing = HomingState::none;
 };
 
 // The status of a board run by motion::BoardExecutor.
@@ -90,6 +124,9 @@ class SegmentLink {
   virtual LinkError push(const SegmentCommand& seg, BoardStatus& status) = 0;
   virtual LinkError status(BoardStatus& status) = 0;
   virtual LinkError command(Command c) = 0;
+  // Starts homing one axis (the board or drive runs it; status() follows it).
+  // A link that cannot home answers rejected.
+  virtual LinkError home(const HomeCommand&) { return LinkError::rejected; }
   // Transactions sent again after a failed attempt, since creation.
   virtual std::uint64_t resends() const = 0;
   // Text of the last error, for the operator (static storage, no allocation).

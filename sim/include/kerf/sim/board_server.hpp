@@ -62,7 +62,10 @@ class BoardServer {
   void run();
   void serve_one(int fd);
   void handle(const std::uint8_t* q, int len, int fd);
-  hal::BoardStatus board_status() const;  // the board's, with the plant's actual position
+  hal::BoardStatus board_status() const;
+  // The home block (registers 40..51) and command 7; 0 or the exception code.
+  int write_home_block(int nb, const std::uint8_t* data, int bytes);
+  int start_homing();  // the board's, with the plant's actual position
   void send_reply(const std::uint8_t* q, int len, int fd, int exception_code);
   bool wait_or_stop(double seconds);  // false when asked to stop
   double now() const;
@@ -80,6 +83,8 @@ class BoardServer {
   std::thread thread_;
   std::atomic<std::uint64_t> requests_{0};
   double last_request_ = 0.0;
+  std::uint16_t home_block_[12] = {};
+  bool home_block_set_ = false;
 
   std::mutex fault_mu_;
   double drop_until_ = 0.0, stall_until_ = 0.0;

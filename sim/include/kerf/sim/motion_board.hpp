@@ -16,6 +16,7 @@
 
 #include "kerf/hal/segment_link.hpp"
 #include "kerf/motion/board_executor.hpp"
+#include "kerf/sim/board_homing.hpp"
 #include "kerf/sim/segment_executor.hpp"
 
 namespace kerf::sim {
@@ -36,6 +37,10 @@ struct BoardConfig {
   std::size_t trace_reserve = 0;  // samples to reserve up front
   motion::AxisLimits<double> z{}; // the z axis (period 0: none; z moves are refused)
   double start_z = 0;             // mm
+  // Home switches, in the board's power-up frame (mm); none: homing that
+  // axis never finds a switch. The board powers up unhomed at `start`.
+  double home_switch_at[2] = {0, 0};
+  bool has_home_switch[2] = {false, false};
 };
 
 using Accept = motion::BoardAccept;
@@ -50,6 +55,9 @@ class MotionBoard {
   // Protocol side.
   Accept accept(const hal::SegmentCommand& seg);
   bool command(std::uint16_t code);  // false: unknown code or not allowed now
+  // Command 7: home one axis (x or y) from idle or done; false when not allowed.
+  bool home(const hal::HomeCommand& cmd);
+  double last_latch() const;  // the last latch point, in the unhomed frame (tests)
   hal::BoardStatus status() const;
   void link_lost();                  // the server's watchdog: stop safely
   void inject_fault(std::uint16_t bit);  // a drive fault (hal::kFaultDrive ...) while running
@@ -74,6 +82,9 @@ class MotionBoard {
 
  private:
   bool has_work_locked() const;
+  void home_tick_locked();
+  void end_homing_locked(std::uint16_t fault_bits);
+  void rebase_locked(Vec2<double> at);
   void tick_locked();
   void servo_loop(double speed);
 
@@ -90,6 +101,9 @@ class MotionBoard {
   bool servo_stop_ = false;
   bool realtime_ = true;  // false: the servo thread runs as fast as possible
   bool cancel_waits_ = false;
+  HomingCycle homing_;
+  Vec2<double> home_pos_{};  // the axes while homing
+  std::uint8_t homed_ = 0;
 };
 
 }  // namespace kerf::sim

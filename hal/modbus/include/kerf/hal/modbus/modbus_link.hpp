@@ -42,6 +42,8 @@ class ModbusSegmentLink final : public SegmentLink {
   LinkError push_many(const SegmentCommand* segs, int n, BoardStatus& status);
   LinkError status(BoardStatus& status) override;
   LinkError command(Command c) override;
+  // Writes the home block (FC16 at 40), then command 7.
+  LinkError home(const HomeCommand& h) override;
   const char* last_error() const override { return error_; }
 
   std::uint64_t resends() const override { return resends_; }
@@ -49,7 +51,7 @@ class ModbusSegmentLink final : public SegmentLink {
 
  private:
   explicit ModbusSegmentLink(const ModbusConfig& cfg);
-  enum class Op : std::uint8_t { push, status, command };
+  enum class Op : std::uint8_t { push, status, command, home };
   // Runs one transaction with retries; `attempt` returns libmodbus's rc.
   template <class F>
   LinkError transact(Op op, F&& attempt);

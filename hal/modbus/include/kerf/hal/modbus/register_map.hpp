@@ -11,15 +11,19 @@
 namespace kerf::hal::modbus_map {
 
 // 2: the actual position (16..19); 3: register 14 is a flag set (torch, thc_lock);
-// 4: slot type 2 (z move) and pos_z (20..21)
+// 4: slot type 2 (z move) and pos_z (20..21), homing (22..23, command 7, block 40..51)
 inline constexpr std::uint16_t kMapVersion = 4;
 inline constexpr int kDefaultUnit = 17;
 
-// Status block: holding registers 0..21, read-only.
+// Status block: holding registers 0..23, read-only.
 inline constexpr int kStatusAddr = 0;
-inline constexpr int kStatusRegs = 22;
+inline constexpr int kStatusRegs = 24;
 // Command register, written with FC06.
 inline constexpr int kCommandAddr = 32;
+inline constexpr std::uint16_t kCommandHome = 7;  // home the axis of the home block
+// Home block: written with FC16 before command 7.
+inline constexpr int kHomeAddr = 40;
+inline constexpr int kHomeRegs = 12;
 // Segment slots: k consecutive slots written in one FC16/FC23 queue k segments.
 inline constexpr int kSlotAddr = 64;
 inline constexpr int kSlotRegs = 16;
@@ -31,7 +35,12 @@ enum StatusReg : int {
   kRegVersion = 0, kRegState = 1, kRegCredit = 2, kRegFaults = 3,
   kRegLastAccepted = 4, kRegExecuting = 6, kRegLastExecuted = 8,
   kRegPosX = 10, kRegPosY = 12, kRegTorch = 14, kRegDuplicates = 15,
-  kRegActualX = 16, kRegActualY = 18, kRegPosZ = 20,
+  kRegActualX = 16, kRegActualY = 18, kRegPosZ = 20, kRegHomed = 22, kRegHoming = 23,
+};
+// Offsets inside the home block.
+enum HomeReg : int {
+  kHomeAxisMask = 0, kHomeDir = 1, kHomeSearchSpeed = 2, kHomeLatchSpeed = 4,
+  kHomeSearchDistance = 6, kHomePosition = 8, kHomeBackoff = 10,
 };
 // Offsets inside a slot.
 enum SlotReg : int {
@@ -72,6 +81,11 @@ inline double to_mm(std::int32_t units) { return units / kUnitsPerMm; }
 bool encode_slot(const SegmentCommand& s, std::uint16_t* slot);
 // Reads one slot; false (with a reason) when it is not a valid segment.
 bool decode_slot(const std::uint16_t* slot, SegmentCommand& s, const char*& reason);
+
+// The home block; false when a value is out of range (encode) or the block
+// is not one axis, a direction of +-1 and positive speeds and lengths (decode).
+bool encode_home(const HomeCommand& h, std::uint16_t* regs);
+bool decode_home(const std::uint16_t* regs, HomeCommand& h, const char*& reason);
 
 void encode_status(const BoardStatus& st, std::uint16_t* regs);
 // false when the block is not this map's (version, state out of range).

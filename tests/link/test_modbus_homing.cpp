@@ -1,0 +1,162 @@
+// Homing over Modbus: the simulated board runs the cycle itself (command 7,
+// the home block at 40..51) against switches at configured positions.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <thread>
+
+#include "kerf/hal/modbus/register_map.hpp"
+#include "link_rig.hpp"
+
+namespace kerf::test {
+namespace {
+
+namespace map = hal::modbus_map;
+constexpr double kCount = 0.001;  // one register count, mm
+
+struct HomeRig {
+  std::unique_ptr<sim::MotionBoard> board;
+  std::unique_ptr<sim::BoardServer> server;
+  std::unique_ptr<hal::ModbusSegmentLink> link;
+
+  explicit HomeRig(Wire wire) {
+    sim::BoardConfig bc;
+    bc.start = {40.0, 30.0};  // wherever the axes powered up
+    bc.has_home_switch[0] = true;
+    bc.home_switch_at[0] = -2.5;  // x switch; y has none
+    board = std::make_unique<sim::MotionBoard>(bc, std::make_unique<sim::EndpointExecutor>());
+    sim::ServerConfig sc;
+    sc.transport = wire == Wire::tcp ? sim::ServerConfig::Transport::tcp : sim::ServerConfig::Transport::rtu;
+    std::string err;
+    server = sim::BoardServer::start(*board, sc, err);
+    if (!server) throw std::runtime_error(err);
+    hal::ModbusConfig lc;
+    lc.transport = wire == Wire::tcp ? hal::ModbusConfig::Transport::tcp : hal::ModbusConfig::Transport::rtu;
+    lc.port = server->port();
+    lc.device = server->device();
+    lc.response_timeout_s = 0.5;
+    link = hal::ModbusSegmentLink::open(lc, err);
+    if (!link) throw std::runtime_error(err);
+  }
+
+  hal::BoardStatus wait_homing_end() {
+    hal::BoardStatus st;
+    for (int i = 0; i < 2000; ++i) {
+      EXPECT_EQ(link->status(st), hal::LinkError::none);
+      if (st.homing != hal::HomingState::search && st.homing != hal::HomingState::backoff &&
+          st.homing != hal::HomingState::latch)
+        return st;
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    ADD_FAILURE() << "homing never ended";
+    return st;
+  }
+};
+
+hal::HomeCommand x_home() {
+  hal::HomeCommand h;
+  h.axis = 0;
+  h.dir = -1;
+  h.search_speed = 50;
+  h.latch_speed = 1;  // 1 µm per 1 ms period: the latch lands within a count
+  h.search_distance = 100;
+  h.backoff = 2;
+  h.home_position = -2.0;
+  return h;
+}
+
+class ModbusHoming : public ::testing::TestWithParam<Wire> {};
+
+TEST_P(ModbusHoming, FindsTheSwitchAtItsPositionWithinACount) {
+  HomeRig rig(GetParam());
+  rig.board->start_servo(0.0);
+  hal::BoardStatus st;
+  ASSERT_EQ(rig.link->status(st), hal::LinkError::none);
+  EXPECT_EQ(st.homed, 0);  // powers up unhomed
+  ASSERT_EQ(rig.link->home(x_home()), hal::LinkError::none);
+  st = rig.wait_homing_end();
+  EXPECT_EQ(st.homing, hal::HomingState::done);
+  EXPECT_EQ(st.state, hal::BoardState::idle);
+  EXPECT_EQ(st.homed, 1);
+  EXPECT_NEAR(rig.board->last_latch(), -2.5, kCount);  // the latch tripped at the switch
+  EXPECT_NEAR(st.position.x, -2.0, 1e-9);                // and became the home position
+  EXPECT_NEAR(st.position.y, 30.0, 1e-9);                // y untouched
+  // A segment after homing starts from the home position.
+  hal::SegmentCommand s = line_to(1);
+  ASSERT_EQ(rig.link->push(s, st), hal::LinkError::none);
+  ASSERT_EQ(rig.link->command(hal::Command::start), hal::LinkError::none);
+  ASSERT_EQ(rig.link->command(hal::Command::finish), hal::LinkError::none);
+  ASSERT_TRUE(rig.board->wait_until([](const hal::BoardStatus& b) { return b.state == hal::BoardState::done; }, 5));
+  EXPECT_EQ(rig.board->status().homed, 1);
+  EXPECT_NEAR(rig.board->status().position.x, 1.0, 1e-9);
+}
+
+TEST_P(ModbusHoming, ASwitchThatNeverTripsIsAFaultInsideTheSearchDistance) {
+  HomeRig rig(GetParam());
+  rig.board->start_servo(0.0);
+  hal::HomeCommand h = x_home();
+  h.axis = 1;  // y has no switch
+  h.search_distance = 25;
+  ASSERT_EQ(rig.link->home(h), hal::LinkError::none);
+  const hal::BoardStatus st = rig.wait_homing_end();
+  EXPECT_EQ(st.homing, hal::HomingState::no_switch);
+  EXPECT_EQ(st.state, hal::BoardState::fault);
+  EXPECT_NE(st.faults & hal::kFaultHoming, 0);
+  EXPECT_EQ(st.homed, 0);
+  EXPECT_NEAR(st.position.y, 30.0 - 25.0, kCount);  // stopped at the search distance, not past it
+  for (const auto& t : rig.board->trace()) EXPECT_GE(t.pos.y, 5.0 - 1e-9);
+  EXPECT_STREQ(hal::to_string(st.homing), "the switch never tripped within the search distance");
+}
+
+TEST_P(ModbusHoming, AnAbortMidSearchStopsItAndLeavesTheAxisUnhomed) {
+  HomeRig rig(GetParam());
+  rig.board->start_servo(1.0);  // real time, so the abort lands mid-search
+  hal::HomeCommand h = x_home();
+  h.search_speed = 20;  // 42.5 mm to the switch: 2 s
+  ASSERT_EQ(rig.link->home(h), hal::LinkError::none);
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  ASSERT_EQ(rig.link->command(hal::Command::abort), hal::LinkError::none);
+  hal::BoardStatus st;
+  ASSERT_EQ(rig.link->status(st), hal::LinkError::none);
+  EXPECT_EQ(st.homing, hal::HomingState::aborted);
+  EXPECT_EQ(st.state, hal::BoardState::fault);
+  EXPECT_NE(st.faults & hal::kFaultAbort, 0);
+  EXPECT_EQ(st.homed, 0);
+  EXPECT_LT(st.position.x, 40.0);  // it had moved
+  EXPECT_GT(st.position.x, 0.0);   // and stopped short of the switch
+  const double stopped = st.position.x;
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  ASSERT_EQ(rig.link->status(st), hal::LinkError::none);
+  EXPECT_EQ(st.position.x, stopped);  // and stays stopped
+}
+
+TEST_P(ModbusHoming, HomeIsRefusedWhileRunning) {
+  HomeRig rig(GetParam());
+  hal::BoardStatus st;
+  ASSERT_EQ(rig.link->command(hal::Command::start), hal::LinkError::none);
+  EXPECT_EQ(rig.link->home(x_home()), hal::LinkError::rejected);  // exception 03
+  ASSERT_EQ(rig.link->status(st), hal::LinkError::none);
+  EXPECT_EQ(st.homing, hal::HomingState::none);
+}
+
+INSTANTIATE_TEST_SUITE_P(Wires, ModbusHoming, ::testing::Values(Wire::tcp, Wire::rtu), wire_name);
+
+TEST(HomeBlock, RoundTripsAndRefusesBadBlocks) {
+  std::uint16_t r[map::kHomeRegs];
+  hal::HomeCommand h = x_home(), back;
+  ASSERT_TRUE(map::encode_home(h, r));
+  const char* reason = nullptr;
+  ASSERT_TRUE(map::decode_home(r, back, reason));
+  EXPECT_EQ(back.axis, 0);
+  EXPECT_EQ(back.dir, -1);
+  EXPECT_DOUBLE_EQ(back.home_position, -2.0);
+  EXPECT_DOUBLE_EQ(back.latch_speed, 1.0);
+  r[map::kHomeAxisMask] = 3;  // two axes at once
+  EXPECT_FALSE(map::decode_home(r, back, reason));
+  h.search_speed = 0;
+  EXPECT_FALSE(map::encode_home(h, r));
+}
+
+}  // namespace
+}  // namespace kerf::test
