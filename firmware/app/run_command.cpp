@@ -10,6 +10,7 @@
 #include "job/gcode_program.hpp"
 #include "io/options.hpp"
 #include "job/fit_job.hpp"
+#include "machine/homing.hpp"
 #include "machine/machine_factory.hpp"
 #include "machine/machine_run.hpp"
 
@@ -41,11 +42,11 @@ int run_job(const RunOptions& opts, const char* who, RunCheck check, LinesOpener
   job::GcodeProgram prog;
   job::MachineState state;
   const bool gcode = job::is_gcode_path(opts.job);
+  if (!cfg.machine.state.empty() && !job::load_machine_state(cfg.machine.state, state, error)) {
+    std::fprintf(stderr, "%s: run: machine.state: %s\n", who, error.c_str());
+    return kExitUsage;
+  }
   if (gcode) {
-    if (!cfg.machine.state.empty() && !job::load_machine_state(cfg.machine.state, state, error)) {
-      std::fprintf(stderr, "%s: run: machine.state: %s\n", who, error.c_str());
-      return kExitUsage;
-    }
     if (!job::read_gcode_program(opts.job, config::interp_settings(cfg, true), state, prog, error) ||
         !control::machine_can_run(prog, control::machine_io(cfg), error)) {
       std::fprintf(stderr, "%s\n", error.c_str());
@@ -67,6 +68,11 @@ int run_job(const RunOptions& opts, const char* who, RunCheck check, LinesOpener
   // for arc-OK), so no safety input is ever stood in for in software.
   if (cfg.bench.enabled)
     for (control::CutPath& p : fitted.job.paths) p.torch = false;
+  // Before anything moves: where the machine is must be known.
+  if (!machine::check_homed(cfg, state, opts.assume_homed, error)) {
+    std::fprintf(stderr, "%s: run: %s\n", who, error.c_str());
+    return kExitFailure;
+  }
   // The devices before the journal: a new journal replaces the old one, which
   // must not happen for a run that cannot even start.
   std::unique_ptr<hal::Gpio> gpio = open_lines(cfg, error);
@@ -83,7 +89,8 @@ int run_job(const RunOptions& opts, const char* who, RunCheck check, LinesOpener
   control::ResumePoint from;
   if (!control::open_journal(opts.journal, opts.resume, fitted.job, journal, from)) return kExitUsage;
   const int rc = machine::run_on_machine(fitted.job, cfg, *link, *gpio, journal.get(), from, opts.resume, opts.report,
-                                         opts.reset, gcode ? &prog : nullptr, &fitted.cut_rules);
+                                         opts.reset, gcode ? &prog : nullptr, &fitted.cut_rules,
+                                         opts.assume_homed ? "assumed (--assume-homed)" : "kerf home");
   // The offsets the program set are kept once it has run to its end (a
   // stopped run leaves the machine state as it was).
   if (gcode && rc == 0 && !cfg.machine.state.empty() &&

@@ -15,6 +15,9 @@ CLI::App* add_run_command(CLI::App& app, RunOptions& o) {
   r->add_flag("--reset", o.reset,
               "Reset the E-stop latch at start-up (refused while the E-stop is asserted); without it the "
               "configured gpio.reset line must be pressed");
+  r->add_flag("--assume-homed", o.assume_homed,
+              "The machine has no home switches ([machine] home_switches = false): the operator confirms the "
+              "position at start-up; written into the report. Otherwise `kerf home` must have homed every axis");
   add_report_option(r, o.report);
   add_job_file(r, "job", o.job)->type_name("JOB")->required();
   return r;

@@ -15,6 +15,7 @@ struct RunOptions {
   std::string journal;
   bool resume = false;
   bool reset = false;     // the E-stop latch's reset edge at start-up
+  bool assume_homed = false;  // a machine without home switches: the operator confirms the position
   std::string report;
   std::string job;      // point file (paths separated by blank lines)
 };

@@ -8,6 +8,7 @@
 #include <exception>
 #include <new>
 
+#include "app/home_command.hpp"
 #include "app/run_options.hpp"
 #include "app/sim_options.hpp"
 #include "app/sim_run_command.hpp"
@@ -35,6 +36,10 @@ int main(int argc, char** argv) {
     run->description(
         "kerf run with scripted lines (E-stop released, arc-OK following the torch) against the bench's simulated "
         "board or drives: Modbus TCP on a loopback address, RTU on /dev/pts/N, CAN on vcanN");
+    HomeOptions home_opts;
+    CLI::App* home = add_home_command(app, home_opts);
+    home->description("kerf home with scripted lines against the bench's simulated board or drives "
+                      "(kerf-board-sim --home-switch-x/-y, kerf-drive-sim)");
     try {
       app.parse(argc, argv);
     } catch (const CLI::Success& e) {  // --help, --version
@@ -44,6 +49,7 @@ int main(int argc, char** argv) {
       return kExitUsage;
     }
     if (run->parsed()) return run_sim_run(run_opts);
+    if (home->parsed()) return run_sim_home(home_opts);
 #if KERF_HAVE_MODBUS
     if (sim->parsed()) return kerf::simulated::run_sim(sim_opts);
 #else

@@ -38,4 +38,6 @@ int run_sim_run(const RunOptions& opts) {
   return run_job(o, "kerf-sim", on_this_host, scripted_lines);
 }
 
+int run_sim_home(const HomeOptions& opts) { return home_job(opts, "kerf-sim", on_this_host, scripted_lines); }
+
 }  // namespace kerf::app

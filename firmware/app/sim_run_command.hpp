@@ -7,9 +7,12 @@
 #pragma once
 
 #include "app/run_options.hpp"
+#include "app/home_command.hpp"
 
 namespace kerf::app {
 
 int run_sim_run(const RunOptions& opts);
+// `kerf-sim home`: kerf home with the scripted lines, on simulated boards and drives only.
+int run_sim_home(const HomeOptions& opts);
 
 }  // namespace kerf::app

@@ -24,6 +24,11 @@ struct Axis {
   // z only (z moves run alone, at rest in XY): mm/min and mm/s^2, > 0;
   // absent: machine.rapid_feed and machine.accel.
   double feed = 0, accel = 0;
+  // Homing (keys home_* on [[machine.axis]]; the board's own switch input).
+  // Speeds mm/min, lengths mm; dir -1: the switch lies towards negative.
+  int home_dir = -1;
+  double home_search_speed = 1200, home_latch_speed = 60;
+  double home_search_distance = 2000, home_backoff = 2, home_position = 0;
 };
 
 struct Machine {
@@ -39,6 +44,9 @@ struct Machine {
   // max_feed and at rest, linear in between; min_ferror <= ferror.
   double ferror = 1.0;
   double min_ferror = 0.25;
+  // The machine has home switches: kerf run then refuses to start until
+  // `kerf home` has homed every axis; false: --assume-homed may stand in.
+  bool home_switches = true;
 };
 
 // The z axis's limits (the servo period, feed mm/s, accel), or none

@@ -43,6 +43,13 @@ void read_axes(TableReader& r, Machine& m) {
     a.positive("counts_per_mm", axis.counts_per_mm);
     // No default here: a wrong scale would cut a wrongly sized part.
     if (!a.has("counts_per_mm")) a.problem("counts_per_mm", "missing (drive counts per mm)");
+    a.integer("home_dir", axis.home_dir, -1, 1);
+    if (axis.home_dir == 0) a.problem("home_dir", "expected -1 or 1 (the side the switch is on), got 0");
+    a.positive("home_search_speed", axis.home_search_speed);
+    a.positive("home_latch_speed", axis.home_latch_speed);
+    a.positive("home_search_distance", axis.home_search_distance);
+    a.non_negative("home_backoff", axis.home_backoff);
+    a.number("home_position", axis.home_position);
     if (i == 2) {  // z's own limits
       a.positive("feed", axis.feed);
       a.positive("accel", axis.accel);
@@ -67,6 +74,7 @@ void read_machine(TableReader& r, Machine& m) {
   r.string("state", m.state);
   r.positive("ferror", m.ferror);
   r.positive("min_ferror", m.min_ferror);
+  r.boolean("home_switches", m.home_switches);
   r.finish();
 }
 

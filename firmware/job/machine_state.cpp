@@ -35,6 +35,24 @@ bool numbers(const std::string& text, double* out, int n) {
 
 }  // namespace
 
+const char kAxisNames[3] = {'x', 'y', 'z'};
+
+std::string homed_names(const MachineState& s, int n) {
+  std::string out;
+  for (int a = 0; a < n && a < 3; ++a)
+    if (s.homed[a]) {
+      if (!out.empty()) out += ' ';
+      out += kAxisNames[a];
+    }
+  return out;
+}
+
+bool all_homed(const MachineState& s, int n) {
+  for (int a = 0; a < n && a < 3; ++a)
+    if (!s.homed[a]) return false;
+  return true;
+}
+
 const char* coord_name(int k) { return k >= 0 && k < kCoordSystems ? kNames[k] : "?"; }
 
 std::string format_machine_state(const MachineState& s) {
@@ -48,6 +66,11 @@ std::string format_machine_state(const MachineState& s) {
   out += buf;
   out += std::string("g92_on = ") + (s.g92_on ? "1" : "0") + "\n";
   out += std::string("coord = ") + kNames[s.coord] + "\n";
+  out += "homed = " + homed_names(s, 3) + "\n";
+  if (s.has_position) {
+    std::snprintf(buf, sizeof buf, "position = %.17g %.17g %.17g\n", s.position[0], s.position[1], s.position[2]);
+    out += buf;
+  }
   for (const auto& [k, v] : s.other) out += k + " = " + v + "\n";
   return out;
 }
@@ -98,6 +121,21 @@ bool load_machine_state(const std::string& path, MachineState& out, std::string&
         if (value == kNames[k]) found = k;
       if (found < 0) bad("coord: expected G54 .. G59.3, got \"" + value + "\"");
       else s.coord = found;
+    } else if (key == "homed") {
+      for (std::size_t i = 0; i < value.size(); ++i) {
+        const char c = value[i];
+        if (c == ' ' || c == '\t') continue;
+        const bool name = c == 'x' || c == 'y' || c == 'z';
+        const bool alone = i + 1 == value.size() || value[i + 1] == ' ' || value[i + 1] == '\t';
+        if (!name || !alone) {
+          bad("homed: expected axis names (x y z) separated by blanks, got \"" + value + "\"");
+          break;
+        }
+        s.homed[c - 'x'] = true;
+      }
+    } else if (key == "position") {
+      if (!numbers(value, s.position, 3)) bad("position: expected three numbers (x y z mm)");
+      s.has_position = true;
     } else {
       s.other.emplace_back(key, value);
     }

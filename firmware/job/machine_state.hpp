@@ -19,11 +19,19 @@ struct MachineState {
   int coord = 0;                      // selected system: 0 = G54 ... 8 = G59.3
   double g92[3] = {};                 // mm
   bool g92_on = false;                // applied (G92, G92.3) or not (G92.1, G92.2)
+  bool homed[3] = {};                 // x y z homed by `kerf home` (key `homed = x y`)
+  bool has_position = false;          // `position = x y z`: machine position after the last session
+  double position[3] = {};            // mm
   std::vector<std::pair<std::string, std::string>> other;  // unknown keys, as read
 };
 
 // The G-code name of system k (0..8): "G54" ... "G59.3".
 const char* coord_name(int k);
+
+// "x y" for the homed axes of n; empty when none.
+std::string homed_names(const MachineState& s, int n);
+// True when the first n axes are homed.
+bool all_homed(const MachineState& s, int n);
 
 // Reads `path`. A missing file is the default state (true): a new machine.
 // False with "FILE:LINE: reason" for a file that is there but unreadable or malformed.

@@ -28,7 +28,7 @@ extern "C" void on_signal(int sig) { g_signal = sig; }
 int run_on_machine(const Job& job, const config::Config& cfg, hal::SegmentLink& link, hal::Gpio& gpio,
                    Journal* journal, const ResumePoint& from, bool resumed, const std::string& report,
                    bool reset_at_start, const job::GcodeProgram* program,
-                   const std::vector<CutRuleNote>* cut_rules) {
+                   const std::vector<CutRuleNote>* cut_rules, const char* homed) {
   using io::kExitFailure;
   using io::kExitOk;
   const hal::RtSetup rt = hal::rt_setup(cfg.rt.priority, cfg.rt.lock_memory);
@@ -80,6 +80,7 @@ int run_on_machine(const Job& job, const config::Config& cfg, hal::SegmentLink& 
   sum.rt_histogram = loop.stats().histogram();
   std::string json = format_run_json(sum);
   json.insert(json.find('\n') + 1, cfg.bench.enabled ? "  \"bench\": true,\n" : "  \"bench\": false,\n");
+  if (homed != nullptr) json.insert(json.find('\n') + 1, std::string("  \"homed\": \"") + homed + "\",\n");
   if (!report.empty() && !io::write_output(report, json)) {
     std::fprintf(stderr, "kerf: --report: cannot write %s: %s\n", report.c_str(), std::strerror(errno));
     return kExitFailure;

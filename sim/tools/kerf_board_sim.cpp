@@ -6,9 +6,11 @@
 //
 //   kerf-board-sim [--port N] [--rtu] [--accel MM_S2] [--vad PERCENT] [--watchdog S]
 //                  [--z-feed MM_MIN --z-accel MM_S2]  (a z axis: z moves run; default none)
+//                  [--start X,Y] [--home-switch-x MM] [--home-switch-y MM]  (homing, command 7)
 #include <CLI/CLI.hpp>
 #include <csignal>
 #include <cstdio>
+#include <vector>
 
 #include "kerf/sim/board_server.hpp"
 #include "kerf/sim/motion_executor.hpp"
@@ -29,6 +31,13 @@ int main(int argc, char** argv) {
   app.add_option("--z-feed", z_feed, "A z axis: its top feed, mm/min (0: no z axis, z moves are refused)")
       ->check(CLI::NonNegativeNumber);
   app.add_option("--z-accel", z_accel, "The z axis's acceleration, mm/s^2")->check(CLI::PositiveNumber);
+  std::vector<double> start = {0.0, 0.0};
+  double switch_x = 0, switch_y = 0;
+  app.add_option("--start", start, "Where the axes power up, mm (unhomed: the board's own frame)")
+      ->delimiter(',')->expected(2);
+  auto* sx = app.add_option("--home-switch-x", switch_x, "The x home switch, mm in the power-up frame (none: "
+                                                         "homing x faults at the search distance)");
+  auto* sy = app.add_option("--home-switch-y", switch_y, "The y home switch, mm in the power-up frame");
   CLI11_PARSE(app, argc, argv);
 
   // Block the stop signals before any thread starts, then wait for one.
@@ -48,6 +57,11 @@ int main(int argc, char** argv) {
     return 1;
   }
   sim::BoardConfig bc;
+  bc.start = {start[0], start[1]};
+  bc.has_home_switch[0] = sx->count() > 0;
+  bc.home_switch_at[0] = switch_x;
+  bc.has_home_switch[1] = sy->count() > 0;
+  bc.home_switch_at[1] = switch_y;
   if (z_feed > 0) bc.z = {bc.servo_period_s, z_feed / 60.0, z_accel};
   sim::MotionBoard board(bc, std::move(exec));
   sim::ServerConfig sc;

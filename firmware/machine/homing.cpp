@@ -1,0 +1,133 @@
+#include "machine/homing.hpp"
+
+#include <chrono>
+#include <thread>
+
+namespace kerf::machine {
+
+namespace {
+
+const char* const kAxis[3] = {"x", "y", "z"};
+
+double now_s() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+bool homing_runs(hal::HomingState s) {
+  return s == hal::HomingState::search || s == hal::HomingState::backoff || s == hal::HomingState::latch;
+}
+
+// The longest a cycle can take: the search, the back-off twice over, the latch.
+double cycle_limit_s(const hal::HomeCommand& h) {
+  return (h.search_distance + 2 * h.backoff) / h.search_speed + (h.backoff + 1) / h.latch_speed + 5.0;
+}
+
+bool home_one(const config::Config& cfg, int a, hal::SegmentLink& link, hal::Gpio* gpio, hal::BoardStatus& st,
+              std::string& error, std::FILE* log) {
+  const hal::HomeCommand h = home_command(cfg.machine, a);
+  const std::string who = std::string(kAxis[a]) + ": ";
+  if (link.home(h) != hal::LinkError::none) {
+    error = who + "the board refused to home: " + link.last_error();
+    return false;
+  }
+  const double t0 = now_s(), limit = cycle_limit_s(h);
+  for (;;) {
+    hal::GpioInputs in;
+    if (gpio != nullptr && (!gpio->read(now_s() - t0, in) || in.estop)) {
+      link.command(hal::Command::abort);  // the board stops the axis, unhomed
+      error = who + "E-stop: homing aborted, the axis is not homed";
+      return false;
+    }
+    if (link.status(st) != hal::LinkError::none) {
+      link.command(hal::Command::abort);
+      error = who + "lost the board while homing: " + link.last_error();
+      return false;
+    }
+    if (!homing_runs(st.homing)) break;
+    if (now_s() - t0 > limit) {
+      link.command(hal::Command::abort);
+      error = who + "homing did not end within " + std::to_string(limit) + " s";
+      return false;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  if (st.homing != hal::HomingState::done || (st.homed & (1u << a)) == 0) {
+    error = who + hal::to_string(st.homing);
+    if (st.homing == hal::HomingState::no_switch)
+      error += " (" + std::to_string(h.search_distance) + " mm at " + std::to_string(h.search_speed * 60) + " mm/min)";
+    return false;
+  }
+  if (log != nullptr)
+    std::fprintf(log, "home: %s homed at %.3f mm\n", kAxis[a], a == 0 ? st.position.x : st.position.y);
+  return true;
+}
+
+}  // namespace
+
+hal::HomeCommand home_command(const config::Machine& m, int axis) {
+  const config::Axis& x = m.axes[static_cast<std::size_t>(axis)];
+  hal::HomeCommand h;
+  h.axis = axis;
+  h.dir = x.home_dir;
+  h.search_speed = x.home_search_speed / 60.0;
+  h.latch_speed = x.home_latch_speed / 60.0;
+  h.search_distance = x.home_search_distance;
+  h.backoff = x.home_backoff;
+  h.home_position = x.home_position;
+  return h;
+}
+
+bool home_axes(const config::Config& cfg, unsigned axes, hal::SegmentLink& link, hal::Gpio* gpio,
+               job::MachineState& state, std::string& error, std::FILE* log) {
+  hal::BoardStatus st;
+  if (link.status(st) != hal::LinkError::none) {
+    error = std::string("cannot read the board: ") + link.last_error();
+    return false;
+  }
+  if (st.state == hal::BoardState::fault && link.command(hal::Command::fault_reset) != hal::LinkError::none) {
+    error = std::string("the board is in fault and refused the reset: ") + link.last_error();
+    return false;
+  }
+  const int n = static_cast<int>(cfg.machine.axes.size());
+  bool ok = true;
+  for (int a = 0; a < n && ok; ++a) {
+    if ((axes & (1u << a)) == 0) continue;
+    state.homed[a] = false;  // whatever happens now, the old flag no longer holds
+    ok = home_one(cfg, a, link, gpio, st, error, log);
+    state.homed[a] = ok;
+  }
+  if (link.status(st) == hal::LinkError::none) {
+    state.has_position = true;
+    state.position[0] = st.position.x;
+    state.position[1] = st.position.y;
+    state.position[2] = st.z;
+  }
+  return ok;
+}
+
+bool check_homed(const config::Config& cfg, const job::MachineState& state, bool assume_homed, std::string& error) {
+  const int n = 2;  // x and y: z on a cutting table is found by probing at each pierce
+  if (assume_homed) {
+    if (cfg.machine.home_switches) {
+      error = cfg.file + ": --assume-homed: the machine has home switches ([machine] home_switches = true): "
+                         "home it with `kerf home`";
+      return false;
+    }
+    return true;
+  }
+  if (cfg.machine.state.empty()) {
+    error = cfg.file + ": machine.state: kerf run needs a state file to find the homed axes in (`kerf home` "
+                       "writes it)";
+    return false;
+  }
+  if (!job::all_homed(state, n)) {
+    const std::string homed = job::homed_names(state, n);
+    error = "the machine is not homed (" + (homed.empty() ? std::string("no axis") : "only " + homed) +
+            " in " + cfg.machine.state + "): run `kerf home` first" +
+            (cfg.machine.home_switches ? "" : ", or confirm the position with --assume-homed");
+    return false;
+  }
+  return true;
+}
+
+}  // namespace kerf::machine
