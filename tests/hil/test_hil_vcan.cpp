@@ -389,12 +389,12 @@ TEST(HilVcan, KerfRunCutsAJobOnDrivesInAnotherProcess) {
   ASSERT_NE(f, nullptr);
   // ferror: the drives run in another process on a shared host, whose
   // scheduling can hold back their replies by tens of ms (no RT kernel).
-  std::fputs("[machine]\ncycle = 0.004\nferror = 5\nmin_ferror = 2\n[link]\nkind = \"can\"\niface = \"vcan0\"\nnode_ids = [1, 2]\nsync_ms = 2\n"
+  std::fputs("[machine]\nhome_switches = false\ncycle = 0.004\nferror = 5\nmin_ferror = 2\n[link]\nkind = \"can\"\niface = \"vcan0\"\nnode_ids = [1, 2]\nsync_ms = 2\n"
              "timeout = 2.0\n[cut]\npierce_delay = 0.1\nfeed = 6000\n[fit]\ntol = 0.05\n",
              f);
   std::fclose(f);
   std::remove(report.c_str());
-  const std::string cmd = std::string(KERF_SIM_BIN) + " run --config " + cfg + " --report " + report + " " +
+  const std::string cmd = std::string(KERF_SIM_BIN) + " run --assume-homed --config " + cfg + " --report " + report + " " +
                           KERF_EXAMPLES + "/parabola.txt > " + dir + "/kerf_run_can.out 2>&1";
   const int rc = std::system(cmd.c_str());
   const std::string rep = slurp(report);

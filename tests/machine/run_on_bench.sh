@@ -3,7 +3,9 @@
 # (another process, Modbus TCP), with kerf-sim's scripted lines (`kerf-sim
 # run`): SIGTERM mid-job stops it safely with the progress journaled,
 # --resume finishes the job, each segment once. The config says [bench]: every
-# status line, the summary and the report say BENCH.
+# status line, the summary and the report say BENCH. Before homing, kerf run
+# is refused before anything moves; `kerf-sim home` homes x and y against the
+# board's switches and keeps the result in the state file.
 #
 #   run_on_bench.sh KERF_SIM BOARD_SIM JOB SIM_TOML WORKDIR
 set -euo pipefail
@@ -11,7 +13,7 @@ kerf=$1 board=$2 job=$3 sim_toml=$4 dir=$5
 mkdir -p "$dir"
 rm -f "$dir"/*
 
-coproc BOARD { exec "$board" --port 0 --watchdog 0.5; }
+coproc BOARD { exec "$board" --port 0 --watchdog 0.5 --start 7,4 --home-switch-x -1 --home-switch-y -1.5; }
 trap 'kill "$BOARD_PID" 2>/dev/null || true' EXIT
 read -r -t 10 line <&"${BOARD[0]}"
 port=${line##*:}
@@ -19,6 +21,16 @@ echo "$line"
 # The example simulator config, pointed at this board's port.
 sed -e "s/^port = .*/port = $port/" -e "s/^pierce_delay = .*/pierce_delay = 0.2/" "$sim_toml" >"$dir/bench.toml"
 printf '\n[bench]\nenabled = true\n' >>"$dir/bench.toml"
+sed -i "s#^\[machine\]#[machine]\nstate = \"$dir/state\"#" "$dir/bench.toml"
+
+rc=0
+"$kerf" run --config "$dir/bench.toml" "$job" >"$dir/run0.out" 2>"$dir/run0.err" || rc=$?
+((rc == 1)) && grep -q 'the machine is not homed (no axis in' "$dir/run0.err" ||
+  { cat "$dir/run0.err"; echo "FAIL: kerf run before homing must be refused (exit 1), got $rc"; exit 1; }
+"$kerf" home --config "$dir/bench.toml" >"$dir/home.out" 2>&1 || { cat "$dir/home.out"; echo "FAIL: home"; exit 1; }
+cat "$dir/home.out"
+grep -q '^homed = x y$' "$dir/state" || { cat "$dir/state"; echo "FAIL: the state file does not say homed = x y"; exit 1; }
+grep -q '^position = 0 0 ' "$dir/state" || { cat "$dir/state"; echo "FAIL: the position after homing"; exit 1; }
 
 "$kerf" run --config "$dir/bench.toml" --journal "$dir/journal" --report "$dir/r1.json" "$job" \
   >"$dir/run1.out" 2>"$dir/run1.err" &
@@ -50,6 +62,7 @@ check(r1["state"] == "fault" and r1["fault"] == "stopped by SIGTERM", "SIGTERM i
 check(r1["torch_on"] is False, "torch off after SIGTERM")
 check(r2["state"] == "done", "the resumed run finished")
 check(r1["bench"] is True and r2["bench"] is True, "the reports say bench")
+check(r2["homed"] == "kerf home", "the report says how the position is known")
 check(r1["pierces"] == 0 and r2["pierces"] == 0, "a bench never pierces: every path is a dry run")
 check(r2["segments_executed_total"] == r2["segments_planned"], "every segment once in all")
 check(r2["duplicates"] == 0, "no duplicates")

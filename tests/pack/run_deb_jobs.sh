@@ -17,12 +17,14 @@ cat sim.out
 grep -Eq 'done over modbus-tcp: 4 paths, 66 of 66 segments executed this run .* torch off' sim.out ||
   { echo "FAIL: kerf-sim sim's summary"; exit 1; }
 
-coproc BOARD { exec "$board" --port 0 --watchdog 2; }
+coproc BOARD { exec "$board" --port 0 --watchdog 2 --home-switch-x -1 --home-switch-y -1; }
 trap 'kill "$BOARD_PID" 2>/dev/null || true' EXIT
 read -r -t 30 line <&"${BOARD[0]}"
 port=${line##*:}
 echo "$line"
-sed -e "s/^port = .*/port = $port/" -e "s/^pierce_delay = .*/pierce_delay = 0.2/" "$sim_toml" >bench.toml
+sed -e "s/^port = .*/port = $port/" -e "s/^pierce_delay = .*/pierce_delay = 0.2/" \
+  -e "s#^\[machine\]#[machine]\nstate = \"$PWD/machine.state\"#" "$sim_toml" >bench.toml
+"${kerf[@]}" home --config bench.toml
 "${kerf[@]}" run --config bench.toml --report run.json "$job"
 python3 - run.json <<'PY'
 import json, sys
