@@ -3,7 +3,8 @@
 // coordinate system is selected. One small text file of `key = values`
 // lines, written atomically (a temporary file, fsync, rename). Keys kerf does
 // not know are kept as read and written back, so a later release can add its
-// own (the homed flag) without breaking an older file.
+// own without breaking an older file. `kerf home` adds the homed axes and
+// the position (homed = x y, position = x y z).
 #pragma once
 
 #include <string>

@@ -7,7 +7,9 @@
 #include <thread>
 
 #include "kerf/hal/modbus/register_map.hpp"
+#include "kerf/sim/scripted_gpio.hpp"
 #include "link_rig.hpp"
+#include "machine/homing.hpp"
 
 namespace kerf::test {
 namespace {
@@ -20,11 +22,13 @@ struct HomeRig {
   std::unique_ptr<sim::BoardServer> server;
   std::unique_ptr<hal::ModbusSegmentLink> link;
 
-  explicit HomeRig(Wire wire) {
+  explicit HomeRig(Wire wire, bool y_switch = false) {
     sim::BoardConfig bc;
     bc.start = {40.0, 30.0};  // wherever the axes powered up
     bc.has_home_switch[0] = true;
-    bc.home_switch_at[0] = -2.5;  // x switch; y has none
+    bc.home_switch_at[0] = -2.5;  // x switch; y has one only when asked
+    bc.has_home_switch[1] = y_switch;
+    bc.home_switch_at[1] = 1.0;
     board = std::make_unique<sim::MotionBoard>(bc, std::make_unique<sim::EndpointExecutor>());
     sim::ServerConfig sc;
     sc.transport = wire == Wire::tcp ? sim::ServerConfig::Transport::tcp : sim::ServerConfig::Transport::rtu;
@@ -156,6 +160,62 @@ TEST(HomeBlock, RoundTripsAndRefusesBadBlocks) {
   EXPECT_FALSE(map::decode_home(r, back, reason));
   h.search_speed = 0;
   EXPECT_FALSE(map::encode_home(h, r));
+}
+
+// kerf home's session (machine::home_axes): both axes homed into the state
+// file's fields; the E-stop line aborts the cycle and leaves the axis unhomed.
+config::Config session_config() {
+  config::Config c;
+  c.machine.axes = {config::Axis{}, config::Axis{}};
+  for (config::Axis& a : c.machine.axes) {
+    a.home_search_speed = 3000;  // mm/min
+    a.home_latch_speed = 60;
+    a.home_search_distance = 100;
+    a.home_backoff = 1;
+  }
+  c.machine.axes[0].home_position = 5.0;
+  c.machine.axes[1].home_position = -1.0;
+  return c;
+}
+
+TEST(HomeSession, HomesXThenYIntoTheStateFile) {
+  HomeRig rig(Wire::tcp, true);
+  rig.board->start_servo(0.0);
+  sim::ScriptedGpio gpio;
+  job::MachineState state;
+  std::string error;
+  ASSERT_TRUE(machine::home_axes(session_config(), 3u, *rig.link, &gpio, state, error, nullptr)) << error;
+  EXPECT_TRUE(state.homed[0]);
+  EXPECT_TRUE(state.homed[1]);
+  EXPECT_EQ(job::homed_names(state, 3), "x y");
+  ASSERT_TRUE(state.has_position);
+  EXPECT_NEAR(state.position[0], 5.0, 1e-9);
+  EXPECT_NEAR(state.position[1], -1.0, 1e-9);
+  EXPECT_EQ(rig.board->status().homed, 3);
+  std::string why;
+  EXPECT_TRUE(machine::check_homed([] { auto c = session_config(); c.machine.state = "s"; return c; }(), state, false, why)) << why;
+}
+
+TEST(HomeSession, TheEStopAbortsItAndTheAxisStaysUnhomed) {
+  HomeRig rig(Wire::tcp, true);
+  rig.board->start_servo(1.0);  // real time: x needs 42.5 mm / 10 mm/s
+  config::Config c = session_config();
+  c.machine.axes[0].home_search_speed = 600;
+  sim::ScriptedGpio gpio;
+  ASSERT_TRUE(gpio.estop_at(0.3, true));
+  job::MachineState state;
+  state.homed[0] = state.homed[1] = true;  // an old flag: homing again clears it first
+  std::string error;
+  EXPECT_FALSE(machine::home_axes(c, 3u, *rig.link, &gpio, state, error, nullptr));
+  EXPECT_EQ(error, "x: E-stop: homing aborted, the axis is not homed");
+  EXPECT_FALSE(state.homed[0]);
+  const hal::BoardStatus st = rig.board->status();
+  EXPECT_EQ(st.homing, hal::HomingState::aborted);
+  EXPECT_EQ(st.homed, 0);
+  EXPECT_GT(st.position.x, 30.0);  // stopped about 3 mm into a 42.5 mm search
+  std::string why;
+  c.machine.state = "s";
+  EXPECT_FALSE(machine::check_homed(c, state, false, why));
 }
 
 }  // namespace
