@@ -47,6 +47,10 @@ void DriveNode::reset_node(std::uint64_t now_us, bool announce) {
       {kTargetPosition, 0, 4, true, 0},
       {kInterpolationPeriod, 1, 1, true, 1},
       {kInterpolationPeriod, 2, 1, true, static_cast<std::uint8_t>(-3)},
+      {kHomingMethod, 0, 1, true, static_cast<std::uint8_t>(kHomeNegativeSwitch)},
+      {kHomingSpeeds, 1, 4, true, 10000},
+      {kHomingSpeeds, 2, 4, true, 1000},
+      {kHomeOffset, 0, 4, true, 0},
   };
   od_count_ = 0;
   for (const Entry& e : defaults) od_[od_count_++] = e;
@@ -55,6 +59,7 @@ void DriveNode::reset_node(std::uint64_t now_us, bool announce) {
   pending_ = false;
   following_error_ = false;
   target_ = command_ = actual_;
+  homing_ = Homing::idle;
   nmt_ = kHbBootUp;
   if (announce) {
     CanFrame boot;
@@ -84,6 +89,12 @@ std::uint32_t DriveNode::od(std::uint16_t index, std::uint8_t sub) const {
 std::uint16_t DriveNode::statusword() const {
   std::uint16_t sw = encode_state(state_);
   if (following_error_) sw |= kSwFollowingError;
+  if (static_cast<std::int8_t>(od(kModeDisplay, 0)) == kModeHoming) {
+    sw = static_cast<std::uint16_t>(sw & ~kSwFollowingError);
+    if (homing_ == Homing::attained) sw |= kSwHomingAttained;
+    if (homing_ != Homing::search && homing_ != Homing::release) sw |= kSwTargetReached;
+    return sw;
+  }
   if (state_ == DriveState::operation_enabled) sw |= 1u << 12;  // CSP: the drive follows the target
   return sw;
 }
@@ -139,7 +150,12 @@ void DriveNode::sdo_abort(const CanFrame& req, std::uint32_t code) {
 }
 
 std::uint32_t DriveNode::check_write(const Entry& e, std::uint32_t value) const {
-  if (e.index == kModeOfOperation && static_cast<std::int8_t>(value) != kModeCsp) return kAbortRange;
+  if (e.index == kModeOfOperation && static_cast<std::int8_t>(value) != kModeCsp &&
+      static_cast<std::int8_t>(value) != kModeHoming)
+    return kAbortRange;
+  if (e.index == kHomingMethod && static_cast<std::int8_t>(value) != kHomeNegativeSwitch &&
+      static_cast<std::int8_t>(value) != kHomePositiveSwitch)
+    return kAbortRange;
   if (e.index == kInterpolationPeriod && e.sub == 1 && (value < 1 || value > 10)) return kAbortRange;
   if (e.index == kInterpolationPeriod && e.sub == 2 && static_cast<std::int8_t>(value) != -3) return kAbortRange;
   const bool rpdo_map = e.index == kRpdo1Map, tpdo_map = e.index == kTpdo1Map;
@@ -196,8 +212,11 @@ void DriveNode::on_sdo(const CanFrame& f) {
   for (int i = 0; i < size; ++i) value |= std::uint32_t{f.data[4 + i]} << (8 * i);
   if (const std::uint32_t code = check_write(*e, value); code != 0) return sdo_abort(f, code);
   e->value = value;
-  if (index == kModeOfOperation)
+  if (index == kModeOfOperation) {
     if (Entry* shown = find(kModeDisplay, 0); shown != nullptr) shown->value = value;
+    homing_ = Homing::idle;
+    target_ = command_ = actual_;  // a change of mode never jumps
+  }
   if (index == kControlword) apply_controlword(static_cast<std::uint16_t>(value));
   if (index == kTargetPosition) target_ = static_cast<std::int32_t>(value);
   r.data[0] = kSdoDownloadAck;
@@ -227,7 +246,12 @@ void DriveNode::on_rpdo(const CanFrame& f) {
 
 void DriveNode::apply_controlword(std::uint16_t cw) {
   const bool reset_edge = (cw & kCwFaultReset) && !(last_cw_ & kCwFaultReset);
+  const bool start_edge = (cw & kCwHomingStart) && !(last_cw_ & kCwHomingStart);
   last_cw_ = cw;
+  if (static_cast<std::int8_t>(od(kModeDisplay, 0)) == kModeHoming && state_ == DriveState::operation_enabled) {
+    if ((cw & kCwHalt) != 0 && (homing_ == Homing::search || homing_ == Homing::release)) homing_ = Homing::halted;
+    else if (start_edge && (cw & kCwHalt) == 0) homing_ = Homing::search;
+  }
   if (state_ == DriveState::fault) {
     if (reset_edge) {
       state_ = DriveState::switch_on_disabled;
@@ -296,6 +320,12 @@ void DriveNode::on_sync() {
     apply_controlword(pending_cw_);
     if (state_ == DriveState::operation_enabled) target_ = pending_target_;
   }
+  if (static_cast<std::int8_t>(od(kModeDisplay, 0)) == kModeHoming) {
+    if (state_ == DriveState::operation_enabled) homing_step();
+    target_ = command_ = actual_;
+    if ((od(kTpdo1Comm, 1) & kPdoInvalid) == 0) send_tpdo();
+    return;
+  }
   // The plant: closes `lag_alpha` of the gap to the previous SYNC's command.
   if (injected_ != DriveFault::stall)
     actual_exact_ += cfg_.lag_alpha * (static_cast<double>(command_) - actual_exact_);
@@ -313,6 +343,35 @@ void DriveNode::on_sync() {
     target_ = actual_;
   }
   if ((od(kTpdo1Comm, 1) & kPdoInvalid) == 0) send_tpdo();
+}
+
+bool DriveNode::switch_tripped() const {
+  if (!cfg_.has_home_switch) return false;
+  return static_cast<std::int8_t>(od(kHomingMethod, 0)) == kHomeNegativeSwitch ? actual_ <= cfg_.home_switch
+                                                                                 : actual_ >= cfg_.home_switch;
+}
+
+// Method 17/18: towards the switch at the search speed; once on it, off it at
+// the zero speed; where it releases is the home position (0x607C). The drive
+// searches without end: the master stops it (halt) past its search distance.
+void DriveNode::homing_step() {
+  if (homing_ != Homing::search && homing_ != Homing::release) return;
+  const double dt = od(kInterpolationPeriod, 1) * 1e-3;  // ms (index -3)
+  const double dir = static_cast<std::int8_t>(od(kHomingMethod, 0)) == kHomeNegativeSwitch ? -1.0 : 1.0;
+  if (homing_ == Homing::search) {
+    actual_exact_ += dir * od(kHomingSpeeds, 1) * dt;
+    actual_ = static_cast<std::int32_t>(std::lround(actual_exact_));
+    if (switch_tripped()) homing_ = Homing::release;
+    return;
+  }
+  actual_exact_ -= dir * od(kHomingSpeeds, 2) * dt;
+  actual_ = static_cast<std::int32_t>(std::lround(actual_exact_));
+  if (!switch_tripped()) {
+    latched_ = actual_;
+    actual_ = static_cast<std::int32_t>(od(kHomeOffset, 0));
+    actual_exact_ = actual_;
+    homing_ = Homing::attained;
+  }
 }
 
 void DriveNode::send_tpdo() {

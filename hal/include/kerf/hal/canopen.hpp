@@ -67,6 +67,14 @@ inline constexpr std::uint16_t kFollowingWindow = 0x6065;  // u32 counts
 inline constexpr std::uint16_t kTargetPosition = 0x607A;   // i32
 inline constexpr std::uint16_t kInterpolationPeriod = 0x60C2;  // 1: value, 2: index (10^x s)
 inline constexpr std::int8_t kModeCsp = 8;
+// Homing mode (CiA 402 mode 6): the drive runs the search itself.
+inline constexpr std::int8_t kModeHoming = 6;
+inline constexpr std::uint16_t kHomeOffset = 0x607C;    // i32 counts: the home position
+inline constexpr std::uint16_t kHomingMethod = 0x6098;  // i8
+inline constexpr std::uint16_t kHomingSpeeds = 0x6099;  // 1: search (to the switch), 2: zero (latch), counts/s
+// Methods 17 and 18: the negative / positive switch, home at its falling edge
+// (moving off it slowly), no index pulse.
+inline constexpr std::int8_t kHomeNegativeSwitch = 17, kHomePositiveSwitch = 18;
 inline constexpr std::uint32_t kPdoInvalid = 0x80000000u;  // COB-ID bit 31: PDO off
 inline constexpr std::uint8_t kPdoSynchronous = 1;         // transmission type: every SYNC
 
@@ -124,7 +132,14 @@ constexpr std::uint16_t encode_state(DriveState s) {
   return 0;
 }
 
-inline constexpr std::uint16_t kSwFollowingError = 1u << 13;
+inline constexpr std::uint16_t kSwFollowingError = 1u << 13;  // CSP
+// Homing mode: controlword bit 4 starts it (rising edge), bit 8 halts it;
+// statusword bit 10 target reached (ended or halted), 12 homing attained, 13 homing error.
+inline constexpr std::uint16_t kCwHomingStart = 1u << 4;
+inline constexpr std::uint16_t kCwHalt = 1u << 8;
+inline constexpr std::uint16_t kSwTargetReached = 1u << 10;
+inline constexpr std::uint16_t kSwHomingAttained = 1u << 12;
+inline constexpr std::uint16_t kSwHomingError = 1u << 13;
 
 const char* to_string(DriveState s);
 

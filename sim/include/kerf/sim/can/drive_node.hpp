@@ -20,6 +20,8 @@ struct DriveConfig {
   std::int32_t start = 0;            // actual position at power-up, counts
   double lag_alpha = 1.0;            // plant: fraction of the command error closed per SYNC (0, 1]
   std::uint32_t following_window = 5000;  // 0x6065 default, counts
+  bool has_home_switch = false;      // homing mode (6) searches for it
+  std::int32_t home_switch = 0;      // counts, in the power-up frame
 };
 
 // Faults injected through the API (never through magic values on the bus).
@@ -56,6 +58,8 @@ class DriveNode {
   std::int32_t actual() const { return actual_; }
   std::int32_t target() const { return target_; }
   const DriveCounters& counters() const { return counters_; }
+  // Where homing's switch released, in the power-up frame (tests).
+  std::int32_t last_latch() const { return latched_; }
 
  private:
   struct Entry {
@@ -65,7 +69,7 @@ class DriveNode {
     bool writable;
     std::uint32_t value;
   };
-  static constexpr int kEntries = 24;
+  static constexpr int kEntries = 28;
 
   void reset_node(std::uint64_t now_us, bool announce);
   Entry* find(std::uint16_t index, std::uint8_t sub);
@@ -81,6 +85,8 @@ class DriveNode {
   void enter_fault(std::uint16_t code);
   void send_emcy(std::uint16_t code);
   void send_tpdo();
+  void homing_step();  // one SYNC of homing mode
+  bool switch_tripped() const;
 
   DriveConfig cfg_;
   hal::CanBus& out_;
@@ -100,6 +106,9 @@ class DriveNode {
   DriveFault injected_ = DriveFault::none;
   std::uint64_t next_heartbeat_us_ = 0;
   DriveCounters counters_{};
+  enum class Homing : std::uint8_t { idle, search, release, attained, halted };
+  Homing homing_ = Homing::idle;
+  std::int32_t latched_ = 0;
 };
 
 }  // namespace kerf::sim

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -16,6 +17,17 @@
 #include "kerf/hal/can_bus.hpp"
 
 namespace kerf::hal {
+
+// One drive's homing (CiA 402 mode 6), in the drive's units.
+struct DriveHoming {
+  std::int8_t method = 17;          // 17: negative switch, 18: positive (0x6098)
+  std::uint32_t search_speed = 0;   // counts/s (0x6099 sub 1)
+  std::uint32_t latch_speed = 0;    // counts/s (0x6099 sub 2)
+  std::int32_t home_offset = 0;     // counts: the position the home point becomes (0x607C)
+  std::uint32_t max_travel = 0;     // counts: the master halts the drive past this (the search distance)
+};
+
+enum class DriveHomingResult : std::uint8_t { attained, no_switch, aborted, drive_error };
 
 struct CanOpenConfig {
   std::vector<std::uint8_t> nodes{1, 2};  // node ids 1..127, one per axis
@@ -44,6 +56,15 @@ class CanOpenMaster final : public AxisLink {
   const AxisState& axis(std::size_t i) const override { return nodes_[i].st; }
   const AxisCounters& counters() const override { return counters_; }
   const char* last_error() const override { return error_; }
+
+  // Homes one enabled axis in CiA 402 homing mode: the method, speeds and
+  // offset by SDO, mode 6, controlword bit 4; each SYNC the statusword is
+  // watched (bit 12 attained, bit 13 error) and the travel against
+  // max_travel; `stop` (the E-stop) halts it (bit 8). Back in CSP after,
+  // with the target at the drive's new position. The error is a link error;
+  // `result` says how homing ended.
+  AxisError home(std::size_t axis, const DriveHoming& h, DriveHomingResult& result,
+                 const std::function<bool()>& stop = {});
 
   // Expedited SDO, exposed for setup beyond the standard set and for tests.
   AxisError sdo_write(std::size_t axis, std::uint16_t index, std::uint8_t sub, std::uint32_t value,
@@ -76,6 +97,8 @@ class CanOpenMaster final : public AxisLink {
   AxisError health();
   AxisError transition(std::uint16_t controlword, int target_state, const char* step);
   AxisError fail(AxisError e, std::size_t axis, const char* what);
+  AxisError homing_cycles(std::size_t axis, const DriveHoming& h, DriveHomingResult& result,
+                          const std::function<bool()>& stop);
 
   CanBus& bus_;
   CanOpenConfig cfg_;
