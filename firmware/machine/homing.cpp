@@ -22,18 +22,24 @@ double cycle_limit_s(const hal::HomeCommand& h) {
   return (h.search_distance + 2 * h.backoff) / h.search_speed + (h.backoff + 1) / h.latch_speed + 5.0;
 }
 
-bool home_one(const config::Config& cfg, int a, hal::SegmentLink& link, hal::Gpio* gpio, hal::BoardStatus& st,
-              std::string& error, std::FILE* log) {
+// t_start: the session's start, the scripted lines' time origin.
+bool home_one(const config::Config& cfg, int a, hal::SegmentLink& link, hal::Gpio* gpio, double t_start,
+              hal::BoardStatus& st, std::string& error, std::FILE* log) {
   const hal::HomeCommand h = home_command(cfg.machine, a);
   const std::string who = std::string(kAxis[a]) + ": ";
-  if (link.home(h) != hal::LinkError::none) {
+  // The E-stop line: the Modbus board is aborted below while the host
+  // polls; a CAN drive is halted by the master while home() runs.
+  auto estop = [&] {
+    hal::GpioInputs in;
+    return gpio != nullptr && (!gpio->read(now_s() - t_start, in) || in.estop);
+  };
+  if (link.home(h, estop) != hal::LinkError::none) {
     error = who + "the board refused to home: " + link.last_error();
     return false;
   }
   const double t0 = now_s(), limit = cycle_limit_s(h);
   for (;;) {
-    hal::GpioInputs in;
-    if (gpio != nullptr && (!gpio->read(now_s() - t0, in) || in.estop)) {
+    if (estop()) {
       link.command(hal::Command::abort);  // the board stops the axis, unhomed
       error = who + "E-stop: homing aborted, the axis is not homed";
       return false;
@@ -52,7 +58,8 @@ bool home_one(const config::Config& cfg, int a, hal::SegmentLink& link, hal::Gpi
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
   if (st.homing != hal::HomingState::done || (st.homed & (1u << a)) == 0) {
-    error = who + hal::to_string(st.homing);
+    error = who + (st.homing == hal::HomingState::aborted && estop() ? "E-stop: homing aborted, the axis is not homed"
+                                                                     : hal::to_string(st.homing));
     if (st.homing == hal::HomingState::no_switch)
       error += " (" + std::to_string(h.search_distance) + " mm at " + std::to_string(h.search_speed * 60) + " mm/min)";
     return false;
@@ -89,11 +96,12 @@ bool home_axes(const config::Config& cfg, unsigned axes, hal::SegmentLink& link,
     return false;
   }
   const int n = static_cast<int>(cfg.machine.axes.size());
+  const double t_start = now_s();
   bool ok = true;
   for (int a = 0; a < n && ok; ++a) {
     if ((axes & (1u << a)) == 0) continue;
     state.homed[a] = false;  // whatever happens now, the old flag no longer holds
-    ok = home_one(cfg, a, link, gpio, st, error, log);
+    ok = home_one(cfg, a, link, gpio, t_start, st, error, log);
     state.homed[a] = ok;
   }
   if (link.status(st) == hal::LinkError::none) {

@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "kerf/hal/can/canopen_master.hpp"
+#include "kerf/hal/can/csp_segment_link.hpp"
 #include "kerf/hal/canopen.hpp"
 #include "kerf/sim/can/virtual_can_bus.hpp"
 
@@ -52,7 +53,7 @@ hal::DriveHoming x_homing() {
 TEST(CanHoming, FindsTheSwitchAtItsPositionWithinACount) {
   HomingRig rig;
   DriveHomingResult r{};
-  ASSERT_EQ(rig.master->home(0, x_homing(), r), AxisError::none) << rig.master->last_error();
+  ASSERT_EQ(rig.master->home(0, x_homing(), r, {}), AxisError::none) << rig.master->last_error();
   EXPECT_EQ(r, DriveHomingResult::attained);
   EXPECT_LE(std::abs(rig.bus.drive(0).last_latch() - (-2500)), 1);  // released at the switch
   EXPECT_EQ(rig.master->axis(0).actual, -2000);                      // which became the home offset
@@ -71,7 +72,7 @@ TEST(CanHoming, ASwitchThatNeverTripsIsHaltedInsideTheSearchDistance) {
   hal::DriveHoming h = x_homing();
   h.max_travel = 25000;
   DriveHomingResult r{};
-  ASSERT_EQ(rig.master->home(1, h, r), AxisError::none) << rig.master->last_error();  // y: no switch
+  ASSERT_EQ(rig.master->home(1, h, r, {}), AxisError::none) << rig.master->last_error();  // y: no switch
   EXPECT_EQ(r, DriveHomingResult::no_switch);
   const std::int32_t travelled = 30000 - rig.master->axis(1).actual;
   EXPECT_GT(travelled, 25000 - 200);  // it searched the whole distance
@@ -98,7 +99,51 @@ TEST(CanHoming, TheDriveRefusesAnUnknownMethod) {
   hal::DriveHoming h = x_homing();
   h.method = 35;  // not a switch method this drive runs
   DriveHomingResult r{};
-  EXPECT_EQ(rig.master->home(0, h, r), AxisError::sdo_abort);
+  EXPECT_EQ(rig.master->home(0, h, r, {}), AxisError::sdo_abort);
+}
+
+// Through the segment link (what kerf home uses): homed, and a segment after
+// it starts at the home position.
+TEST(CanHoming, TheCspLinkHomesThenRunsFromTheHomePosition) {
+  HomingRig rig;
+  std::string err;
+  auto link = hal::CspSegmentLink::create(*rig.master, hal::CspConfig{}, err);
+  ASSERT_TRUE(link) << err;
+  hal::HomeCommand h;
+  h.axis = 0;
+  h.dir = -1;
+  h.search_speed = 50;
+  h.latch_speed = 1;
+  h.search_distance = 100;
+  h.home_position = -2.0;
+  ASSERT_EQ(link->home(h, {}), hal::LinkError::none) << link->last_error();
+  hal::BoardStatus st;
+  ASSERT_EQ(link->status(st), hal::LinkError::none);
+  EXPECT_EQ(st.homing, hal::HomingState::done);
+  EXPECT_EQ(st.homed, 1);
+  EXPECT_EQ(st.state, hal::BoardState::idle);
+  EXPECT_NEAR(st.position.x, -2.0, 1e-9);
+  hal::SegmentCommand s;
+  s.seq = 1;
+  s.end = {0.0, 30.0};
+  s.feed = 20;
+  ASSERT_EQ(link->push(s, st), hal::LinkError::none) << link->last_error();
+  ASSERT_EQ(link->command(hal::Command::start), hal::LinkError::none);
+  ASSERT_EQ(link->command(hal::Command::finish), hal::LinkError::none);
+  for (int i = 0; i < 5000 && st.state != hal::BoardState::done; ++i) {
+    link->cycle();
+    link->status(st);
+  }
+  EXPECT_EQ(st.state, hal::BoardState::done) << link->last_error();
+  EXPECT_EQ(rig.master->axis(0).actual, 0);  // 2 mm from home, no jump, no following error
+  h.axis = 1;  // y has no switch: a fault with the homing bit
+  h.search_distance = 5;
+  ASSERT_EQ(link->home(h, {}), hal::LinkError::none);
+  ASSERT_EQ(link->status(st), hal::LinkError::none);
+  EXPECT_EQ(st.homing, hal::HomingState::no_switch);
+  EXPECT_EQ(st.state, hal::BoardState::fault);
+  EXPECT_NE(st.faults & hal::kFaultHoming, 0);
+  EXPECT_EQ(st.homed, 1);
 }
 
 }  // namespace

@@ -78,7 +78,7 @@ TEST_P(ModbusHoming, FindsTheSwitchAtItsPositionWithinACount) {
   hal::BoardStatus st;
   ASSERT_EQ(rig.link->status(st), hal::LinkError::none);
   EXPECT_EQ(st.homed, 0);  // powers up unhomed
-  ASSERT_EQ(rig.link->home(x_home()), hal::LinkError::none);
+  ASSERT_EQ(rig.link->home(x_home(), {}), hal::LinkError::none);
   st = rig.wait_homing_end();
   EXPECT_EQ(st.homing, hal::HomingState::done);
   EXPECT_EQ(st.state, hal::BoardState::idle);
@@ -102,7 +102,7 @@ TEST_P(ModbusHoming, ASwitchThatNeverTripsIsAFaultInsideTheSearchDistance) {
   hal::HomeCommand h = x_home();
   h.axis = 1;  // y has no switch
   h.search_distance = 25;
-  ASSERT_EQ(rig.link->home(h), hal::LinkError::none);
+  ASSERT_EQ(rig.link->home(h, {}), hal::LinkError::none);
   const hal::BoardStatus st = rig.wait_homing_end();
   EXPECT_EQ(st.homing, hal::HomingState::no_switch);
   EXPECT_EQ(st.state, hal::BoardState::fault);
@@ -118,7 +118,7 @@ TEST_P(ModbusHoming, AnAbortMidSearchStopsItAndLeavesTheAxisUnhomed) {
   rig.board->start_servo(1.0);  // real time, so the abort lands mid-search
   hal::HomeCommand h = x_home();
   h.search_speed = 20;  // 42.5 mm to the switch: 2 s
-  ASSERT_EQ(rig.link->home(h), hal::LinkError::none);
+  ASSERT_EQ(rig.link->home(h, {}), hal::LinkError::none);
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
   ASSERT_EQ(rig.link->command(hal::Command::abort), hal::LinkError::none);
   hal::BoardStatus st;
@@ -139,7 +139,7 @@ TEST_P(ModbusHoming, HomeIsRefusedWhileRunning) {
   HomeRig rig(GetParam());
   hal::BoardStatus st;
   ASSERT_EQ(rig.link->command(hal::Command::start), hal::LinkError::none);
-  EXPECT_EQ(rig.link->home(x_home()), hal::LinkError::rejected);  // exception 03
+  EXPECT_EQ(rig.link->home(x_home(), {}), hal::LinkError::rejected);  // exception 03
   ASSERT_EQ(rig.link->status(st), hal::LinkError::none);
   EXPECT_EQ(st.homing, hal::HomingState::none);
 }

@@ -1,5 +1,7 @@
 #include "kerf/hal/can/csp_segment_link.hpp"
 
+#include "kerf/hal/canopen.hpp"
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -82,6 +84,8 @@ BoardStatus CspSegmentLink::status_locked() const {
   BoardStatus s = status_of(*exec_);
   s.position = position_;  // the setpoint the drives' feedback answers
   s.actual = actual_;      // the drives' 0x6064
+  s.homed = homed_;
+  s.homing = homing_;
   return s;
 }
 
@@ -113,6 +117,44 @@ LinkError CspSegmentLink::push(const SegmentCommand& seg, BoardStatus& status) {
 LinkError CspSegmentLink::status(BoardStatus& status) {
   std::lock_guard<std::mutex> lock(mu_);
   status = status_locked();
+  return LinkError::none;
+}
+
+LinkError CspSegmentLink::home(const HomeCommand& h, const std::function<bool()>& stop) {
+  std::lock_guard<std::mutex> lock(mu_);  // the clock waits: the homing runs the SYNC itself
+  const BoardState st = exec_->state();
+  if (h.axis < 0 || h.axis > 1 || (st != BoardState::idle && st != BoardState::done) || !exec_->at_rest()) {
+    std::snprintf(error_, sizeof error_, "home: not allowed now (axis %d)", h.axis);
+    return LinkError::rejected;
+  }
+  const double cpm = h.axis == 0 ? cfg_.counts_per_mm.x : cfg_.counts_per_mm.y;
+  DriveHoming d;
+  d.method = h.dir < 0 ? canopen::kHomeNegativeSwitch : canopen::kHomePositiveSwitch;
+  d.search_speed = static_cast<std::uint32_t>(std::lround(h.search_speed * cpm));
+  d.latch_speed = static_cast<std::uint32_t>(std::lround(h.latch_speed * cpm));
+  d.home_offset = static_cast<std::int32_t>(std::lround(h.home_position * cpm));
+  d.max_travel = static_cast<std::uint32_t>(std::lround(h.search_distance * cpm));
+  homed_ = static_cast<std::uint8_t>(homed_ & ~(1u << h.axis));
+  DriveHomingResult r = DriveHomingResult::drive_error;
+  const AxisError e = axes_.home(static_cast<std::size_t>(h.axis), d, r, stop);
+  homing_ = r == DriveHomingResult::attained ? HomingState::done
+            : r == DriveHomingResult::no_switch ? HomingState::no_switch
+                                                : HomingState::aborted;
+  if (homing_ == HomingState::done) homed_ = static_cast<std::uint8_t>(homed_ | (1u << h.axis));
+  // The job starts where the drives now stand (the executor takes a new
+  // position only out of fault: an empty fault, then a reset there).
+  for (int a = 0; a < 2; ++a) target_[a] = axes_.axis(static_cast<std::size_t>(a)).actual;
+  position_ = {static_cast<double>(target_[0]) / cfg_.counts_per_mm.x, static_cast<double>(target_[1]) / cfg_.counts_per_mm.y};
+  actual_ = position_;
+  for (auto& s : sent_) s = {static_cast<std::int32_t>(target_[0]), static_cast<std::int32_t>(target_[1])};
+  exec_->fault(0);
+  exec_->reset(position_);
+  if (homing_ != HomingState::done) exec_->fault(e != AxisError::none ? kFaultDrive : r == DriveHomingResult::aborted ? kFaultAbort : kFaultHoming);
+  changed_.notify_all();
+  if (e != AxisError::none) {
+    std::snprintf(error_, sizeof error_, "home: %s", axes_.last_error());
+    return LinkError::rejected;
+  }
   return LinkError::none;
 }
 

@@ -242,7 +242,7 @@ LinkError ModbusSegmentLink::command(Command c) {
   return transact(Op::command, [&] { return exchange(pdu, 5, 0, nullptr); });
 }
 
-LinkError ModbusSegmentLink::home(const HomeCommand& h) {
+LinkError ModbusSegmentLink::home(const HomeCommand& h, const std::function<bool()>&) {
   std::uint16_t block[map::kHomeRegs];
   if (!map::encode_home(h, block)) return fail(LinkError::rejected, "home", EINVAL);
   std::uint8_t pdu[6 + 2 * map::kHomeRegs];

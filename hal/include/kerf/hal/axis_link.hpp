@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 
 namespace kerf::hal {
 
@@ -48,6 +49,17 @@ struct AxisCounters {
   std::uint64_t error_passive = 0;  // times the bus went error-passive
 };
 
+// One drive's homing (CiA 402 mode 6), in the drive's units.
+struct DriveHoming {
+  std::int8_t method = 17;          // 17: negative switch, 18: positive (0x6098)
+  std::uint32_t search_speed = 0;   // counts/s (0x6099 sub 1)
+  std::uint32_t latch_speed = 0;    // counts/s (0x6099 sub 2)
+  std::int32_t home_offset = 0;     // counts: the position the home point becomes (0x607C)
+  std::uint32_t max_travel = 0;     // counts: the master halts the drive past this (the search distance)
+};
+
+enum class DriveHomingResult : std::uint8_t { attained, no_switch, aborted, drive_error };
+
 class AxisLink {
  public:
   virtual ~AxisLink() = default;
@@ -66,6 +78,12 @@ class AxisLink {
   virtual AxisError cycle() = 0;
   virtual const AxisState& axis(std::size_t i) const = 0;
   virtual const AxisCounters& counters() const = 0;
+  // Homes one axis in the drive's homing mode (blocking: it runs the SYNC
+  // cycles itself); `stop` halts it. A link that cannot home answers not_enabled.
+  virtual AxisError home(std::size_t, const DriveHoming&, DriveHomingResult& result, const std::function<bool()>&) {
+    result = DriveHomingResult::drive_error;
+    return AxisError::not_enabled;
+  }
   // Text of the last error, naming the axis (static storage, no allocation).
   virtual const char* last_error() const = 0;
 };

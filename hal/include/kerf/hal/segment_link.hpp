@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 
 #include "kerf/motion/board_protocol.hpp"
 
@@ -124,9 +125,11 @@ class SegmentLink {
   virtual LinkError push(const SegmentCommand& seg, BoardStatus& status) = 0;
   virtual LinkError status(BoardStatus& status) = 0;
   virtual LinkError command(Command c) = 0;
-  // Starts homing one axis (the board or drive runs it; status() follows it).
-  // A link that cannot home answers rejected.
-  virtual LinkError home(const HomeCommand&) { return LinkError::rejected; }
+  // Homes one axis: the board runs it (Modbus: this starts it, status()
+  // follows it, `stop` is not called) or the drive does (CAN: this returns
+  // when it has ended, halting it when `stop` returns true). A link that
+  // cannot home answers rejected.
+  virtual LinkError home(const HomeCommand&, const std::function<bool()>& /*stop*/) { return LinkError::rejected; }
   // Transactions sent again after a failed attempt, since creation.
   virtual std::uint64_t resends() const = 0;
   // Text of the last error, for the operator (static storage, no allocation).

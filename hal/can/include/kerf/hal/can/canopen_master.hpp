@@ -18,17 +18,6 @@
 
 namespace kerf::hal {
 
-// One drive's homing (CiA 402 mode 6), in the drive's units.
-struct DriveHoming {
-  std::int8_t method = 17;          // 17: negative switch, 18: positive (0x6098)
-  std::uint32_t search_speed = 0;   // counts/s (0x6099 sub 1)
-  std::uint32_t latch_speed = 0;    // counts/s (0x6099 sub 2)
-  std::int32_t home_offset = 0;     // counts: the position the home point becomes (0x607C)
-  std::uint32_t max_travel = 0;     // counts: the master halts the drive past this (the search distance)
-};
-
-enum class DriveHomingResult : std::uint8_t { attained, no_switch, aborted, drive_error };
-
 struct CanOpenConfig {
   std::vector<std::uint8_t> nodes{1, 2};  // node ids 1..127, one per axis
   std::uint32_t sync_us = 1000;           // SYNC period, 1..10 ms
@@ -64,7 +53,7 @@ class CanOpenMaster final : public AxisLink {
   // with the target at the drive's new position. The error is a link error;
   // `result` says how homing ended.
   AxisError home(std::size_t axis, const DriveHoming& h, DriveHomingResult& result,
-                 const std::function<bool()>& stop = {});
+                 const std::function<bool()>& stop) override;
 
   // Expedited SDO, exposed for setup beyond the standard set and for tests.
   AxisError sdo_write(std::size_t axis, std::uint16_t index, std::uint8_t sub, std::uint32_t value,

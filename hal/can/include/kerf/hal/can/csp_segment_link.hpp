@@ -63,6 +63,9 @@ class CspSegmentLink final : public SegmentLink {
   LinkError push(const SegmentCommand& seg, BoardStatus& status) override;
   LinkError status(BoardStatus& status) override;
   LinkError command(Command c) override;
+  // CiA 402 homing mode on the axis's drive (AxisLink::home), then the job
+  // starts from the drive's new position.
+  LinkError home(const HomeCommand& h, const std::function<bool()>& stop) override;
   std::uint64_t resends() const override { return 0; }
   const char* last_error() const override;
 
@@ -107,6 +110,8 @@ class CspSegmentLink final : public SegmentLink {
   std::vector<CspSample> trace_;
   std::vector<std::uint32_t> executed_;
   char error_[240] = "";
+  std::uint8_t homed_ = 0;
+  HomingState homing_ = HomingState::none;
 
   std::thread clock_;
   bool clock_stop_ = false;

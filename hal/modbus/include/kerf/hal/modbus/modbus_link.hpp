@@ -43,7 +43,7 @@ class ModbusSegmentLink final : public SegmentLink {
   LinkError status(BoardStatus& status) override;
   LinkError command(Command c) override;
   // Writes the home block (FC16 at 40), then command 7.
-  LinkError home(const HomeCommand& h) override;
+  LinkError home(const HomeCommand& h, const std::function<bool()>& stop) override;
   const char* last_error() const override { return error_; }
 
   std::uint64_t resends() const override { return resends_; }
