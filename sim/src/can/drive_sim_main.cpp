@@ -38,6 +38,10 @@ int main(int argc, char** argv) {
   app.add_option("--idle-exit-ms", idle_exit_ms, "exit after this long without a frame, once SYNC ran (0: never)")
       ->check(CLI::NonNegativeNumber);
   app.add_option("--lag", lag, "plant: fraction of the error closed per SYNC")->check(CLI::Range(0.01, 1.0));
+  std::vector<long> switches;
+  app.add_option("--home-switch", switches,
+                 "home switch of each drive in --nodes order, counts (homing mode 6, methods 17/18)")
+      ->delimiter(',');
   CLI11_PARSE(app, argc, argv);
 
   std::vector<kerf::sim::DriveConfig> configs;
@@ -45,6 +49,10 @@ int main(int argc, char** argv) {
     kerf::sim::DriveConfig c;
     c.node = static_cast<std::uint8_t>(n);
     c.lag_alpha = lag;
+    if (configs.size() < switches.size()) {
+      c.has_home_switch = true;
+      c.home_switch = static_cast<std::int32_t>(switches[configs.size()]);
+    }
     configs.push_back(c);
   }
   std::string error;
