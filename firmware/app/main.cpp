@@ -1,4 +1,4 @@
-// The kerf command: fit, plan, weld, run and home; it links no simulator (the
+// The kerf command: fit, plan, weld, run, home, jog and touch-off; it links no simulator (the
 // build checks its symbols). The simulator is kerf-sim (sim_main.cpp).
 // Exit codes: 0 success, 1 the fit or the output failed, 2 bad options or
 // bad input (the message is on stderr, stdout stays empty).
@@ -9,6 +9,7 @@
 
 #include "app/fit_command.hpp"
 #include "app/home_command.hpp"
+#include "app/jog_command.hpp"
 #include "app/plan_command.hpp"
 #include "app/run_command.hpp"
 #include "app/run_options.hpp"
@@ -39,6 +40,10 @@ int main(int argc, char** argv) {
     CLI::App* run = add_run_command(app, run_opts);
     HomeOptions home_opts;
     CLI::App* home = add_home_command(app, home_opts);
+    JogOptions jog_opts;
+    CLI::App* jog = add_jog_command(app, jog_opts);
+    TouchOffOptions touch_opts;
+    CLI::App* touch = add_touch_off_command(app, touch_opts);
     WeldCommandOptions weld_opts;
     CLI::App* weld = add_weld_command(app, weld_opts);
     try {
@@ -54,6 +59,9 @@ int main(int argc, char** argv) {
     if (weld->parsed()) return run_weld(weld_opts);
     if (run->parsed()) return run_run(run_opts);
     if (home->parsed()) return home_job(home_opts, "kerf", kerf::machine::check_lines, kerf::machine::open_lines);
+    if (jog->parsed()) return jog_job(jog_opts, "kerf", kerf::machine::check_lines, kerf::machine::open_lines);
+    if (touch->parsed())
+      return touch_off_job(touch_opts, "kerf", kerf::machine::check_lines, kerf::machine::open_lines);
     if (sim->parsed()) {
       std::fprintf(stderr, "kerf: sim: the simulator is `kerf-sim sim` (package kerf-sim); kerf runs machines only\n");
       return kExitUsage;

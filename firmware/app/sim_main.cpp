@@ -9,6 +9,7 @@
 #include <new>
 
 #include "app/home_command.hpp"
+#include "app/jog_command.hpp"
 #include "app/run_options.hpp"
 #include "app/sim_options.hpp"
 #include "app/sim_run_command.hpp"
@@ -40,6 +41,11 @@ int main(int argc, char** argv) {
     CLI::App* home = add_home_command(app, home_opts);
     home->description("kerf home with scripted lines against the bench's simulated board or drives "
                       "(kerf-board-sim --home-switch-x/-y, kerf-drive-sim)");
+    JogOptions jog_opts;
+    add_jog_command(app, jog_opts)->description("kerf jog with scripted lines against the bench's simulated board");
+    TouchOffOptions touch_opts;
+    add_touch_off_command(app, touch_opts)
+        ->description("kerf touch-off with scripted lines against the bench's simulated board");
     try {
       app.parse(argc, argv);
     } catch (const CLI::Success& e) {  // --help, --version
@@ -50,6 +56,8 @@ int main(int argc, char** argv) {
     }
     if (run->parsed()) return run_sim_run(run_opts);
     if (home->parsed()) return run_sim_home(home_opts);
+    if (app.got_subcommand("jog")) return run_sim_jog(jog_opts);
+    if (app.got_subcommand("touch-off")) return run_sim_touch_off(touch_opts);
 #if KERF_HAVE_MODBUS
     if (sim->parsed()) return kerf::simulated::run_sim(sim_opts);
 #else

@@ -39,5 +39,9 @@ int run_sim_run(const RunOptions& opts) {
 }
 
 int run_sim_home(const HomeOptions& opts) { return home_job(opts, "kerf-sim", on_this_host, scripted_lines); }
+int run_sim_jog(const JogOptions& opts) { return jog_job(opts, "kerf-sim", on_this_host, scripted_lines); }
+int run_sim_touch_off(const TouchOffOptions& opts) {
+  return touch_off_job(opts, "kerf-sim", on_this_host, scripted_lines);
+}
 
 }  // namespace kerf::app

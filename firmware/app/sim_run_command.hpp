@@ -8,11 +8,14 @@
 
 #include "app/run_options.hpp"
 #include "app/home_command.hpp"
+#include "app/jog_command.hpp"
 
 namespace kerf::app {
 
 int run_sim_run(const RunOptions& opts);
 // `kerf-sim home`: kerf home with the scripted lines, on simulated boards and drives only.
 int run_sim_home(const HomeOptions& opts);
+int run_sim_jog(const JogOptions& opts);
+int run_sim_touch_off(const TouchOffOptions& opts);
 
 }  // namespace kerf::app

@@ -47,6 +47,7 @@ struct Machine {
   // The machine has home switches: kerf run then refuses to start until
   // `kerf home` has homed every axis; false: --assume-homed may stand in.
   bool home_switches = true;
+  double jog_speed = 1200;  // mm/min, > 0: kerf jog's feed (capped by rapid_feed)
 };
 
 // The z axis's limits (the servo period, feed mm/s, accel), or none

@@ -75,6 +75,7 @@ void read_machine(TableReader& r, Machine& m) {
   r.positive("ferror", m.ferror);
   r.positive("min_ferror", m.min_ferror);
   r.boolean("home_switches", m.home_switches);
+  r.positive("jog_speed", m.jog_speed);
   r.finish();
 }
 

@@ -1,0 +1,29 @@
+// `kerf jog` and `kerf touch-off`: short sessions over the configured link.
+// A jog is one travel line (torch off) to a target at the jog speed, streamed
+// like a job's segment; the E-stop line aborts it (the board stops on the
+// path). Touch-off sets the active work offset so that where the axes stand
+// becomes X0 Y0, as G10 L20 P0 X0 Y0 does, and keeps it in the state file.
+#pragma once
+
+#include <cstdio>
+#include <string>
+
+#include "config/config.hpp"
+#include "job/machine_state.hpp"
+#include "kerf/geom/vec2.hpp"
+#include "kerf/hal/gpio.hpp"
+#include "kerf/hal/segment_link.hpp"
+
+namespace kerf::machine {
+
+// Moves the axes to `to` (mm, machine position) at `feed` mm/s. True when it
+// got there; false with the reason (E-stop, a board fault, the link).
+// `at` is where the axes stopped.
+bool jog_to(hal::SegmentLink& link, hal::Gpio* gpio, Vec2<double> to, double feed, Vec2<double>& at,
+            std::string& error);
+
+// G10 L20 on the active system: the offset that makes `machine` read X0 Y0
+// (the G92 offset, when applied, counts as G10 L20 counts it).
+void touch_off(job::MachineState& s, Vec2<double> machine);
+
+}  // namespace kerf::machine
