@@ -7,9 +7,11 @@
 #include <thread>
 
 #include "kerf/hal/modbus/register_map.hpp"
+#include "kerf/sim/motion_executor.hpp"
 #include "kerf/sim/scripted_gpio.hpp"
 #include "link_rig.hpp"
 #include "machine/homing.hpp"
+#include "machine/jog.hpp"
 
 namespace kerf::test {
 namespace {
@@ -22,17 +24,21 @@ struct HomeRig {
   std::unique_ptr<sim::BoardServer> server;
   std::unique_ptr<hal::ModbusSegmentLink> link;
 
-  explicit HomeRig(Wire wire, bool y_switch = false) {
+  // interpolate: core/motion's interpolator (ramps, feed) rather than a jump to each end.
+  explicit HomeRig(Wire wire, bool y_switch = false, bool interpolate = false) {
     sim::BoardConfig bc;
     bc.start = {40.0, 30.0};  // wherever the axes powered up
     bc.has_home_switch[0] = true;
     bc.home_switch_at[0] = -2.5;  // x switch; y has one only when asked
     bc.has_home_switch[1] = y_switch;
     bc.home_switch_at[1] = 1.0;
-    board = std::make_unique<sim::MotionBoard>(bc, std::make_unique<sim::EndpointExecutor>());
+    std::string err;
+    std::unique_ptr<sim::SegmentExecutor> exec = std::make_unique<sim::EndpointExecutor>();
+    if (interpolate) exec = sim::make_motion_executor(sim::MotionConfig{}, err);
+    if (!exec) throw std::runtime_error(err);
+    board = std::make_unique<sim::MotionBoard>(bc, std::move(exec));
     sim::ServerConfig sc;
     sc.transport = wire == Wire::tcp ? sim::ServerConfig::Transport::tcp : sim::ServerConfig::Transport::rtu;
-    std::string err;
     server = sim::BoardServer::start(*board, sc, err);
     if (!server) throw std::runtime_error(err);
     hal::ModbusConfig lc;
@@ -216,6 +222,48 @@ TEST(HomeSession, TheEStopAbortsItAndTheAxisStaysUnhomed) {
   std::string why;
   c.machine.state = "s";
   EXPECT_FALSE(machine::check_homed(c, state, false, why));
+}
+
+// Jog and touch-off (machine/jog.hpp) on the homed board.
+TEST(Jog, MovesToTheTargetThenTouchOffMakesItX0Y0) {
+  HomeRig rig(Wire::tcp, true);
+  rig.board->start_servo(0.0);
+  job::MachineState state;
+  std::string error;
+  ASSERT_TRUE(machine::home_axes(session_config(), 3u, *rig.link, nullptr, state, error, nullptr)) << error;
+  Vec2<double> at{};
+  ASSERT_TRUE(machine::jog_to(*rig.link, nullptr, {17.5, -1.0}, 20.0, at, error)) << error;
+  EXPECT_NEAR(at.x, 17.5, 1e-9);
+  ASSERT_TRUE(machine::jog_to(*rig.link, nullptr, {17.5, 4.0}, 20.0, at, error)) << error;  // again, from done
+  EXPECT_NEAR(at.y, 4.0, 1e-9);
+  state.coord = 1;  // G55 active
+  state.g92_on = true;
+  state.g92[0] = 1.0;
+  machine::touch_off(state, at);
+  EXPECT_DOUBLE_EQ(state.g5x[1][0], 16.5);  // work = machine - G55 - G92 = 0
+  EXPECT_DOUBLE_EQ(state.g5x[1][1], 4.0);
+  EXPECT_DOUBLE_EQ(state.g5x[0][0], 0.0);  // G54 untouched
+}
+
+TEST(Jog, TheEStopStopsItOnThePath) {
+  HomeRig rig(Wire::tcp, true, true);
+  rig.board->start_servo(1.0);
+  config::Config c = session_config();
+  c.machine.axes[0].home_search_speed = 6000;
+  c.machine.axes[0].home_latch_speed = 600;
+  job::MachineState state;
+  std::string error;
+  ASSERT_TRUE(machine::home_axes(c, 1u, *rig.link, nullptr, state, error, nullptr)) << error;
+  sim::ScriptedGpio gpio;
+  ASSERT_TRUE(gpio.estop_at(0.2, true));
+  Vec2<double> at{};
+  EXPECT_FALSE(machine::jog_to(*rig.link, &gpio, {100.0, 30.0}, 10.0, at, error));
+  EXPECT_EQ(error, "E-stop: the jog stopped");
+  EXPECT_EQ(rig.board->status().state, hal::BoardState::fault);
+  EXPECT_GT(at.x, 5.0);   // it had moved
+  EXPECT_LT(at.x, 40.0);  // and stopped about 2 mm into a 95 mm jog
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  EXPECT_NEAR(rig.board->status().position.x, at.x, 0.5);  // braked, not travelling on
 }
 
 }  // namespace

@@ -70,3 +70,16 @@ check(r1["rt"] is not None and "overruns" in r1["rt"], "the loop's statistics ar
 check(isinstance(r1["rt_histogram"], list) and len(r1["rt_histogram"]) >= 1, "the lateness histogram is reported")
 print("ok:", r2["segments_executed_total"], "of", r2["segments_planned"], "segments over two runs;", r2["rt"])
 PY
+
+# Jog, touch off, then a G-code job: it runs in the touched-off frame (its
+# X0 Y0 is where the torch stood), so it ends at that point plus its last XY.
+"$kerf" jog --config "$dir/bench.toml" --axis x --to 12.5 >"$dir/jog.out" 2>&1 || { cat "$dir/jog.out"; exit 1; }
+"$kerf" jog --config "$dir/bench.toml" --axis y --to 7 >>"$dir/jog.out" 2>&1 || { cat "$dir/jog.out"; exit 1; }
+"$kerf" touch-off --config "$dir/bench.toml" >"$dir/touch.out" 2>&1 || { cat "$dir/touch.out"; exit 1; }
+cat "$dir/jog.out" "$dir/touch.out"
+grep -q '^G54 = 12.5 7 0$' "$dir/state" || { cat "$dir/state"; echo "FAIL: touch-off did not set G54 at the torch"; exit 1; }
+printf 'G21 G90\nG0 X0 Y0\nG1 X10 Y0 F1200\nG1 X10 Y5\nM30\n' >"$dir/touched.ngc"
+"$kerf" run --config "$dir/bench.toml" "$dir/touched.ngc" >"$dir/run3.out" 2>&1 || { cat "$dir/run3.out"; exit 1; }
+"$kerf" jog --config "$dir/bench.toml" --axis x --distance 0 >"$dir/where.out" 2>&1
+grep -q 'jog: at 22.500 12.000$' "$dir/where.out" || { cat "$dir/where.out"; echo "FAIL: the job did not run from the touched-off point"; exit 1; }
+echo "ok: touched off at 12.5 7, the job ended at 22.5 12"
