@@ -224,6 +224,24 @@ TEST(HomeSession, TheEStopAbortsItAndTheAxisStaysUnhomed) {
   EXPECT_FALSE(machine::check_homed(c, state, false, why));
 }
 
+TEST(StateFile, KeepsTheHomedAxesAndThePosition) {
+  const std::string path = ::testing::TempDir() + "kerf_homed_state.txt";
+  job::MachineState s;
+  s.homed[0] = s.homed[1] = true;
+  s.has_position = true;
+  s.position[0] = 12.5;
+  s.position[1] = -3.25;
+  std::string error;
+  ASSERT_TRUE(job::save_machine_state(path, s, error)) << error;
+  job::MachineState back;
+  ASSERT_TRUE(job::load_machine_state(path, back, error)) << error;
+  EXPECT_TRUE(back.homed[0] && back.homed[1] && !back.homed[2]);
+  EXPECT_TRUE(job::all_homed(back, 2));
+  EXPECT_FALSE(job::all_homed(back, 3));
+  EXPECT_EQ(back.position[1], -3.25);
+  EXPECT_TRUE(back.other.empty());  // proper fields, not unknown keys
+}
+
 // Jog and touch-off (machine/jog.hpp) on the homed board.
 TEST(Jog, MovesToTheTargetThenTouchOffMakesItX0Y0) {
   HomeRig rig(Wire::tcp, true);
