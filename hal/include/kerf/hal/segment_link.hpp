@@ -9,6 +9,7 @@
 #include <cstdint>
 
 #include "kerf/motion/board_protocol.hpp"
+#include "kerf/motion/soft_limits.hpp"
 
 namespace kerf::hal {
 
@@ -33,6 +34,7 @@ enum FaultBit : std::uint16_t {
   kFaultEmcy = 1u << 6,       // a drive sent an emergency message
   kFaultBusOff = 1u << 7,     // the CAN controller went bus-off
   kFaultSend = 1u << 8,       // a cyclic frame could not be queued
+  kFaultSoftLimit = motion::kBoardFaultSoftLimit,  // a segment outside the soft limits (motion/soft_limits.hpp)
 };
 
 struct BoardStatus {
