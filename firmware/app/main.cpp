@@ -1,4 +1,4 @@
-// The kerf command: fit, plan, weld and run; it links no simulator (the
+// The kerf command: fit, plan, weld, run and check; it links no simulator (the
 // build checks its symbols). The simulator is kerf-sim (sim_main.cpp).
 // Exit codes: 0 success, 1 the fit or the output failed, 2 bad options or
 // bad input (the message is on stderr, stdout stays empty).
@@ -7,11 +7,13 @@
 #include <exception>
 #include <new>
 
+#include "app/check_command.hpp"
 #include "app/fit_command.hpp"
 #include "app/plan_command.hpp"
 #include "app/run_command.hpp"
 #include "app/run_options.hpp"
 #include "app/weld_command.hpp"
+#include "machine/machine_factory.hpp"
 
 #ifndef KERF_VERSION
 #define KERF_VERSION "unknown"
@@ -35,6 +37,8 @@ int main(int argc, char** argv) {
     sim->set_help_flag();
     RunOptions run_opts;
     CLI::App* run = add_run_command(app, run_opts);
+    CheckOptions check_opts;
+    CLI::App* check = add_check_command(app, check_opts, true);
     WeldCommandOptions weld_opts;
     CLI::App* weld = add_weld_command(app, weld_opts);
     try {
@@ -49,6 +53,7 @@ int main(int argc, char** argv) {
     if (plan->parsed()) return run_plan(plan_opts);
     if (weld->parsed()) return run_weld(weld_opts);
     if (run->parsed()) return run_run(run_opts);
+    if (check->parsed()) return run_check(check_opts, "kerf", kerf::machine::check_lines);
     if (sim->parsed()) {
       std::fprintf(stderr, "kerf: sim: the simulator is `kerf-sim sim` (package kerf-sim); kerf runs machines only\n");
       return kExitUsage;

@@ -8,6 +8,7 @@
 #include <exception>
 #include <new>
 
+#include "app/check_command.hpp"
 #include "app/run_options.hpp"
 #include "app/sim_options.hpp"
 #include "app/sim_run_command.hpp"
@@ -35,6 +36,11 @@ int main(int argc, char** argv) {
     run->description(
         "kerf run with scripted lines (E-stop released, arc-OK following the torch) against the bench's simulated "
         "board or drives: Modbus TCP on a loopback address, RTU on /dev/pts/N, CAN on vcanN");
+    CheckOptions check_opts;
+    CLI::App* check = add_check_command(app, check_opts, false);
+    check->description("Check a job before `kerf-sim sim` runs it, moving nothing: segments, pierces, the time it "
+                       "will take, its extents against the soft limits (travel from [sim] start), and what it would "
+                       "refuse (exit 2 then)");
     try {
       app.parse(argc, argv);
     } catch (const CLI::Success& e) {  // --help, --version
@@ -44,6 +50,7 @@ int main(int argc, char** argv) {
       return kExitUsage;
     }
     if (run->parsed()) return run_sim_run(run_opts);
+    if (check->parsed()) return run_check(check_opts, "kerf-sim", nullptr);
 #if KERF_HAVE_MODBUS
     if (sim->parsed()) return kerf::simulated::run_sim(sim_opts);
 #else

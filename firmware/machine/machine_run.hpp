@@ -31,6 +31,7 @@ int run_on_machine(const control::Job& job, const config::Config& cfg, hal::Segm
                    control::Journal* journal, const control::ResumePoint& from, bool resumed, const std::string& report,
                    bool reset_at_start = false,
                    const job::GcodeProgram* program = nullptr,
-                   const std::vector<control::CutRuleNote>* cut_rules = nullptr);  // for the report
+                   const std::vector<control::CutRuleNote>* cut_rules = nullptr,  // for the report
+                   bool dry_run = false);  // --dry-run: the report and the summary say so
 
 }  // namespace kerf::machine
