@@ -90,7 +90,7 @@ JobTime estimate_job_time(const Job& job, const JobTimeSettings& s) {
       rapid.end = path.start;
       rapid.feed = s.rapid_feed_mm_s;
       rapid.torch = false;
-      t.travel_s += cycles(board.run({rapid})) + s.cycle_s;  // the controller sees it done a cycle later
+      t.travel_s += cycles(board.run({rapid}));
     }
     if (path.torch) {
       ++t.pierces;
