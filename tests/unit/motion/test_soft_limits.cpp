@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "kerf/core/fixed.hpp"
+#include "kerf/core/fixed_convert.hpp"
 #include "kerf/motion/board_executor.hpp"
 #include "kerf/motion/interpolator_motion.hpp"
 #include "kerf/motion/soft_limits.hpp"
@@ -14,11 +15,8 @@
 namespace kerf::motion {
 namespace {
 
-template <class S>
-double to_d(S v) {
-  if constexpr (std::is_same_v<S, double>) return v;
-  else return static_cast<double>(v.raw()) / 4294967296.0;
-}
+inline double to_d(double v) { return v; }
+inline double to_d(Fixed v) { return to_double(v); }
 
 template <class S>
 SoftLimits<S> box(int lo, int hi) {  // x and y both in [lo, hi]
