@@ -42,7 +42,8 @@ int run_job(const RunOptions& opts, const char* who, RunCheck check, LinesOpener
   if (const int rc = read_and_fit(cfg, opts.job, true, says.c_str(), in); rc != 0) return rc;
   control::FittedJob& fitted = in.fitted;
   // Before anything moves: the whole job inside the table. Where the machine
-  // stands is not known yet; the board checks the first travel itself.
+  // stands is not known before the link is up, so the first travel is checked
+  // from the first pierce point on (a machine inside the table stays inside).
   if (!control::fully_limited(cfg.machine))
     std::fprintf(stderr, "%s: %s: machine.axis: x and y need min and max (soft limits): the job is not checked "
                          "against the table\n", says.c_str(), cfg.file.c_str());
