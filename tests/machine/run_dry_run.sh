@@ -8,12 +8,9 @@
 #   run_dry_run.sh KERF_SIM BOARD_SIM JOB SIM_TOML WORKDIR
 set -euo pipefail
 kerf=$1 board=$2 job=$3 sim_toml=$4 dir=$5
-mkdir -p "$dir"
-rm -f "$dir"/*
-
 source "$(dirname "$0")/board_sim.sh"
-start_board "$board"
-sed -e "s/^port = .*/port = $port/" -e "s/^pierce_delay = .*/pierce_delay = 0.05/" "$sim_toml" >"$dir/machine.toml"
+# The example simulator config, pointed at this board's port.
+start_bench "$board" "$sim_toml" "$dir" 0.05 machine.toml
 
 "$kerf" run --config "$dir/machine.toml" --dry-run --report "$dir/dry.json" "$job" >"$dir/dry.out" 2>"$dir/dry.err"
 cat "$dir/dry.out"

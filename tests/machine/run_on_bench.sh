@@ -8,13 +8,9 @@
 #   run_on_bench.sh KERF_SIM BOARD_SIM JOB SIM_TOML WORKDIR
 set -euo pipefail
 kerf=$1 board=$2 job=$3 sim_toml=$4 dir=$5
-mkdir -p "$dir"
-rm -f "$dir"/*
-
 source "$(dirname "$0")/board_sim.sh"
-start_board "$board"
 # The example simulator config, pointed at this board's port.
-sed -e "s/^port = .*/port = $port/" -e "s/^pierce_delay = .*/pierce_delay = 0.2/" "$sim_toml" >"$dir/bench.toml"
+start_bench "$board" "$sim_toml" "$dir" 0.2 bench.toml
 printf '\n[bench]\nenabled = true\n' >>"$dir/bench.toml"
 
 "$kerf" run --config "$dir/bench.toml" --journal "$dir/journal" --report "$dir/r1.json" "$job" \
