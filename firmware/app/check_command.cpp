@@ -36,6 +36,7 @@ control::JobTimeSettings time_settings(const config::Config& cfg, Vec2<double> s
   s.pierce_delay_s = cfg.cut.pierce_delay;
   s.operator_delay_s = cfg.sim.operator_delay;
   s.start = start;
+  s.z = config::z_limits(cfg.machine);
   return s;
 }
 

@@ -26,6 +26,7 @@ class BoardModel {
     c.counts_per_mm = {s.counts_per_mm, s.counts_per_mm};
     ok_ = stage_.configure(c) == Status::ok;
     board_.emplace(stage_, Span<motion::BoardSegment<double>>(queue_.data(), queue_.size()), s.start);
+    if (s.z.configured()) board_->configure_z(s.z, 0.0);
   }
   bool ok() const { return ok_; }
 
@@ -82,22 +83,39 @@ JobTime estimate_job_time(const Job& job, const JobTimeSettings& s) {
     }
   };
   Vec2<double> at = s.start;
+  // The moves a z axis adds before and after a path, as the controller sends them.
+  const auto moves = [&](const std::vector<hal::SegmentCommand>& list, std::vector<hal::SegmentCommand>& block) {
+    for (hal::SegmentCommand c : list) {
+      if (c.z_move) c.end = at;
+      else if (distance(at, c.end) <= 1e-6) continue;
+      c.torch = false;
+      if (!(c.feed > 0)) c.feed = s.rapid_feed_mm_s;
+      at = c.end;
+      block.push_back(c);
+    }
+  };
   for (std::size_t p = 0; p < job.paths.size(); ++p) {
     const CutPath& path = job.paths[p];
     actions_before(p);
+    std::vector<hal::SegmentCommand> travel;
+    moves(path.before, travel);
     if (distance(at, path.start) > 1e-6) {
       hal::SegmentCommand rapid;
       rapid.end = path.start;
       rapid.feed = s.rapid_feed_mm_s;
       rapid.torch = false;
-      t.travel_s += cycles(board.run({rapid}));
+      travel.push_back(rapid);
     }
+    if (!travel.empty()) t.travel_s += cycles(board.run(travel));
     if (path.torch) {
       ++t.pierces;
       t.pierce_s += cycles(s.arc_ok_s) + cycles(path.pierce_delay_s >= 0 ? path.pierce_delay_s : s.pierce_delay_s);
     }
     t.cut_s += cycles(board.run(path.segments)) + s.cycle_s;
     at = path.segments.empty() ? path.start : path.segments.back().end;
+    std::vector<hal::SegmentCommand> after;
+    moves(path.after, after);
+    if (!after.empty()) t.travel_s += cycles(board.run(after));
   }
   actions_before(job.paths.size());
   t.ok = board.ok();

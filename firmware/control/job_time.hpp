@@ -2,7 +2,7 @@
 // controller streams (the travel to a pierce point at the rapid feed, each
 // path at its feeds) run through the board's own executor and interpolator
 // (core/motion: the Modbus board's planner, trapezoidal ramps under
-// machine.accel, the arcs' and joints' speed caps, its look-ahead), period by
+// machine.accel, the arcs' and joints' speed caps, z moves under the z axis's limits, its look-ahead), period by
 // period; the controller's cycle quantises each hand-over. Between blocks:
 // the pierce (arc-OK after arc_ok_s, then the pierce delay), dwells, pauses
 // (operator_delay_s: the operator is not modelled further) and M66 waits at
@@ -12,6 +12,7 @@
 #include <cstddef>
 
 #include "control/job.hpp"
+#include "kerf/motion/axis_move.hpp"
 
 namespace kerf::control {
 
@@ -28,6 +29,7 @@ struct JobTimeSettings {
   double arc_ok_s = 0.05;          // torch on -> arc-OK (the simulated torch's)
   double operator_delay_s = 1.0;   // a pause (M0/M1) lasts this long
   Vec2<double> start{};            // where the machine stands before the first travel
+  motion::AxisLimits<double> z{};  // the z axis (config::z_limits); none: no z moves
 };
 
 struct JobTime {

@@ -58,6 +58,9 @@ motion::Extent<double> job_extent(const FittedJob& fitted, const Vec2<double>* s
   for (const CutPath& p : fitted.job.paths) {
     Vec2<double> from = p.start;
     take(box, {from, from});
+    for (const std::vector<hal::SegmentCommand>* list : {&p.before, &p.after})
+      for (const hal::SegmentCommand& c : *list)
+        if (!c.z_move) take(box, {c.end, c.end});
     for (const hal::SegmentCommand& s : p.segments) {
       take(box, motion::segment_extent(from, s));
       from = s.end;
@@ -78,9 +81,12 @@ bool check_soft_limits(const FittedJob& fitted, const io::PointFile& source, con
     const CutPath& path = fitted.job.paths[p];
     const std::size_t base = p < fitted.path_point.size() ? fitted.path_point[p] : 0;
     std::string why = breach(limits, {path.start, path.start});
+    for (const std::vector<hal::SegmentCommand>* list : {&path.before, &path.after})
+      for (const hal::SegmentCommand& c : *list)  // a z axis's XY rapids: straight lines between these points
+        if (why.empty() && !c.z_move) why = breach(limits, {c.end, c.end});
     if (!why.empty()) {  // the travel to the pierce point (a straight line between points checked)
       error = source.file + ":" + std::to_string(line_at(source, base)) + ": outside the soft limits: " + why +
-              " (travel to path " +
+              " (travel to or from path " +
               std::to_string(p + 1) + ")";
       return false;
     }

@@ -4,12 +4,16 @@
 # check_time.toml's coarse machine. A file the sim refuses must be refused by
 # check too (exit 2). Prints one line per file: sim, check, difference.
 #
-#   check_time_corpus.sh KERF_SIM CONFIG CORPUS_DIR WORKDIR
+#   check_time_corpus.sh KERF_SIM CONFIG CORPUS_DIR WORKDIR [NAME...]
+# (NAME...: only these files of the corpus)
 set -euo pipefail
 kerf=$1 config=$2 corpus=$3 dir=$4
+shift 4
+files=("$corpus"/*.gcode "$corpus"/*.ngc "$corpus"/*.nc)
+if (($# > 0)); then files=(); for n in "$@"; do files+=("$corpus/$n"); done; fi
 mkdir -p "$dir"
 fail=0
-for f in "$corpus"/*.gcode "$corpus"/*.ngc "$corpus"/*.nc; do
+for f in "${files[@]}"; do
   [[ -e $f ]] || continue
   name=$(basename "$f")
   rc_sim=0
