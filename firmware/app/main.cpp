@@ -1,4 +1,4 @@
-// The kerf command: fit, plan, weld, run, home, jog and touch-off; it links no simulator (the
+// The kerf command: fit, plan, weld, run, check, home, jog and touch-off; it links no simulator (the
 // build checks its symbols). The simulator is kerf-sim (sim_main.cpp).
 // Exit codes: 0 success, 1 the fit or the output failed, 2 bad options or
 // bad input (the message is on stderr, stdout stays empty).
@@ -7,6 +7,7 @@
 #include <exception>
 #include <new>
 
+#include "app/check_command.hpp"
 #include "app/fit_command.hpp"
 #include "app/home_command.hpp"
 #include "app/jog_command.hpp"
@@ -38,6 +39,8 @@ int main(int argc, char** argv) {
     sim->set_help_flag();
     RunOptions run_opts;
     CLI::App* run = add_run_command(app, run_opts);
+    CheckOptions check_opts;
+    CLI::App* check = add_check_command(app, check_opts, true);
     HomeOptions home_opts;
     CLI::App* home = add_home_command(app, home_opts);
     JogOptions jog_opts;
@@ -58,6 +61,7 @@ int main(int argc, char** argv) {
     if (plan->parsed()) return run_plan(plan_opts);
     if (weld->parsed()) return run_weld(weld_opts);
     if (run->parsed()) return run_run(run_opts);
+    if (check->parsed()) return run_check(check_opts, "kerf", kerf::machine::check_lines);
     if (home->parsed()) return home_job(home_opts, "kerf", kerf::machine::check_lines, kerf::machine::open_lines);
     if (jog->parsed()) return jog_job(jog_opts, "kerf", kerf::machine::check_lines, kerf::machine::open_lines);
     if (touch->parsed())

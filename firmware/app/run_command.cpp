@@ -4,12 +4,12 @@
 #include <memory>
 #include <string>
 
+#include "app/job_input.hpp"
 #include "control/fit_paths.hpp"
-#include "control/machine_config.hpp"
 #include "control/program_job.hpp"
-#include "job/gcode_program.hpp"
+#include "control/soft_limits.hpp"
 #include "io/options.hpp"
-#include "job/fit_job.hpp"
+#include "job/machine_state.hpp"
 #include "machine/homing.hpp"
 #include "machine/machine_factory.hpp"
 #include "machine/machine_run.hpp"
@@ -38,37 +38,30 @@ int run_job(const RunOptions& opts, const char* who, RunCheck check, LinesOpener
     return kExitFailure;
   }
   if (opts.resume && opts.journal.empty()) return io::usage_error("--resume: needs --journal FILE");
-  io::PointFile in;
-  job::GcodeProgram prog;
+  JobInput in;
+  const std::string says = std::string(who) + ": run";
+  if (const int rc = read_and_fit(cfg, opts.job, true, says.c_str(), in); rc != 0) return rc;
+  control::FittedJob& fitted = in.fitted;
+  // Before anything moves: the whole job inside the table. Where the machine
+  // stands is not known before the link is up, so the first travel is checked
+  // from the first pierce point on (a machine inside the table stays inside).
+  if (!control::fully_limited(cfg.machine))
+    std::fprintf(stderr, "%s: %s: machine.axis: x and y need min and max (soft limits): the job is not checked "
+                         "against the table\n", says.c_str(), cfg.file.c_str());
+  if (!control::check_soft_limits(fitted, in.source(), control::soft_limits_of(cfg.machine), nullptr, error)) {
+    std::fprintf(stderr, "%s\n", error.c_str());
+    return kExitUsage;
+  }
+  // A bench has no torch: every path runs as a dry run (no pierce, no wait
+  // for arc-OK), so no safety input is ever stood in for in software. So
+  // does --dry-run, with the program's outputs (gas) held off too.
+  if (cfg.bench.enabled || opts.dry_run) control::hold_outputs_off(fitted.job, opts.dry_run);
+  // Before anything moves: where the machine is must be known.
   job::MachineState state;
-  const bool gcode = job::is_gcode_path(opts.job);
   if (!cfg.machine.state.empty() && !job::load_machine_state(cfg.machine.state, state, error)) {
     std::fprintf(stderr, "%s: run: machine.state: %s\n", who, error.c_str());
     return kExitUsage;
   }
-  if (gcode) {
-    if (!job::read_gcode_program(opts.job, config::interp_settings(cfg, true), state, prog, error) ||
-        !control::machine_can_run(prog, control::machine_io(cfg), error)) {
-      std::fprintf(stderr, "%s\n", error.c_str());
-      return kExitUsage;
-    }
-    for (const std::string& n : prog.interp.notes) std::fprintf(stderr, "%s: run: %s\n", who, n.c_str());
-  } else if (!job::read_job(opts.job, cfg.fit.criterion, in)) {
-    return kExitUsage;
-  }
-  control::FittedJob fitted;
-  if (const int rc = gcode ? control::fit_program_or_say(prog, cfg.fit.criterion, cfg.fit.tol, cfg.cut.feed / 60.0,
-                                                         cfg.machine.max_feed / 60.0, fitted, cfg.fit.numeric,
-                                                         &cfg.cut.rules)
-                           : control::fit_paths_or_say(in, cfg.fit.criterion, cfg.fit.tol, cfg.cut.feed / 60.0, fitted,
-                                                       cfg.fit.numeric, &cfg.cut.rules);
-      rc != 0)
-    return rc;
-  // A bench has no torch: every path runs as a dry run (no pierce, no wait
-  // for arc-OK), so no safety input is ever stood in for in software.
-  if (cfg.bench.enabled)
-    for (control::CutPath& p : fitted.job.paths) p.torch = false;
-  // Before anything moves: where the machine is must be known.
   if (!machine::check_homed(cfg, state, opts.assume_homed, error)) {
     std::fprintf(stderr, "%s: run: %s\n", who, error.c_str());
     return kExitFailure;
@@ -89,12 +82,12 @@ int run_job(const RunOptions& opts, const char* who, RunCheck check, LinesOpener
   control::ResumePoint from;
   if (!control::open_journal(opts.journal, opts.resume, fitted.job, journal, from)) return kExitUsage;
   const int rc = machine::run_on_machine(fitted.job, cfg, *link, *gpio, journal.get(), from, opts.resume, opts.report,
-                                         opts.reset, gcode ? &prog : nullptr, &fitted.cut_rules,
+                                         opts.reset, in.gcode ? &in.prog : nullptr, &fitted.cut_rules, opts.dry_run,
                                          opts.assume_homed ? "assumed (--assume-homed)" : "kerf home");
   // The offsets the program set are kept once it has run to its end (a
   // stopped run leaves the machine state as it was).
-  if (gcode && rc == 0 && !cfg.machine.state.empty() &&
-      !job::save_machine_state(cfg.machine.state, prog.interp.state, error)) {
+  if (in.gcode && rc == 0 && !cfg.machine.state.empty() &&
+      !job::save_machine_state(cfg.machine.state, in.prog.interp.state, error)) {
     std::fprintf(stderr, "%s: run: machine.state: %s\n", who, error.c_str());
     return kExitFailure;
   }

@@ -19,6 +19,7 @@ CLI::App* add_run_command(CLI::App& app, RunOptions& o) {
               "The machine has no home switches ([machine] home_switches = false): the operator confirms the "
               "position at start-up; written into the report. Otherwise `kerf home` must have homed every axis");
   add_report_option(r, o.report);
+  add_dry_run_option(r, o.dry_run);
   add_job_file(r, "job", o.job)->type_name("JOB")->required();
   return r;
 }
@@ -26,6 +27,12 @@ CLI::App* add_run_command(CLI::App& app, RunOptions& o) {
 void add_journal_options(CLI::App* command, std::string& journal, bool& resume) {
   command->add_option("--journal", journal, "Progress journal: every completed segment, synced")->type_name("FILE");
   command->add_flag("--resume", resume, "Finish the job the journal belongs to, from where it stopped");
+}
+
+void add_dry_run_option(CLI::App* command, bool& dry_run) {
+  command->add_flag("--dry-run", dry_run,
+                    "Run the job with the torch and gas outputs held off: no pierce, no arc-OK wait (the summary "
+                    "and the report say dry run)");
 }
 
 void add_report_option(CLI::App* command, std::string& report) {

@@ -8,6 +8,7 @@
 #include <exception>
 #include <new>
 
+#include "app/check_command.hpp"
 #include "app/home_command.hpp"
 #include "app/jog_command.hpp"
 #include "app/run_options.hpp"
@@ -37,6 +38,11 @@ int main(int argc, char** argv) {
     run->description(
         "kerf run with scripted lines (E-stop released, arc-OK following the torch) against the bench's simulated "
         "board or drives: Modbus TCP on a loopback address, RTU on /dev/pts/N, CAN on vcanN");
+    CheckOptions check_opts;
+    CLI::App* check = add_check_command(app, check_opts, false);
+    check->description("Check a job before `kerf-sim sim` runs it, moving nothing: segments, pierces, the time it "
+                       "will take, its extents against the soft limits (travel from [sim] start), and what it would "
+                       "refuse (exit 2 then)");
     HomeOptions home_opts;
     CLI::App* home = add_home_command(app, home_opts);
     home->description("kerf home with scripted lines against the bench's simulated board or drives "
@@ -55,6 +61,7 @@ int main(int argc, char** argv) {
       return kExitUsage;
     }
     if (run->parsed()) return run_sim_run(run_opts);
+    if (check->parsed()) return run_check(check_opts, "kerf-sim", nullptr);
     if (home->parsed()) return run_sim_home(home_opts);
     if (app.got_subcommand("jog")) return run_sim_jog(jog_opts);
     if (app.got_subcommand("touch-off")) return run_sim_touch_off(touch_opts);

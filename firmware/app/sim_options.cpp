@@ -34,6 +34,7 @@ CLI::App* add_sim_command(CLI::App& app, simulated::SimOptions& o) {
   s->add_option("--gpio-script", o.gpio_script, "Timed GPIO events (see sim/README.md)")->type_name("FILE");
   add_journal_options(s, o.journal, o.resume);
   add_report_option(s, o.report);
+  add_dry_run_option(s, o.dry_run);
   s->add_option("--trace", o.trace, "Write the executed trace (CSV) here")->type_name("T.csv");
   s->add_option("--plot", o.plot, "Write an SVG plot of the run here")->type_name("P.svg");
   s->add_option("--speed", o.speed, "Simulated s per wall s; 0 = as fast as possible")

@@ -24,6 +24,11 @@ struct Axis {
   // z only (z moves run alone, at rest in XY): mm/min and mm/s^2, > 0;
   // absent: machine.rapid_feed and machine.accel.
   double feed = 0, accel = 0;
+  // Soft limits, mm in machine coordinates (min < max); absent: unlimited on
+  // that side. A real table sets both: jobs are checked against them before
+  // the torch fires (control/soft_limits.hpp), and kerf run warns without them.
+  bool has_min = false, has_max = false;
+  double min = 0, max = 0;
   // Homing (keys home_* on [[machine.axis]]; the board's own switch input).
   // Speeds mm/min, lengths mm; dir -1: the switch lies towards negative.
   int home_dir = -1;

@@ -54,6 +54,12 @@ void read_axes(TableReader& r, Machine& m) {
       a.positive("feed", axis.feed);
       a.positive("accel", axis.accel);
     }
+    if (i < 2) {  // x's and y's soft limits
+      axis.has_min = a.number("min", axis.min);
+      axis.has_max = a.number("max", axis.max);
+      if (axis.has_min && axis.has_max && !(axis.min < axis.max))
+        a.problem("max", "must be > min (" + format_number(axis.min) + "), got " + format_number(axis.max));
+    }
     a.finish();
     out.push_back(axis);
   }

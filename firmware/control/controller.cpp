@@ -39,6 +39,7 @@ std::string board_fault_text(std::uint16_t bits) {
   if (bits & hal::kFaultBadSegment) s += " bad-segment";
   if (bits & hal::kFaultStarved) s += " starved";
   if (bits & hal::kFaultDrive) s += " drive-fault";
+  if (bits & hal::kFaultSoftLimit) s += " soft-limit (a segment outside the axes' min/max)";
   char hex[24];
   std::snprintf(hex, sizeof hex, " (bits 0x%04x)", static_cast<unsigned>(bits));
   return s + hex;

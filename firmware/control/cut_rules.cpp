@@ -101,12 +101,13 @@ std::vector<CutRuleNote> apply_cut_rules(FittedJob& fitted, const config::CutRul
     if (hole && rules.overcut > 0) {  // the path again from its start, for `overcut` mm
       double left = rules.overcut;
       Vec2<double> from = path.start;
+      const std::size_t first_piece = pieces.size() - n;  // the path's own pieces: their source points
       for (std::size_t k = 0; k < n && left > 0; ++k) {
         const hal::SegmentCommand s = path.segments[k];
         const double len = seg_length(from, s);
         const hal::SegmentCommand piece = len <= left ? s : head_of(from, s, left);
         path.segments.push_back(piece);
-        fit::Piece<double> fp;
+        fit::Piece<double> fp = pieces[first_piece + k];
         fp.segment = piece.kind == SegmentKind::arc
                          ? Segment<double>::arc(from, piece.end, piece.centre, piece.dir)
                          : Segment<double>::line(from, piece.end);

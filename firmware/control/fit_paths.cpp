@@ -67,6 +67,7 @@ bool fit_paths(const io::PointFile& in, job::Criterion criterion, double tol, do
     }
     if (path.segments.empty()) continue;  // the whole path is shorter than the grid
     out.job.paths.push_back(std::move(path));
+    out.path_point.push_back(b);
   }
   if (out.job.paths.empty()) {
     error = "every path is shorter than the link's resolution (0.001 mm)";

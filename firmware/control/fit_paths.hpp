@@ -24,6 +24,7 @@ struct FittedJob {
   control::Job job;
   std::vector<fit::Piece<double>> pieces;  // in job order
   std::vector<std::size_t> piece_path;     // the path of each piece
+  std::vector<std::size_t> path_point;     // each path's first point in the source file's points (its lines)
   std::size_t lines_for_arcs = 0;          // arcs too small for the link's grid, run as chords
   std::vector<CutRuleNote> cut_rules;      // where the cutting rules applied (for the report)
 };

@@ -1,6 +1,7 @@
 #include "control/job.hpp"
 
 #include <cstring>
+#include <vector>
 
 #include "kerf/core/assert.hpp"
 
@@ -97,6 +98,17 @@ ResumePoint resume_point(const Job& job, const JournalState& state) {
   r.from = job.segment_start(r.first);
   if (state.has_cut_to && state.cut_to.segment == r.first) r.from = state.cut_to.at;
   return r;
+}
+
+void hold_outputs_off(Job& job, bool outputs_too) {
+  for (CutPath& p : job.paths) {
+    p.torch = false;
+    for (hal::SegmentCommand& c : p.segments) c.torch = false;
+  }
+  if (!outputs_too) return;
+  std::erase_if(job.actions, [](const JobAction& a) {
+    return (a.kind == job::CanonKind::digital_out || a.kind == job::CanonKind::analog_out) && a.value != 0;
+  });
 }
 
 }  // namespace kerf::control

@@ -53,6 +53,10 @@ struct ResumePoint {
   bool done = false;  // nothing left to cut
 };
 
+// A dry run: every path with the torch off (no pierce, no arc-OK wait);
+// outputs_too: the program's outputs that would switch on (gas) are dropped.
+void hold_outputs_off(Job& job, bool outputs_too);
+
 // From a journal's state: the first segment not known complete, and the
 // point up to which it was already cut.
 ResumePoint resume_point(const Job& job, const JournalState& state);

@@ -95,6 +95,7 @@ int fit_program_or_say(const job::GcodeProgram& prog, job::Criterion criterion, 
     }
     out.lines_for_arcs += f.lines_for_arcs;
     out.job.paths.push_back(std::move(path));
+    out.path_point.push_back(b);
   }
   kept_before[begins.size()] = out.job.paths.size();
   if (!out.job.paths.empty()) out.job.paths.back().after.insert(out.job.paths.back().after.end(), carry.begin(), carry.end());

@@ -123,6 +123,7 @@ std::string format_run_json(const RunSummary& s) {
     std::snprintf(z, sizeof z, "  \"z_moves\": %zu,\n  \"final_z\": %.6f,\n", s.z_moves, s.final_z);
     out.insert(out.find("  \"segments_planned\":"), z);
   }
+  out.insert(out.find("  \"link\":"), std::string("  \"dry_run_option\": ") + (s.dry_run_option ? "true" : "false") + ",\n");
   char ferror[160];
   std::snprintf(ferror, sizeof ferror, "{\"max_mm\": %.6f, \"at_fault_mm\": %.6f, \"limit_at_fault_mm\": %.6f}",
                 s.max_ferror_mm, s.ferror_at_fault_mm, s.ferror_limit_mm);
@@ -165,6 +166,7 @@ std::string format_run_summary(const RunSummary& s) {
       program += "; " + std::to_string(s.dwells) + " dwells, " + std::to_string(s.pauses) + " pauses, " +
                  std::to_string(s.actions) + " program actions";
   }
+  if (s.dry_run_option) program += "; DRY RUN (--dry-run): torch and gas outputs held off";
   std::string out = std::string(head) + tail + program + "; torch " + (s.torch_on ? "ON" : "off") +
                     (s.reason.empty() ? "" : "; stopped: " + s.reason) + "\n";
   if (!s.cut_rules.empty()) {  // path N rule feed %, ...

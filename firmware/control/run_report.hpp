@@ -51,6 +51,7 @@ struct RunSummary {
   // A G-code program's (control/program_job.hpp describe_program).
   bool gcode = false;
   bool dry_run = false;     // no torch word: run with the torch off
+  bool dry_run_option = false;  // --dry-run: torch and gas outputs held off
   std::vector<ConstructUse> constructs;
   std::vector<std::string> notes;
   std::size_t dwells = 0, pauses = 0, actions = 0;  // program actions run

@@ -82,6 +82,7 @@ void legend(std::string& out, const RunPlot& plot) {
     item("<rect class=\"pause\" x=\"6\" y=\"-4\" width=\"8\" height=\"8\" transform=\"rotate(45 10 0)\"/>",
          "pause");
   }
+  if (plot.table) item("<rect class=\"table\" x=\"0\" y=\"-6\" width=\"20\" height=\"12\"/>", "table (soft limits)");
   item("<rect class=\"on\" x=\"0\" y=\"-6\" width=\"20\" height=\"12\"/>", "torch on (speed)");
 }
 
@@ -108,11 +109,22 @@ double xy_panel(std::string& out, const RunPlot& plot, const std::vector<Run>& r
     if (s.is_arc()) add_arc_points(box, s);
   }
   for (const TraceSample& t : plot.trace) box.add(t.pos);
+  if (plot.table) {
+    box.add(plot.table_lo);
+    box.add(plot.table_hi);
+  }
   const XyPanel panel = xy_panel_frame(out, box, 0.0, kLeft, kTopY, kPlotWidth, kMaxTopHeight);
   const XyMap& m = panel.map;
   const double scale = m.scale;
   const double height = panel.height;
 
+  if (plot.table) {
+    out += "<rect class=\"table\"";
+    attrs(out, {{"x", m.px(plot.table_lo.x)}, {"y", m.py(plot.table_hi.y)},
+                {"width", (plot.table_hi.x - plot.table_lo.x) * scale},
+                {"height", (plot.table_hi.y - plot.table_lo.y) * scale}});
+    out += "/>\n";
+  }
   // The band under the pieces, when it is wide enough to see.
   const double band_px = 2 * plot.tol * scale;
   std::vector<std::string> ds;
@@ -242,7 +254,8 @@ std::string format_run_svg(const RunPlot& plot) {
       ".on{fill:#ffe0b0;stroke:none}"
       ".dwell{fill:#1f77b4;fill-opacity:0.7;stroke:#124}"
       ".pause{fill:#ff9f1c;fill-opacity:0.8;stroke:#840}"
-      ".speed{fill:none;stroke:#1f5fb4;stroke-width:1}",
+      ".speed{fill:none;stroke:#1f5fb4;stroke-width:1}"
+      ".table{fill:none;stroke:#2a2;stroke-width:1.5}",
       plot.title, [&](std::string& out) { legend(out, plot); },
       [&](std::string& body) { return xy_panel(body, plot, runs); },
       [&](std::string& body, double top) { speed_panel(body, plot.trace, runs, top); });

@@ -6,7 +6,8 @@
 // commands, lines as `L`; colours cycle a palette), the band's half-width
 // `tol` in the legend, the executed trace as polylines split into torch-on
 // runs (class "cut", solid, dark) and torch-off runs (class "rapid", dashed,
-// grey), and each pierce (torch off -> on) as a red ring.
+// grey), each pierce (torch off -> on) as a red ring, and the table's
+// outline (the soft limits) when given.
 // Bottom panel: the speed over time, from consecutive trace samples, in
 // mm/min, with the torch-on intervals shaded.
 //
@@ -53,6 +54,8 @@ struct RunPlot {
   double tol = 0;                                // band half-width, mm
   std::vector<TraceSample> trace;
   std::vector<PlotMark> marks;                   // dwells and pauses
+  bool table = false;                            // the table's outline (the soft limits; class "table")
+  Vec2<double> table_lo{}, table_hi{};
   std::string title;
 };
 

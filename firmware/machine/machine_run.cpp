@@ -28,7 +28,7 @@ extern "C" void on_signal(int sig) { g_signal = sig; }
 int run_on_machine(const Job& job, const config::Config& cfg, hal::SegmentLink& link, hal::Gpio& gpio,
                    Journal* journal, const ResumePoint& from, bool resumed, const std::string& report,
                    bool reset_at_start, const job::GcodeProgram* program,
-                   const std::vector<CutRuleNote>* cut_rules, const char* homed) {
+                   const std::vector<CutRuleNote>* cut_rules, bool dry_run, const char* homed) {
   using io::kExitFailure;
   using io::kExitOk;
   const hal::RtSetup rt = hal::rt_setup(cfg.rt.priority, cfg.rt.lock_memory);
@@ -74,6 +74,7 @@ int run_on_machine(const Job& job, const config::Config& cfg, hal::SegmentLink& 
   sum.simulated = false;
   if (program != nullptr) control::describe_program(*program, sum);
   if (cut_rules != nullptr) sum.cut_rules = *cut_rules;
+  sum.dry_run_option = dry_run;
   sum.torch_on = ctl.torch();
   sum.duration_s = now;  // on the loop's clock: overrun cycles are skipped, not counted
   sum.rt = loop.stats().describe();

@@ -32,6 +32,7 @@ int run_on_machine(const control::Job& job, const config::Config& cfg, hal::Segm
                    bool reset_at_start = false,
                    const job::GcodeProgram* program = nullptr,
                    const std::vector<control::CutRuleNote>* cut_rules = nullptr,  // for the report
+                   bool dry_run = false,   // --dry-run: the report and the summary say so
                    const char* homed = nullptr);  // the report's "homed": how the position is known
 
 }  // namespace kerf::machine

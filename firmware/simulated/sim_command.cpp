@@ -18,6 +18,7 @@
 #include "simulated/can_sim_machine.hpp"
 #include "control/machine_config.hpp"
 #include "control/run_report.hpp"
+#include "control/soft_limits.hpp"
 #include "simulated/sim_machine.hpp"
 #include "io/output_file.hpp"
 #include "io/point_file.hpp"
@@ -225,6 +226,14 @@ int run_sim(const SimOptions& given) {
                            : control::fit_paths_or_say(in, *criterion, tol, feed / 60.0, fitted, *numeric, &cfg.cut.rules);
       rc != 0)
     return rc;
+  // The whole job inside the table before anything moves, from where the
+  // simulated machine starts (below).
+  const Vec2<double> start = gcode ? Vec2<double>{cfg.sim.start[0], cfg.sim.start[1]} : fitted.job.paths.front().start;
+  if (!control::check_soft_limits(fitted, in, control::soft_limits_of(cfg.machine), &start, error)) {
+    std::fprintf(stderr, "%s\n", error.c_str());
+    return kExitUsage;
+  }
+  if (opts.dry_run) control::hold_outputs_off(fitted.job, true);
 
   std::unique_ptr<control::Journal> journal;
   control::ResumePoint from;
@@ -265,7 +274,7 @@ int run_sim(const SimOptions& given) {
                                                                              cfg.cut.arc_ok_timeout + cfg.cut.pierce_delay + 2.0)));
   // The axes power up at the job's first pierce point, as if homed there; a
   // resumed run starts there too and travels to its resume point.
-  mcfg.start = gcode ? Vec2<double>{cfg.sim.start[0], cfg.sim.start[1]} : fitted.job.paths.front().start;
+  mcfg.start = start;
 
   SimMachineResult res;
   if (can) {
@@ -297,6 +306,7 @@ int run_sim(const SimOptions& given) {
   sum.rt_histogram = res.rt_histogram;
   sum.cut_rules = fitted.cut_rules;
   if (gcode) control::describe_program(prog, sum);
+  sum.dry_run_option = opts.dry_run;
   if (!journal) {  // no journal: count repeats in this run's own record
     const std::set<std::int64_t> seen(res.executed.begin(), res.executed.end());
     sum.executed_total = res.executed.size();

@@ -19,6 +19,7 @@ struct SimOptions {
   std::string gpio_script;          // timed GPIO events (sim/README.md)
   std::string journal;
   bool resume = false;
+  bool dry_run = false;             // torch and gas outputs held off
   std::string report;
   std::string trace;
   std::string plot;

@@ -59,6 +59,14 @@ const BadCase kCases[] = {
      TCP "[[machine.axis]]\nname = \"x\"\ncounts_per_mm = 10\nfeed = 100\n[[machine.axis]]\nname = \"y\"\n"
          "counts_per_mm = 10\n",
      "kerf.toml:6: machine.axis[0].feed: unknown key"},
+    {"axis_max_not_above_min",
+     TCP "[[machine.axis]]\nname = \"x\"\ncounts_per_mm = 10\nmin = 5\nmax = 5\n[[machine.axis]]\nname = \"y\"\n"
+         "counts_per_mm = 10\n",
+     "kerf.toml:7: machine.axis[0].max: must be > min (5), got 5"},
+    {"axis_min_string",
+     TCP "[[machine.axis]]\nname = \"x\"\ncounts_per_mm = 10\nmin = \"left\"\n[[machine.axis]]\nname = \"y\"\n"
+         "counts_per_mm = 10\n",
+     "kerf.toml:6: machine.axis[0].min: expected a number, got a string"},
     {"axis_not_tables", TCP "[machine]\naxis = [1, 2]\n",
      "kerf.toml:4: machine.axis[0]: expected a table, got an integer"},
     {"rapid_above_max", TCP "[machine]\nmax_feed = 8000\nrapid_feed = 9000\n",

@@ -20,6 +20,11 @@ TEST(ConfigFiles, PlasmaTableExampleLoads) {
   EXPECT_EQ(c.machine.axes[0].name, "x");
   EXPECT_EQ(c.machine.axes[1].name, "y");
   EXPECT_EQ(c.machine.axes[1].counts_per_mm, 200);
+  // The soft limits: a real table sets them.
+  EXPECT_TRUE(c.machine.axes[0].has_min && c.machine.axes[0].has_max);
+  EXPECT_EQ(c.machine.axes[0].max, 3000);
+  EXPECT_EQ(c.machine.axes[1].max, 1500);
+  EXPECT_EQ(c.machine.axes[1].min, 0);
   EXPECT_EQ(c.machine.max_feed, 12000);
   EXPECT_EQ(c.machine.rapid_feed, 10000);
   EXPECT_EQ(c.machine.accel, 1500);  // written as an integer

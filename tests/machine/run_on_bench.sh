@@ -10,16 +10,9 @@
 #   run_on_bench.sh KERF_SIM BOARD_SIM JOB SIM_TOML WORKDIR
 set -euo pipefail
 kerf=$1 board=$2 job=$3 sim_toml=$4 dir=$5
-mkdir -p "$dir"
-rm -f "$dir"/*
-
-coproc BOARD { exec "$board" --port 0 --watchdog 0.5 --start 7,4 --home-switch-x -1 --home-switch-y -1.5; }
-trap 'kill "$BOARD_PID" 2>/dev/null || true' EXIT
-read -r -t 10 line <&"${BOARD[0]}"
-port=${line##*:}
-echo "$line"
+source "$(dirname "$0")/board_sim.sh"
 # The example simulator config, pointed at this board's port.
-sed -e "s/^port = .*/port = $port/" -e "s/^pierce_delay = .*/pierce_delay = 0.2/" "$sim_toml" >"$dir/bench.toml"
+start_bench "$board" "$sim_toml" "$dir" 0.2 bench.toml --start 7,4 --home-switch-x -1 --home-switch-y -1.5
 printf '\n[bench]\nenabled = true\n' >>"$dir/bench.toml"
 sed -i "s#^\[machine\]#[machine]\nstate = \"$dir/state\"#" "$dir/bench.toml"
 

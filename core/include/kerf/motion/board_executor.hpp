@@ -38,6 +38,7 @@
 #include "kerf/core/span.hpp"
 #include "kerf/motion/axis_move.hpp"
 #include "kerf/motion/board_protocol.hpp"
+#include "kerf/motion/soft_limits.hpp"
 
 namespace kerf::motion {
 
@@ -68,6 +69,9 @@ class BoardExecutor {
     z_.configure(limits);
     z_.reset(at);
   }
+  // A segment that leaves these is refused before it moves: a fault
+  // (kBoardFaultSoftLimit), as any refused segment (soft_limits.hpp).
+  void set_soft_limits(const SoftLimits<S>& limits) { limits_ = limits; }
 
   // One servo period. A caller whose drives follow the setpoint with a lag
   // passes wait_for_drives and calls drives_settled() once they hold it:
@@ -121,6 +125,7 @@ class BoardExecutor {
   bool reset_pending_ = false;  // fault_reset taken while braking: reset at rest
   Vec2<S> position_{};
   Vec2<S> tail_end_{};  // where the last segment given to the stage ends
+  SoftLimits<S> limits_{};  // default: unlimited
   std::uint32_t torch_bits_[kTorchWindow / 32] = {};
 };
 

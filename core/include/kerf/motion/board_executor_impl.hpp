@@ -107,6 +107,9 @@ void BoardExecutor<S, Motion>::hand_over() {
         fault(kBoardFaultBadSegment);
         return;
       }
+    } else if (!limits_.contains(segment_extent(tail_end_, seg))) {
+      fault(kBoardFaultSoftLimit);
+      return;
     } else if (!motion_.push(tail_end_, seg)) {
       fault(kBoardFaultBadSegment);
       return;

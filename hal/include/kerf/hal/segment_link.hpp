@@ -10,6 +10,7 @@
 #include <functional>
 
 #include "kerf/motion/board_protocol.hpp"
+#include "kerf/motion/soft_limits.hpp"
 
 namespace kerf::hal {
 
@@ -34,7 +35,8 @@ enum FaultBit : std::uint16_t {
   kFaultEmcy = 1u << 6,       // a drive sent an emergency message
   kFaultBusOff = 1u << 7,     // the CAN controller went bus-off
   kFaultSend = 1u << 8,       // a cyclic frame could not be queued
-  kFaultHoming = 1u << 9,     // homing failed: the switch never tripped within the search distance
+  kFaultSoftLimit = motion::kBoardFaultSoftLimit,  // a segment outside the soft limits (motion/soft_limits.hpp)
+  kFaultHoming = 1u << 10,    // homing failed: the switch never tripped within the search distance
 };
 
 // Homing of one axis, run by the board (Modbus) or the drive (CiA 402 mode 6):
