@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "control/soft_limits.hpp"
 #include "io/options.hpp"
 #include "machine/jog.hpp"
 #include "machine/machine_factory.hpp"
@@ -105,6 +106,8 @@ int jog_job(JogOptions opts, const char* who, RunCheck check, LinesOpener open_l
   Vec2<double> to = st.position;
   double& v = opts.axis == "x" ? to.x : to.y;
   v = opts.has_to ? opts.to : v + opts.distance;
+  if (machine::clamp_to_limits(to, control::soft_limits_of(s.cfg.machine)))
+    std::fprintf(stderr, "%s: jog: stops at the soft limit: %.3f %.3f\n", who, to.x, to.y);
   const double feed = std::min(s.cfg.machine.jog_speed, s.cfg.machine.rapid_feed) / 60.0;
   Vec2<double> at{};
   std::string error;

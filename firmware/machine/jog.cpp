@@ -1,5 +1,6 @@
 #include "machine/jog.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <thread>
@@ -63,6 +64,18 @@ bool jog_to(hal::SegmentLink& link, hal::Gpio* gpio, Vec2<double> to, double fee
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
+}
+
+bool clamp_to_limits(Vec2<double>& to, const motion::SoftLimits<double>& limits) {
+  bool clamped = false;
+  double* v[2] = {&to.x, &to.y};
+  for (int a = 0; a < 2; ++a) {
+    if (!limits.on[a]) continue;
+    const double c = std::clamp(*v[a], limits.min[a], limits.max[a]);
+    clamped = clamped || c != *v[a];
+    *v[a] = c;
+  }
+  return clamped;
 }
 
 void touch_off(job::MachineState& s, Vec2<double> machine) {

@@ -13,6 +13,7 @@
 #include "kerf/geom/vec2.hpp"
 #include "kerf/hal/gpio.hpp"
 #include "kerf/hal/segment_link.hpp"
+#include "kerf/motion/soft_limits.hpp"
 
 namespace kerf::machine {
 
@@ -21,6 +22,10 @@ namespace kerf::machine {
 // `at` is where the axes stopped.
 bool jog_to(hal::SegmentLink& link, hal::Gpio* gpio, Vec2<double> to, double feed, Vec2<double>& at,
             std::string& error);
+
+// A jog stops at the soft limits: `to` is brought inside them. True when it
+// was outside (the jog then ends at the limit).
+bool clamp_to_limits(Vec2<double>& to, const motion::SoftLimits<double>& limits);
 
 // G10 L20 on the active system: the offset that makes `machine` read X0 Y0
 // (the G92 offset, when applied, counts as G10 L20 counts it).

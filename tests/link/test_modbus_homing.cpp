@@ -263,6 +263,27 @@ TEST(Jog, MovesToTheTargetThenTouchOffMakesItX0Y0) {
   EXPECT_DOUBLE_EQ(state.g5x[0][0], 0.0);  // G54 untouched
 }
 
+TEST(Jog, StopsAtTheSoftLimit) {
+  HomeRig rig(Wire::tcp, true);
+  rig.board->start_servo(0.0);
+  job::MachineState state;
+  std::string error;
+  ASSERT_TRUE(machine::home_axes(session_config(), 3u, *rig.link, nullptr, state, error, nullptr)) << error;
+  motion::SoftLimits<double> lim;
+  lim.on[0] = true;
+  lim.min[0] = 0;
+  lim.max[0] = 50;  // y unlimited
+  Vec2<double> to{5.0 + 1000.0, 70.0};  // 1000 mm on from x = 5
+  EXPECT_TRUE(machine::clamp_to_limits(to, lim));
+  EXPECT_EQ(to.x, 50.0);
+  EXPECT_EQ(to.y, 70.0);
+  Vec2<double> at{};
+  ASSERT_TRUE(machine::jog_to(*rig.link, nullptr, to, 50.0, at, error)) << error;
+  EXPECT_NEAR(at.x, 50.0, 1e-9);  // at the limit, not past it
+  Vec2<double> inside{20.0, 1.0};
+  EXPECT_FALSE(machine::clamp_to_limits(inside, lim));
+}
+
 TEST(Jog, TheEStopStopsItOnThePath) {
   HomeRig rig(Wire::tcp, true, true);
   rig.board->start_servo(1.0);
