@@ -16,6 +16,7 @@
 
 #include "kerf/hal/segment_link.hpp"
 #include "kerf/motion/board_executor.hpp"
+#include "kerf/motion/soft_limits.hpp"
 #include "kerf/sim/segment_executor.hpp"
 
 namespace kerf::sim {
@@ -36,6 +37,7 @@ struct BoardConfig {
   std::size_t trace_reserve = 0;  // samples to reserve up front
   motion::AxisLimits<double> z{}; // the z axis (period 0: none; z moves are refused)
   double start_z = 0;             // mm
+  motion::SoftLimits<double> soft_limits{};  // the executor refuses a segment outside (off: unlimited)
 };
 
 using Accept = motion::BoardAccept;
