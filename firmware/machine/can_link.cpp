@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "kerf/hal/can/socket_can_bus.hpp"
+#include "control/soft_limits.hpp"
 #include "kerf/hal/canopen.hpp"
 
 namespace kerf::machine {
@@ -55,6 +56,7 @@ void read_can_link_options(const config::Config& cfg, CanLinkOptions& o) {
   o.vad = cfg.cut.rules.vad / 100.0;
   o.z = config::z_limits(cfg.machine);
   if (cfg.machine.axes.size() > 2) o.z_counts_per_mm = cfg.machine.axes[2].counts_per_mm;
+  o.soft_limits = control::soft_limits_of(cfg.machine);
 }
 
 std::uint8_t can_node_of(const CanLinkOptions& o, std::size_t axis) {
@@ -81,6 +83,7 @@ bool CanMasterLink::start(hal::CanBus& bus, const CanLinkOptions& o, bool wall_c
   c.vad = o.vad;
   c.corner_angle_rad = o.corner_angle_rad;
   c.queue_slots = o.queue_slots;
+  c.soft_limits = o.soft_limits;
   if (o.axes > 2) {  // z: the third node
     c.z = o.z;
     c.z_counts_per_mm = o.z_counts_per_mm;

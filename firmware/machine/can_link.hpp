@@ -30,6 +30,7 @@ struct CanLinkOptions {
   std::size_t queue_slots = 32;
   motion::AxisLimits<double> z{};  // the z axis (config::z_limits): the third drive runs the z moves
   double z_counts_per_mm = 1000.0;
+  motion::SoftLimits<double> soft_limits{};  // the executor's second check ([[machine.axis]] min/max)
 };
 
 // The options a machine configuration gives: axes and their counts/mm,

@@ -81,6 +81,7 @@ std::unique_ptr<SimPlant> make_modbus_plant(const SimMachineConfig& cfg, double 
   bc.servo_period_s = cfg.motion.servo_period_s;
   bc.start = cfg.start;
   bc.z = cfg.z;
+  bc.soft_limits = cfg.soft_limits;
   auto plant = std::make_unique<ModbusPlant>(bc, std::move(exec));
   if (!plant->open(cfg, link_watchdog_s, error)) return nullptr;
   return plant;

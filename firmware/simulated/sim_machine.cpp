@@ -5,6 +5,7 @@
 #include <cmath>
 #include <thread>
 
+#include "control/soft_limits.hpp"
 #include "kerf/hal/rt_loop.hpp"
 #include "machine/machine_factory.hpp"
 #include "simulated/sim_plant.hpp"
@@ -37,6 +38,7 @@ SimMachineConfig sim_machine_config(const config::Config& cfg) {
   m.motion.counts_per_mm = cfg.machine.axes.empty() ? 1000.0 : cfg.machine.axes.front().counts_per_mm;
   m.cycle_s = cfg.machine.cycle;
   m.z = config::z_limits(cfg.machine);
+  m.soft_limits = control::soft_limits_of(cfg.machine);
   return m;
 }
 

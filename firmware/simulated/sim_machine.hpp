@@ -47,6 +47,7 @@ struct SimMachineConfig {
   double speed = 0.0;           // simulated s per wall s; 0 = as fast as possible
   Vec2<double> start{};         // where the axes are at power-up
   motion::AxisLimits<double> z{};  // the z axis (config::z_limits); period 0: none
+  motion::SoftLimits<double> soft_limits{};  // the board's own check (control::soft_limits_of)
   std::vector<BoardFault> faults;
   double max_sim_s = 600.0;     // give up (a stuck run, a hold never released) after this
 };

@@ -12,6 +12,7 @@ MotionBoard::MotionBoard(const BoardConfig& cfg, std::unique_ptr<SegmentExecutor
       ring_(cfg.capacity),
       exec_(*motion_, {ring_.data(), ring_.size()}, cfg.start) {
   if (cfg.z.configured()) exec_.configure_z(cfg.z, cfg.start_z);
+  exec_.set_soft_limits(cfg.soft_limits);
   trace_.reserve(cfg.trace_reserve);
   trace_.push_back({0.0, cfg.start, 0, false, true, cfg.start_z});
 }

@@ -31,6 +31,10 @@ int main(int argc, char** argv) {
   app.add_option("--z-feed", z_feed, "A z axis: its top feed, mm/min (0: no z axis, z moves are refused)")
       ->check(CLI::NonNegativeNumber);
   app.add_option("--z-accel", z_accel, "The z axis's acceleration, mm/s^2")->check(CLI::PositiveNumber);
+  std::vector<double> x_limits, y_limits;  // the executor's soft limits, min max (mm)
+  app.add_option("--x-limits", x_limits, "Soft limits of x: MIN MAX (mm); the board refuses a segment outside")
+      ->expected(2);
+  app.add_option("--y-limits", y_limits, "Soft limits of y: MIN MAX (mm)")->expected(2);
   std::vector<double> start = {0.0, 0.0};
   double switch_x = 0, switch_y = 0;
   app.add_option("--start", start, "Where the axes power up, mm (unhomed: the board's own frame)")
@@ -63,6 +67,17 @@ int main(int argc, char** argv) {
   bc.has_home_switch[1] = sy->count() > 0;
   bc.home_switch_at[1] = switch_y;
   if (z_feed > 0) bc.z = {bc.servo_period_s, z_feed / 60.0, z_accel};
+  const std::vector<double>* limits[2] = {&x_limits, &y_limits};
+  for (int a = 0; a < 2; ++a) {
+    if (limits[a]->empty()) continue;
+    if (!((*limits[a])[0] < (*limits[a])[1])) {
+      std::fprintf(stderr, "kerf-board-sim: --%c-limits: MIN must be below MAX\n", a == 0 ? 'x' : 'y');
+      return 2;
+    }
+    bc.soft_limits.on[a] = true;
+    bc.soft_limits.min[a] = (*limits[a])[0];
+    bc.soft_limits.max[a] = (*limits[a])[1];
+  }
   sim::MotionBoard board(bc, std::move(exec));
   sim::ServerConfig sc;
   sc.transport = rtu ? sim::ServerConfig::Transport::rtu : sim::ServerConfig::Transport::tcp;

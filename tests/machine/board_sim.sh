@@ -1,17 +1,15 @@
 # Sourced by the scripts here. start_bench BOARD_SIM SIM_TOML DIR PIERCE_DELAY
-# CONFIG [BOARD_ARGS...]: empties DIR, starts kerf-board-sim on a free loopback port (stopped
+# CONFIG: empties DIR, starts kerf-board-sim on a free loopback port (stopped
 # when the script exits) and writes DIR/CONFIG: SIM_TOML pointed at that port,
-# with this pierce delay.
+# with this pierce delay. Arguments after CONFIG go to kerf-board-sim.
 start_bench() {
   mkdir -p "$3"
   rm -f "$3"/*
-  local board=$1 toml=$2 dir=$3 delay=$4 config=$5
-  shift 5
-  coproc BOARD { exec "$board" --port 0 --watchdog 0.5 "$@"; }
+  coproc BOARD { exec "$1" --port 0 --watchdog 0.5 "${@:6}"; }
   trap 'kill "$BOARD_PID" 2>/dev/null || true' EXIT
   local line port
   read -r -t 10 line <&"${BOARD[0]}"
   port=${line##*:}
   echo "$line"
-  sed -e "s/^port = .*/port = $port/" -e "s/^pierce_delay = .*/pierce_delay = $delay/" "$toml" >"$dir/$config"
+  sed -e "s/^port = .*/port = $port/" -e "s/^pierce_delay = .*/pierce_delay = $4/" "$2" >"$3/$5"
 }

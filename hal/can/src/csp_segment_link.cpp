@@ -69,6 +69,7 @@ bool CspSegmentLink::configure(std::string& error) {
   actual_ = position_;
   for (auto& s : sent_) s = {static_cast<std::int32_t>(target_[0]), static_cast<std::int32_t>(target_[1])};
   exec_.emplace(motion_, Span<SegmentCommand>{ring_.data(), ring_.size()}, position_);
+  exec_->set_soft_limits(cfg_.soft_limits);
   if (has_z()) {
     cfg_.z.period = axes_.period_s();  // z steps with the SYNC
     exec_->configure_z(cfg_.z, static_cast<double>(axes_.axis(2).actual) / cfg_.z_counts_per_mm);

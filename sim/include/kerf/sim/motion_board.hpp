@@ -16,6 +16,7 @@
 
 #include "kerf/hal/segment_link.hpp"
 #include "kerf/motion/board_executor.hpp"
+#include "kerf/motion/soft_limits.hpp"
 #include "kerf/sim/board_homing.hpp"
 #include "kerf/sim/segment_executor.hpp"
 
@@ -37,6 +38,7 @@ struct BoardConfig {
   std::size_t trace_reserve = 0;  // samples to reserve up front
   motion::AxisLimits<double> z{}; // the z axis (period 0: none; z moves are refused)
   double start_z = 0;             // mm
+  motion::SoftLimits<double> soft_limits{};  // the executor refuses a segment outside (off: unlimited)
   // Home switches, in the board's power-up frame (mm); none: homing that
   // axis never finds a switch. The board powers up unhomed at `start`.
   double home_switch_at[2] = {0, 0};

@@ -30,6 +30,7 @@
 #include "kerf/hal/segment_link.hpp"
 #include "kerf/motion/board_executor.hpp"
 #include "kerf/motion/interpolator_motion.hpp"
+#include "kerf/motion/soft_limits.hpp"
 
 namespace kerf::hal {
 
@@ -43,6 +44,7 @@ struct CspConfig {
   // A z axis (axis 2): its limits and resolution; period 0 (the default): none.
   motion::AxisLimits<double> z{};
   double z_counts_per_mm = 1000.0;
+  motion::SoftLimits<double> soft_limits{};  // the executor refuses a segment outside (off: unlimited)
 };
 
 struct CspSample {
