@@ -19,6 +19,7 @@ struct Session {
   job::MachineState state;
   std::unique_ptr<hal::Gpio> gpio;
   std::unique_ptr<hal::SegmentLink> link;
+  hal::BoardStatus st;  // the board's status when the session opened
 };
 
 int open_session(const std::string& file, const char* who, const char* what, RunCheck check,
@@ -61,6 +62,10 @@ int open_session(const std::string& file, const char* who, const char* what, Run
     std::fprintf(stderr, "%s: %s: %s: %s\n", who, what, config::to_string(s.cfg.link.kind), error.c_str());
     return io::kExitFailure;
   }
+  if (s.link->status(s.st) != hal::LinkError::none) {
+    std::fprintf(stderr, "%s: %s: cannot read the board: %s\n", who, what, s.link->last_error());
+    return io::kExitFailure;
+  }
   return io::kExitOk;
 }
 
@@ -98,12 +103,7 @@ int jog_job(JogOptions opts, const char* who, RunCheck check, LinesOpener open_l
   if (opts.has_distance == opts.has_to) return io::usage_error("jog: give --distance or --to");
   Session s;
   if (const int rc = open_session(opts.config, who, "jog", check, open_lines, s); rc != io::kExitOk) return rc;
-  hal::BoardStatus st;
-  if (s.link->status(st) != hal::LinkError::none) {
-    std::fprintf(stderr, "%s: jog: cannot read the board: %s\n", who, s.link->last_error());
-    return io::kExitFailure;
-  }
-  Vec2<double> to = st.position;
+  Vec2<double> to = s.st.position;
   double& v = opts.axis == "x" ? to.x : to.y;
   v = opts.has_to ? opts.to : v + opts.distance;
   if (machine::clamp_to_limits(to, control::soft_limits_of(s.cfg.machine)))
@@ -129,11 +129,7 @@ int jog_job(JogOptions opts, const char* who, RunCheck check, LinesOpener open_l
 int touch_off_job(const TouchOffOptions& opts, const char* who, RunCheck check, LinesOpener open_lines) {
   Session s;
   if (const int rc = open_session(opts.config, who, "touch-off", check, open_lines, s); rc != io::kExitOk) return rc;
-  hal::BoardStatus st;
-  if (s.link->status(st) != hal::LinkError::none) {
-    std::fprintf(stderr, "%s: touch-off: cannot read the board: %s\n", who, s.link->last_error());
-    return io::kExitFailure;
-  }
+  const hal::BoardStatus& st = s.st;
   machine::touch_off(s.state, st.position);
   keep_position(s.state, st.position);
   std::string error;
