@@ -52,7 +52,8 @@ endfunction()
 # different tiers. THREADS: the tests whose name matches run threads and get
 # the label `threads` too (the tsan preset runs those, and builds only their
 # executables: KERF_THREAD_TEST_TARGETS in CMakePresets.json's tsan build).
-# LABELS: more labels for every test, e.g. `corpus` (whole real files: the
+# LABELS: more labels for every test, e.g. `corpus` (whole real files) or
+# `scale` (generated jobs of 1e5 lines and more, for memory bounds): the
 # debug-asan preset leaves those out, see tests/README.md).
 function(kerf_gtests exe tier)
   cmake_parse_arguments(PARSE_ARGV 2 arg "TARGET" "FILTER;TIMEOUT;TEST_PREFIX;THREADS" "LABELS")
