@@ -44,6 +44,14 @@ std::unique_ptr<BoardServer> BoardServer::start(MotionBoard& board, const Server
   };
   if (::pipe(s->stop_pipe_) != 0) return fail("pipe");
   if (::socketpair(AF_UNIX, SOCK_STREAM, 0, s->capture_pipe_) != 0) return fail("socketpair");
+  if (cfg.transport == ServerConfig::Transport::tcp && cfg.in_process) {
+    s->ctx_ = modbus_new_tcp("127.0.0.1", 0);  // builds the replies; never listens
+    if (s->ctx_ == nullptr) return fail("modbus_new_tcp");
+    modbus_set_slave(s->ctx_, cfg.unit);
+    s->mapping_ = modbus_mapping_new(0, 0, map::kMapRegs, 0);
+    if (s->mapping_ == nullptr) return fail("modbus_mapping_new");
+    return s;
+  }
   if (cfg.transport == ServerConfig::Transport::tcp) {
     s->ctx_ = modbus_new_tcp("127.0.0.1", cfg.port);  // port 0: the kernel picks a free one
     if (s->ctx_ == nullptr) return fail("modbus_new_tcp");
@@ -147,6 +155,26 @@ void BoardServer::serve_one(int fd) {
   }
   last_request_ = now();
   handle(q, len, fd);
+}
+
+int BoardServer::answer(const std::uint8_t* request, int n, std::uint8_t* reply, int capacity) {
+  ++requests_;
+  {
+    std::lock_guard<std::mutex> lock(fault_mu_);
+    const double t = now();
+    if (t < drop_until_ || t < stall_until_) {  // lost: the host times out
+      errno = ETIMEDOUT;
+      return -1;
+    }
+  }
+  // libmodbus writes the reply into the socket pair; it comes back out whole.
+  handle(request, n, capture_pipe_[1]);
+  const ssize_t got = ::recv(capture_pipe_[0], reply, static_cast<std::size_t>(capacity), MSG_DONTWAIT);
+  if (got <= 0) {
+    errno = ETIMEDOUT;
+    return -1;
+  }
+  return static_cast<int>(got);
 }
 
 hal::BoardStatus BoardServer::board_status() const {

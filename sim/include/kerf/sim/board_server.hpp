@@ -31,15 +31,18 @@ struct ServerConfig {
   // Where the axes really are (registers 16..19); null: a board without
   // feedback, which reports its commanded position there.
   const BoardPlant* plant = nullptr;
+  // TCP only: no listener and no thread; the host's link passes each request
+  // ADU to answer() (a hal::ModbusFramePeer) and gets libmodbus's reply bytes.
+  bool in_process = false;
 };
 
-class BoardServer {
+class BoardServer final : public hal::ModbusFramePeer {
  public:
   // Starts the server thread; null with `error` set on failure. The returned
   // server is listening (TCP) or the pty exists (RTU) before this returns.
   static std::unique_ptr<BoardServer> start(MotionBoard& board, const ServerConfig& cfg,
                                             std::string& error);
-  ~BoardServer();
+  ~BoardServer() override;
   BoardServer(const BoardServer&) = delete;
   BoardServer& operator=(const BoardServer&) = delete;
 
@@ -56,6 +59,9 @@ class BoardServer {
   void short_replies(int count);   // the next read replies carry one register too few
 
   std::uint64_t requests() const { return requests_.load(); }
+  // In process (ServerConfig::in_process): one request ADU in, its reply out.
+  // -1 with errno ETIMEDOUT when the board answers nothing (a stall).
+  int answer(const std::uint8_t* request, int n, std::uint8_t* reply, int capacity) override;
 
  private:
   BoardServer(MotionBoard& board, const ServerConfig& cfg);
