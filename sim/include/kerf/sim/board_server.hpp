@@ -34,6 +34,9 @@ struct ServerConfig {
   // TCP only: no listener and no thread; the host's link passes each request
   // ADU to answer() (a hal::ModbusFramePeer) and gets libmodbus's reply bytes.
   bool in_process = false;
+  // In process: also build each reply with libmodbus (modbus_reply, through
+  // a socket pair) and count the replies whose bytes differ (tests).
+  bool check_replies = false;
 };
 
 class BoardServer final : public hal::ModbusFramePeer {
@@ -62,12 +65,17 @@ class BoardServer final : public hal::ModbusFramePeer {
   // In process (ServerConfig::in_process): one request ADU in, its reply out.
   // -1 with errno ETIMEDOUT when the board answers nothing (a stall).
   int answer(const std::uint8_t* request, int n, std::uint8_t* reply, int capacity) override;
+  std::uint64_t reply_mismatches() const { return reply_mismatches_; }
 
  private:
   BoardServer(MotionBoard& board, const ServerConfig& cfg);
   void run();
   void serve_one(int fd);
-  void handle(const std::uint8_t* q, int len, int fd);
+  // Serves one request: `code` 0 or the exception to answer with; false:
+  // answer nothing (stopped during an injected delay).
+  bool handle(const std::uint8_t* q, int len, int& code);
+  // The TCP reply to q, built here without a socket; its length.
+  int reply_frame(const std::uint8_t* q, int code, std::uint8_t* r) const;
   hal::BoardStatus board_status() const;
   // The home block (registers 40..51) and command 7; 0 or the exception code.
   int write_home_block(int nb, const std::uint8_t* data, int bytes);
@@ -88,6 +96,7 @@ class BoardServer final : public hal::ModbusFramePeer {
   std::string device_;
   std::thread thread_;
   std::atomic<std::uint64_t> requests_{0};
+  std::uint64_t reply_mismatches_ = 0;
   double last_request_ = 0.0;
   std::uint16_t home_block_[12] = {};
   bool home_block_set_ = false;
