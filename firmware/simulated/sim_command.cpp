@@ -130,9 +130,9 @@ bool write_or_say(const std::string& option, const std::string& path, const std:
   return write_or_say(option, path, path.empty() || io::write_output(path, text));
 }
 
-// The plot keeps every servo sample of a run up to this many (about 4.4
-// simulated minutes at 1 kHz), then thins them (trace_recorder.hpp).
-constexpr std::size_t kPlotSamples = std::size_t{1} << 18;
+// The plot keeps every servo sample of a run up to this many (65 simulated
+// seconds at 1 kHz), then thins them (trace_recorder.hpp): about 4 MB.
+constexpr std::size_t kPlotSamples = std::size_t{1} << 16;
 
 }  // namespace
 
