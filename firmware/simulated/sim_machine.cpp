@@ -110,8 +110,10 @@ SimMachineResult run_sim_machine(const control::Job& job, const control::Control
       const double took = std::chrono::duration<double>(wall_now - last_wall).count();
       if (took < mcfg.cycle_s) std::this_thread::sleep_for(std::chrono::duration<double>(mcfg.cycle_s - took));
       ticks_now = std::max(ticks_per_cycle, std::lround(took / servo));
+      last_wall = clock::now();
+    } else {
+      last_wall = wall_now;  // one clock read a cycle
     }
-    last_wall = clock::now();
     for (long i = 0; i < ticks_now; ++i) {
       plant.tick();
       ++ticks;

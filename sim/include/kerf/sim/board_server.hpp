@@ -97,6 +97,7 @@ class BoardServer final : public hal::ModbusFramePeer {
   std::thread thread_;
   std::atomic<std::uint64_t> requests_{0};
   std::uint64_t reply_mismatches_ = 0;
+  std::atomic<bool> link_faults_{false};  // a drop or stall was ever asked for
   double last_request_ = 0.0;
   std::uint16_t home_block_[12] = {};
   bool home_block_set_ = false;
