@@ -38,6 +38,8 @@ SimMachineResult run_can_sim_machine(const control::Job& job, const control::Con
   // Over SocketCAN each SYNC waits for the wall clock already.
   m.speed = mcfg.can.iface.empty() ? mcfg.speed : 0.0;
   m.max_sim_s = mcfg.max_sim_s;
+  m.trace_sink = mcfg.trace_sink;
+  m.progress = mcfg.progress;
   for (const CanFault& f : mcfg.faults) m.faults.push_back({can_fault_kind(f.kind), f.at_s, 0.0});
   res = run_sim_machine(job, ccfg, m, *plant, gpio, journal, from);
   CanSimLink* link = &plant->can();

@@ -7,6 +7,7 @@
 // enable-refused at simulated times.
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include "simulated/can_sim_link.hpp"
@@ -25,6 +26,8 @@ struct CanMachineConfig {
   double speed = 0.0;           // simulated s per wall s; 0 = as fast as possible (in-process bus only)
   std::vector<CanFault> faults;
   double max_sim_s = 4 * 3600.0;
+  std::function<void(const sim::TraceSample&)> trace_sink;  // as SimMachineConfig's
+  std::function<void(const SimProgress&)> progress;
 };
 
 // The CAN settings and the controller period from a machine configuration.

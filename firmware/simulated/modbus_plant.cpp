@@ -23,6 +23,12 @@ class ModbusPlant final : public SimPlant {
     sc.transport = cfg.rtu ? sim::ServerConfig::Transport::rtu : sim::ServerConfig::Transport::tcp;
     sc.watchdog_s = watchdog_s;
     sc.plant = &plant_;
+    // In process the link and the server trade the same frames without a
+    // socket; the faults that need a socket keep it.
+    const bool socket_faults = std::any_of(cfg.faults.begin(), cfg.faults.end(), [](const BoardFault& f) {
+      return f.kind == BoardFaultKind::link_drop || f.kind == BoardFaultKind::link_stall;
+    });
+    sc.in_process = cfg.in_process && !cfg.rtu && !socket_faults;
     server_ = sim::BoardServer::start(board_, sc, error);
     if (!server_) return false;
     hal::ModbusConfig lc;
@@ -33,6 +39,7 @@ class ModbusPlant final : public SimPlant {
     // while the link is in trouble: one attempt per call, a short timeout.
     lc.retries = 0;
     lc.response_timeout_s = std::min(0.1, watchdog_s / 4.0);
+    if (sc.in_process) lc.peer = server_.get();
     link_ = hal::ModbusSegmentLink::open(lc, error);
     return link_ != nullptr;
   }
@@ -82,6 +89,7 @@ std::unique_ptr<SimPlant> make_modbus_plant(const SimMachineConfig& cfg, double 
   bc.start = cfg.start;
   bc.z = cfg.z;
   bc.soft_limits = cfg.soft_limits;
+  bc.keep_trace = false;  // run_sim_machine records the trace from truth()
   auto plant = std::make_unique<ModbusPlant>(bc, std::move(exec));
   if (!plant->open(cfg, link_watchdog_s, error)) return nullptr;
   return plant;

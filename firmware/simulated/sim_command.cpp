@@ -24,6 +24,8 @@
 #include "io/point_file.hpp"
 #include "io/run_svg.hpp"
 #include "simulated/sim_output.hpp"
+#include "simulated/sim_progress.hpp"
+#include "simulated/trace_recorder.hpp"
 #include "kerf/sim/scripted_gpio.hpp"
 
 namespace kerf::simulated {
@@ -118,11 +120,19 @@ bool parse_fault(const std::string& text, const std::string& link, std::vector<s
   return true;
 }
 
-bool write_or_say(const std::string& option, const std::string& path, const std::string& text) {
-  if (path.empty() || io::write_output(path, text)) return true;
+bool write_or_say(const std::string& option, const std::string& path, bool written) {
+  if (path.empty() || written) return true;
   std::fprintf(stderr, "kerf: %s: cannot write %s: %s\n", option.c_str(), path.c_str(), std::strerror(errno));
   return false;
 }
+
+bool write_or_say(const std::string& option, const std::string& path, const std::string& text) {
+  return write_or_say(option, path, path.empty() || io::write_output(path, text));
+}
+
+// The plot keeps every servo sample of a run up to this many (65 simulated
+// seconds at 1 kHz), then thins them (trace_recorder.hpp): about 4 MB.
+constexpr std::size_t kPlotSamples = std::size_t{1} << 16;
 
 }  // namespace
 
@@ -276,6 +286,18 @@ int run_sim(const SimOptions& given) {
   // resumed run starts there too and travels to its resume point.
   mcfg.start = start;
 
+  // The trace goes to its consumers as the run makes it: memory stays flat
+  // however long the job runs.
+  TraceRecorder trace(fitted.pieces, config::z_limits(cfg.machine).configured(), !opts.plot.empty(), kPlotSamples);
+  if (!opts.trace.empty() && !trace.open_csv(opts.trace)) {
+    write_or_say("--trace", opts.trace, false);
+    return kExitFailure;
+  }
+  mcfg.trace_sink = [&trace](const sim::TraceSample& t) { trace.take(t); };
+  SimProgressLine progress(fitted.piece_path, fitted.job.paths.size());
+  if (progress.on()) mcfg.progress = [&progress](const SimProgress& p) { progress.show(p); };
+  can_cfg.trace_sink = mcfg.trace_sink;
+  can_cfg.progress = mcfg.progress;
   SimMachineResult res;
   if (can) {
     can_cfg.can.start = mcfg.start;
@@ -288,6 +310,7 @@ int run_sim(const SimOptions& given) {
   } else {
     res = run_sim_machine(fitted.job, ccfg, mcfg, gpio, journal.get(), from);
   }
+  progress.clear();
   if (!res.setup_error.empty()) {
     std::fprintf(stderr, "kerf: sim: %s\n", res.setup_error.c_str());
     return kExitFailure;
@@ -299,7 +322,7 @@ int run_sim(const SimOptions& given) {
   sum.executed = res.executed.size();
   sum.torch_on = gpio.torch();
   sum.board_duplicates = res.board.duplicates;
-  sum.max_path_deviation_mm = max_path_deviation(res.trace, fitted.pieces);
+  sum.max_path_deviation_mm = trace.max_deviation();
   sum.duration_s = res.sim_s;
   sum.wall_s = res.wall_s;
   sum.rt = res.rt;
@@ -324,13 +347,13 @@ int run_sim(const SimOptions& given) {
     for (const fit::Piece<double>& piece : fitted.pieces) plot.pieces.push_back(piece.segment);
     plot.piece_path = fitted.piece_path;
     plot.tol = tol;
-    for (const sim::TraceSample& t : res.trace) plot.trace.push_back({t.t_s, t.pos, t.seq, t.torch});
+    plot.trace = trace.plot_trace();
     plot.title = "kerf sim: " + in.file + " (" + sum.state + ")";
     for (const control::ActionEvent& a : res.run.actions)
       if (a.kind == job::CanonKind::dwell || a.kind == job::CanonKind::pause)
         plot.marks.push_back({a.at, a.kind == job::CanonKind::dwell ? "dwell" : "pause", a.what});
   }
-  if (!write_or_say("--trace", opts.trace, format_trace_csv(res.trace, config::z_limits(cfg.machine).configured())) ||
+  if (!write_or_say("--trace", opts.trace, trace.finish_csv()) ||
       !write_or_say("--report", opts.report, control::format_run_json(sum)) ||
       (!opts.plot.empty() && !write_or_say("--plot", opts.plot, io::format_run_svg(plot))))
     return kExitFailure;

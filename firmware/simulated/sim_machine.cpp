@@ -58,14 +58,21 @@ SimMachineResult run_sim_machine(const control::Job& job, const control::Control
   std::stable_sort(faults.begin(), faults.end(),
                    [](const BoardFault& a, const BoardFault& b) { return a.at_s < b.at_s; });
   std::size_t next_fault = 0;
-  res.trace.reserve(1 << 16);
+  const bool keep = !mcfg.trace_sink;  // else the sink takes each sample and nothing grows
+  if (keep) res.trace.reserve(1 << 16);
   std::uint64_t ticks = 0;
   std::uint32_t last_executed = 0;
+  std::int64_t running = -1;  // the job segment of the last sample
+  // The last cycle's positions, to see that the axes have come to rest.
+  std::vector<Vec2<double>> recent(static_cast<std::size_t>(ticks_per_cycle) + 1);
   auto sample = [&] {
     const hal::BoardStatus s = plant.truth();
-    const std::int64_t k = ctl.job_segment_of(s.executing);
-    res.trace.push_back({static_cast<double>(ticks) * servo, s.position,
-                         static_cast<std::uint32_t>(k < 0 ? 0 : k + 1), ctl.torch(), s.thc_lock, s.z});
+    running = ctl.job_segment_of(s.executing);
+    const sim::TraceSample t{static_cast<double>(ticks) * servo, s.position,
+                             static_cast<std::uint32_t>(running < 0 ? 0 : running + 1), ctl.torch(), s.thc_lock, s.z};
+    if (keep) res.trace.push_back(t);
+    else mcfg.trace_sink(t);
+    recent[ticks % recent.size()] = s.position;
     for (std::uint32_t q = last_executed + 1; q <= s.last_executed; ++q) {
       const std::int64_t done = ctl.job_segment_of(q);
       if (done >= 0 && ctl.completes_job_segment(q)) res.executed.push_back(done);
@@ -78,7 +85,14 @@ SimMachineResult run_sim_machine(const control::Job& job, const control::Control
   // Paced in real time (scaled by speed) on absolute deadlines, as `kerf run` is.
   hal::RtLoop pace(mcfg.speed > 0.0 ? mcfg.cycle_s / mcfg.speed : 1.0);
   auto last_wall = clock::now();
+  auto last_progress = last_wall;
+  std::uint64_t cycles = 0;
   while (tail < 3) {
+    if (mcfg.progress && (++cycles & 255) == 0 && last_wall - last_progress > std::chrono::milliseconds(100)) {
+      last_progress = last_wall;
+      mcfg.progress({running, static_cast<double>(ticks) * servo,
+                     std::chrono::duration<double>(last_wall - wall0).count()});
+    }
     if (mcfg.speed > 0.0) pace.wait_next();
     const double now = static_cast<double>(ticks) * servo;
     while (next_fault < faults.size() && faults[next_fault].at_s <= now)
@@ -96,8 +110,10 @@ SimMachineResult run_sim_machine(const control::Job& job, const control::Control
       const double took = std::chrono::duration<double>(wall_now - last_wall).count();
       if (took < mcfg.cycle_s) std::this_thread::sleep_for(std::chrono::duration<double>(mcfg.cycle_s - took));
       ticks_now = std::max(ticks_per_cycle, std::lround(took / servo));
+      last_wall = clock::now();
+    } else {
+      last_wall = wall_now;  // one clock read a cycle
     }
-    last_wall = clock::now();
     for (long i = 0; i < ticks_now; ++i) {
       plant.tick();
       ++ticks;
@@ -107,7 +123,7 @@ SimMachineResult run_sim_machine(const control::Job& job, const control::Control
     // but the board brakes by itself and the simulation shows it).
     if (ctl.finished()) {
       const hal::BoardStatus s = plant.truth();
-      const bool still = s.position == res.trace[res.trace.size() - 1 - static_cast<std::size_t>(ticks_per_cycle)].pos;
+      const bool still = s.position == recent[(ticks - static_cast<std::uint64_t>(ticks_per_cycle)) % recent.size()];
       tail = still && s.state != hal::BoardState::running ? tail + 1 : 0;
     }
     if (now > mcfg.max_sim_s) {

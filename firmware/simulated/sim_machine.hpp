@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -40,6 +41,14 @@ struct BoardFault {
   double duration_s = 0.5;  // wall time the link stays down (drop, stall)
 };
 
+// Where a run is, for a progress line: the job segment being run (0-based,
+// -1 on a rapid or none), the simulated and the wall time so far.
+struct SimProgress {
+  std::int64_t segment = -1;
+  double sim_s = 0.0;
+  double wall_s = 0.0;
+};
+
 struct SimMachineConfig {
   bool rtu = false;
   sim::MotionConfig motion;     // servo period, accel, counts/mm
@@ -50,14 +59,23 @@ struct SimMachineConfig {
   motion::SoftLimits<double> soft_limits{};  // the board's own check (control::soft_limits_of)
   std::vector<BoardFault> faults;
   double max_sim_s = 600.0;     // give up (a stuck run, a hold never released) after this
+  // Modbus TCP: the link hands its frames to the board's server in this
+  // process (hal::ModbusFramePeer) instead of a loopback socket, unless a
+  // fault needs the socket (link-drop, link-stall). False: always the socket.
+  bool in_process = true;
+  // Each trace sample as it is taken; when set, the result's trace stays
+  // empty and memory does not grow with simulated time.
+  std::function<void(const sim::TraceSample&)> trace_sink;
+  // Called about every 0.1 s of wall time (not at all when empty).
+  std::function<void(const SimProgress&)> progress;
 };
 
 struct SimMachineResult {
   std::string setup_error;              // the board or the link could not be started
   control::RunReport run;
-  // One sample per servo period; `seq` is the job segment + 1 being run (0
-  // for a rapid or none), `torch` the torch output, `thc_lock` the board's
-  // (gpio.thc_lock is it while the torch is on).
+  // One sample per servo period (none with a trace_sink); `seq` is the job
+  // segment + 1 being run (0 for a rapid or none), `torch` the torch output,
+  // `thc_lock` the board's (gpio.thc_lock is it while the torch is on).
   std::vector<sim::TraceSample> trace;
   std::vector<std::int64_t> executed;   // job segments completed, in order
   hal::BoardStatus board{};             // the board's final status

@@ -1,22 +1,24 @@
 // What only `kerf sim` writes: the executed trace (CSV), and how far it
-// strayed from the fitted path. The report both sim and run write is
+// strayed from the fitted path, one sample at a time (trace_recorder.hpp
+// takes them as the run goes). The report both sim and run write is
 // control/run_report.hpp's.
 #pragma once
 
-#include <string>
+#include <cstddef>
 #include <vector>
 
 #include "kerf/fit/fit.hpp"
-#include "simulated/sim_machine.hpp"
+#include "kerf/sim/motion_board.hpp"
 
 namespace kerf::simulated {
 
-// Largest distance of an executed sample (running job segment k + 1) from
-// fitted piece k or a piece next to it.
-double max_path_deviation(const std::vector<sim::TraceSample>& trace,
-                          const std::vector<fit::Piece<double>>& pieces);
+// Distance of an executed sample (running job segment k + 1, k < pieces.size())
+// from fitted piece k or a piece next to it.
+double sample_deviation(const sim::TraceSample& s, const std::vector<fit::Piece<double>>& pieces);
 
-// One line a sample; with_z (a machine with a z axis) adds a last column z_mm.
-std::string format_trace_csv(const std::vector<sim::TraceSample>& trace, bool with_z = false);
+// The CSV's first line; with_z (a machine with a z axis) adds a last column z_mm.
+const char* csv_header(bool with_z);
+// One CSV line (with its '\n') into `out`; returns its length.
+int format_trace_row(const sim::TraceSample& s, bool with_z, char* out, std::size_t size);
 
 }  // namespace kerf::simulated

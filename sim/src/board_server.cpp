@@ -44,6 +44,14 @@ std::unique_ptr<BoardServer> BoardServer::start(MotionBoard& board, const Server
   };
   if (::pipe(s->stop_pipe_) != 0) return fail("pipe");
   if (::socketpair(AF_UNIX, SOCK_STREAM, 0, s->capture_pipe_) != 0) return fail("socketpair");
+  if (cfg.transport == ServerConfig::Transport::tcp && cfg.in_process) {
+    s->ctx_ = modbus_new_tcp("127.0.0.1", 0);  // builds the replies; never listens
+    if (s->ctx_ == nullptr) return fail("modbus_new_tcp");
+    modbus_set_slave(s->ctx_, cfg.unit);
+    s->mapping_ = modbus_mapping_new(0, 0, map::kMapRegs, 0);
+    if (s->mapping_ == nullptr) return fail("modbus_mapping_new");
+    return s;
+  }
   if (cfg.transport == ServerConfig::Transport::tcp) {
     s->ctx_ = modbus_new_tcp("127.0.0.1", cfg.port);  // port 0: the kernel picks a free one
     if (s->ctx_ == nullptr) return fail("modbus_new_tcp");
@@ -146,7 +154,74 @@ void BoardServer::serve_one(int fd) {
     if (t < drop_until_ || t < stall_until_) return;  // the request is lost: it feeds no watchdog
   }
   last_request_ = now();
-  handle(q, len, fd);
+  int code = 0;
+  if (handle(q, len, code)) send_reply(q, len, fd, code);
+}
+
+int BoardServer::answer(const std::uint8_t* request, int n, std::uint8_t* reply, int capacity) {
+  ++requests_;
+  if (link_faults_.load(std::memory_order_relaxed)) {  // the clock only once a drop or stall was asked for
+    std::lock_guard<std::mutex> lock(fault_mu_);
+    const double t = now();
+    if (t < drop_until_ || t < stall_until_) {  // lost: the host times out
+      errno = ETIMEDOUT;
+      return -1;
+    }
+  }
+  int code = 0;
+  if (n < 8 || capacity < kMaxAdu || !handle(request, n, code)) {
+    errno = ETIMEDOUT;
+    return -1;
+  }
+  int rn = reply_frame(request, code, reply);
+  if (cfg_.check_replies) {  // libmodbus's own reply, through the socket pair: the same bytes?
+    modbus_set_socket(ctx_, capture_pipe_[1]);
+    if (code != 0) modbus_reply_exception(ctx_, request, static_cast<unsigned>(code));
+    else modbus_reply(ctx_, request, n, static_cast<modbus_mapping_t*>(mapping_));
+    std::uint8_t lib[kMaxAdu];
+    const ssize_t got = ::recv(capture_pipe_[0], lib, sizeof lib, MSG_DONTWAIT);
+    if (got != rn || std::memcmp(lib, reply, static_cast<std::size_t>(rn)) != 0) ++reply_mismatches_;
+  }
+  int unit = 0, shorten = 0;
+  {
+    std::lock_guard<std::mutex> lock(fault_mu_);
+    if (wrong_unit_ > 0) unit = wrong_unit_--;
+    if (short_ > 0) shorten = short_--;
+  }
+  if (unit != 0) rn = frame_wrong_unit(FrameKind::tcp, reply, rn);
+  if (shorten != 0) rn = frame_short(FrameKind::tcp, reply, rn);
+  return rn;
+}
+
+namespace {
+void put16(std::uint8_t* p, int v) {
+  p[0] = static_cast<std::uint8_t>(v >> 8);
+  p[1] = static_cast<std::uint8_t>(v & 0xFF);
+}
+}  // namespace
+
+int BoardServer::reply_frame(const std::uint8_t* q, int code, std::uint8_t* r) const {
+  // As libmodbus's modbus_reply and modbus_reply_exception build them for
+  // the four function codes handle() serves (TCP: the request's MBAP header).
+  constexpr int h = 7;
+  std::memcpy(r, q, h);
+  const int fc = q[h];
+  int n = h;
+  if (code != 0) {
+    r[n++] = static_cast<std::uint8_t>(fc | 0x80);
+    r[n++] = static_cast<std::uint8_t>(code);
+  } else if (fc == MODBUS_FC_READ_HOLDING_REGISTERS || fc == MODBUS_FC_WRITE_AND_READ_REGISTERS) {
+    const int addr = u16(q + h + 1), nb = u16(q + h + 3);
+    const auto* regs = static_cast<const modbus_mapping_t*>(mapping_)->tab_registers;
+    r[n++] = static_cast<std::uint8_t>(fc);
+    r[n++] = static_cast<std::uint8_t>(2 * nb);
+    for (int i = 0; i < nb; ++i, n += 2) put16(r + n, regs[addr + i]);
+  } else {  // FC06 echoes address and value, FC16 address and count
+    std::memcpy(r + n, q + h, 5);
+    n += 5;
+  }
+  put16(r + 4, n - 6);
+  return n;
 }
 
 hal::BoardStatus BoardServer::board_status() const {
@@ -155,7 +230,7 @@ hal::BoardStatus BoardServer::board_status() const {
   return st;
 }
 
-void BoardServer::handle(const std::uint8_t* q, int len, int fd) {
+bool BoardServer::handle(const std::uint8_t* q, int len, int& code) {
   int delays = 0;
   double delay_s = 0.0;
   int exc = 0;
@@ -171,15 +246,15 @@ void BoardServer::handle(const std::uint8_t* q, int len, int fd) {
       exc = exception_code_;
     }
   }
-  if (delays != 0 && !wait_or_stop(delay_s)) return;
+  if (delays != 0 && !wait_or_stop(delay_s)) return false;
   if (exc != 0) {  // injected: the board does nothing with the request
-    send_reply(q, len, fd, exc);
-    return;
+    code = exc;
+    return true;
   }
   const int h = modbus_get_header_length(ctx_);
   const int fc = q[h];
   auto* regs = static_cast<modbus_mapping_t*>(mapping_)->tab_registers;
-  int code = 0;
+  code = 0;
   switch (fc) {
     case MODBUS_FC_READ_HOLDING_REGISTERS:
       if (u16(q + h + 1) + u16(q + h + 3) > map::kStatusRegs) code = MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS;
@@ -205,7 +280,7 @@ void BoardServer::handle(const std::uint8_t* q, int len, int fd) {
       break;
     default: code = MODBUS_EXCEPTION_ILLEGAL_FUNCTION;
   }
-  send_reply(q, len, fd, code);
+  return true;
 }
 
 int BoardServer::write_home_block(int nb, const std::uint8_t* data, int bytes) {
@@ -253,10 +328,12 @@ void BoardServer::send_reply(const std::uint8_t* q, int len, int fd, int excepti
 }
 
 void BoardServer::drop_link(double seconds) {
+  link_faults_ = true;
   std::lock_guard<std::mutex> lock(fault_mu_);
   drop_until_ = now() + seconds;
 }
 void BoardServer::stall(double seconds) {
+  link_faults_ = true;
   std::lock_guard<std::mutex> lock(fault_mu_);
   stall_until_ = now() + seconds;
 }

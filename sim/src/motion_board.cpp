@@ -122,15 +122,17 @@ void MotionBoard::tick_locked() {
   if (homing_.active()) {
     home_tick_locked();
     ++ticks_;
-    trace_.push_back({static_cast<double>(ticks_) * cfg_.servo_period_s, home_pos_, 0, false, true, exec_.z()});
+    if (cfg_.keep_trace)
+      trace_.push_back({static_cast<double>(ticks_) * cfg_.servo_period_s, home_pos_, 0, false, true, exec_.z()});
     changed_.notify_all();
     return;
   }
   const motion::BoardStep<double> e = exec_.step();
   ++ticks_;
   for (std::uint32_t s = e.completed_from + 1; s <= e.completed_to; ++s) executed_.push_back(s);
-  trace_.push_back({static_cast<double>(ticks_) * cfg_.servo_period_s, e.position, e.executing, e.torch,
-                    e.thc_lock, e.z});
+  if (cfg_.keep_trace)
+    trace_.push_back({static_cast<double>(ticks_) * cfg_.servo_period_s, e.position, e.executing, e.torch,
+                      e.thc_lock, e.z});
   changed_.notify_all();
 }
 

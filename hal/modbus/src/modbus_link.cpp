@@ -64,6 +64,10 @@ std::unique_ptr<ModbusSegmentLink> ModbusSegmentLink::open(const ModbusConfig& c
     return nullptr;
   }
   modbus_set_slave(link->ctx_, cfg.unit);
+  if (cfg.peer != nullptr && cfg.transport == ModbusConfig::Transport::tcp) {
+    link->connected_ = true;  // in process: no socket to connect
+    return link;
+  }
   const auto us = static_cast<long>(cfg.response_timeout_s * 1e6);
   modbus_set_response_timeout(link->ctx_, static_cast<std::uint32_t>(us / 1000000),
                               static_cast<std::uint32_t>(us % 1000000));
@@ -105,6 +109,10 @@ int ModbusSegmentLink::exchange(const std::uint8_t* pdu, int n, int nread, std::
     frame[6] = static_cast<std::uint8_t>(cfg_.unit);
     std::memcpy(frame + 7, pdu, static_cast<std::size_t>(n));
     const auto len = static_cast<ssize_t>(n + 7);
+    if (cfg_.peer != nullptr) {  // in process: the same frames, no socket
+      std::uint8_t r[MODBUS_TCP_MAX_ADU_LENGTH];
+      return check_reply(r, cfg_.peer->answer(frame, n + 7, r, sizeof r), fc, pdu, nread, out);
+    }
     if (::send(modbus_get_socket(ctx_), frame, static_cast<std::size_t>(len), MSG_NOSIGNAL) != len)
       return -1;
   } else {
@@ -121,6 +129,14 @@ int ModbusSegmentLink::exchange(const std::uint8_t* pdu, int n, int nread, std::
     if (rn == 0) return set_errno(EMBBADSLAVE);  // RTU: libmodbus ignored another unit's frame
     if (!tcp || u16(r) == tid_) break;
   }
+  return check_reply(r, rn, fc, pdu, nread, out);
+}
+
+int ModbusSegmentLink::check_reply(const std::uint8_t* r, int rn, int fc, const std::uint8_t* pdu, int nread,
+                                   std::uint16_t* out) {
+  if (rn < 0) return -1;
+  const bool tcp = cfg_.transport == ModbusConfig::Transport::tcp;
+  if (tcp && (rn < 7 || u16(r) != tid_)) return set_errno(EMBBADDATA);
   const int h = tcp ? 7 : 1;
   const int tail = tcp ? 0 : 2;  // RTU CRC, already checked by libmodbus
   if (tcp && (u16(r + 2) != 0 || u16(r + 4) != rn - 6)) return set_errno(EMBBADDATA);
@@ -139,6 +155,7 @@ int ModbusSegmentLink::exchange(const std::uint8_t* pdu, int n, int nread, std::
 }
 
 void ModbusSegmentLink::drain() {
+  if (cfg_.peer != nullptr) return;  // in process: nothing in flight
   const int fd = modbus_get_socket(ctx_);
   const int ms = static_cast<int>(cfg_.response_timeout_s * 1000.0) + 1;
   for (int i = 0; i < 16; ++i) {
@@ -181,6 +198,7 @@ LinkError ModbusSegmentLink::transact(Op op, F&& attempt) {
       continue;
     }
     last = LinkError::disconnected;  // reset, broken pipe, closed socket, EIO on a tty
+    if (cfg_.peer != nullptr) continue;  // in process: no connection to renew
     modbus_close(ctx_);
     connected_ = false;
   }

@@ -31,15 +31,21 @@ struct ServerConfig {
   // Where the axes really are (registers 16..19); null: a board without
   // feedback, which reports its commanded position there.
   const BoardPlant* plant = nullptr;
+  // TCP only: no listener and no thread; the host's link passes each request
+  // ADU to answer() (a hal::ModbusFramePeer) and gets libmodbus's reply bytes.
+  bool in_process = false;
+  // In process: also build each reply with libmodbus (modbus_reply, through
+  // a socket pair) and count the replies whose bytes differ (tests).
+  bool check_replies = false;
 };
 
-class BoardServer {
+class BoardServer final : public hal::ModbusFramePeer {
  public:
   // Starts the server thread; null with `error` set on failure. The returned
   // server is listening (TCP) or the pty exists (RTU) before this returns.
   static std::unique_ptr<BoardServer> start(MotionBoard& board, const ServerConfig& cfg,
                                             std::string& error);
-  ~BoardServer();
+  ~BoardServer() override;
   BoardServer(const BoardServer&) = delete;
   BoardServer& operator=(const BoardServer&) = delete;
 
@@ -56,12 +62,20 @@ class BoardServer {
   void short_replies(int count);   // the next read replies carry one register too few
 
   std::uint64_t requests() const { return requests_.load(); }
+  // In process (ServerConfig::in_process): one request ADU in, its reply out.
+  // -1 with errno ETIMEDOUT when the board answers nothing (a stall).
+  int answer(const std::uint8_t* request, int n, std::uint8_t* reply, int capacity) override;
+  std::uint64_t reply_mismatches() const { return reply_mismatches_; }
 
  private:
   BoardServer(MotionBoard& board, const ServerConfig& cfg);
   void run();
   void serve_one(int fd);
-  void handle(const std::uint8_t* q, int len, int fd);
+  // Serves one request: `code` 0 or the exception to answer with; false:
+  // answer nothing (stopped during an injected delay).
+  bool handle(const std::uint8_t* q, int len, int& code);
+  // The TCP reply to q, built here without a socket; its length.
+  int reply_frame(const std::uint8_t* q, int code, std::uint8_t* r) const;
   hal::BoardStatus board_status() const;
   // The home block (registers 40..51) and command 7; 0 or the exception code.
   int write_home_block(int nb, const std::uint8_t* data, int bytes);
@@ -82,6 +96,8 @@ class BoardServer {
   std::string device_;
   std::thread thread_;
   std::atomic<std::uint64_t> requests_{0};
+  std::uint64_t reply_mismatches_ = 0;
+  std::atomic<bool> link_faults_{false};  // a drop or stall was ever asked for
   double last_request_ = 0.0;
   std::uint16_t home_block_[12] = {};
   bool home_block_set_ = false;

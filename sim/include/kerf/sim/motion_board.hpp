@@ -36,6 +36,7 @@ struct BoardConfig {
   double servo_period_s = 0.001;  // simulated time per tick
   Vec2<double> start{};           // position at power-up (mm)
   std::size_t trace_reserve = 0;  // samples to reserve up front
+  bool keep_trace = true;         // false: trace() holds only the power-up sample (the caller records its own)
   motion::AxisLimits<double> z{}; // the z axis (period 0: none; z moves are refused)
   double start_z = 0;             // mm
   motion::SoftLimits<double> soft_limits{};  // the executor refuses a segment outside (off: unlimited)

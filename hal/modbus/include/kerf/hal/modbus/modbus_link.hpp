@@ -16,6 +16,16 @@ typedef struct _modbus modbus_t;  // NOLINT: libmodbus's own declaration
 
 namespace kerf::hal {
 
+// A Modbus TCP peer in this process (the simulator's board): it answers a
+// request ADU (MBAP header and PDU, as a socket carries it) with the reply
+// ADU. The link builds and checks the frames exactly as it does on a socket.
+class ModbusFramePeer {
+ public:
+  virtual ~ModbusFramePeer() = default;
+  // The reply's length in bytes, or -1 with errno set.
+  virtual int answer(const std::uint8_t* request, int n, std::uint8_t* reply, int capacity) = 0;
+};
+
 struct ModbusConfig {
   enum class Transport : std::uint8_t { tcp, rtu };
   Transport transport = Transport::tcp;
@@ -26,6 +36,7 @@ struct ModbusConfig {
   int unit = 17;                   // the board's unit id
   double response_timeout_s = 0.2; // per transaction
   int retries = 3;                 // resends after the first attempt
+  ModbusFramePeer* peer = nullptr; // tcp: frames go to this peer instead of host:port
 };
 
 class ModbusSegmentLink final : public SegmentLink {
@@ -61,6 +72,8 @@ class ModbusSegmentLink final : public SegmentLink {
   // TCP transaction id, function code, exception, byte count, echo. Reads
   // `nread` registers into `out` for FC03/FC23. Returns -1 with errno set.
   int exchange(const std::uint8_t* pdu, int n, int nread, std::uint16_t* out);
+  // The checks on a reply of rn bytes (rn -1: none came, errno set).
+  int check_reply(const std::uint8_t* r, int rn, int fc, const std::uint8_t* pdu, int nread, std::uint16_t* out);
   // After a timeout or a bad reply: discard bytes until the line has been
   // quiet for one response timeout, so a late reply cannot answer the resend.
   void drain();
