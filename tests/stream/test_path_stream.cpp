@@ -78,14 +78,16 @@ bool same_bits(const hal::SegmentCommand& a, const hal::SegmentCommand& b) {
          std::memcmp(&a.feed, &b.feed, sizeof a.feed) == 0 && a.torch == b.torch;
 }
 
-// Distance from p to the segment's line or full circle (the vertex criterion's).
+// Distance from p to the segment's line or full circle: the vertex
+// criterion's measure (job/check_fit.hpp), which lets a point overshoot a
+// line's end along it.
 double off(const StreamedSegment& s, Vec2<double> p) {
   const hal::SegmentCommand& c = s.cmd;
   if (c.kind == SegmentKind::arc) return std::fabs(distance(p, c.centre) - distance(s.from, c.centre));
   const Vec2<double> d = c.end - s.from;
-  const double len2 = d.x * d.x + d.y * d.y;
-  const double t = len2 > 0 ? std::clamp(((p.x - s.from.x) * d.x + (p.y - s.from.y) * d.y) / len2, 0.0, 1.0) : 0.0;
-  return distance(p, s.from + d * t);
+  const double len = std::sqrt(d.x * d.x + d.y * d.y);
+  if (len == 0) return distance(p, s.from);
+  return std::fabs((p.x - s.from.x) * d.y - (p.y - s.from.y) * d.x) / len;
 }
 
 TEST(PathStream, WindowHoldingThePathGivesTheWholeFileSegments) {
