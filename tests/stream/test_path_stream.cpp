@@ -203,3 +203,38 @@ TEST(PathStream, RefusesAWindowOutOfRange) {
 }
 
 }  // namespace
+
+namespace {
+
+// fit_paths (kerf sim, kerf run): a path longer than the window goes
+// through it. A straight run of 10000 points is one piece for the whole
+// path, so the window forces commits: counted in the job, and the segments
+// still chain from the pierce point and pass within tol of every point.
+TEST(PathStream, FitPathsStreamsAPathLongerThanTheWindow) {
+  io::PointFile in;
+  in.file = "long";
+  for (int k = 0; k < 10000; ++k) {
+    in.points.push_back({k * 0.01, 0.002 * std::sin(k * 0.1)});
+    in.point_lines.push_back(static_cast<std::size_t>(k + 1));
+  }
+  in.path_begin = {0};
+  control::FittedJob out;
+  std::string error;
+  Status st = Status::ok;
+  ASSERT_TRUE(control::fit_paths(in, job::Criterion::vertex, kTol, kFeed, out, error, st)) << error;
+  EXPECT_GT(out.job.forced_commits, 0u);
+  ASSERT_EQ(out.job.paths.size(), 1u);
+  const control::CutPath& path = out.job.paths.front();
+  ASSERT_EQ(path.segments.size(), out.pieces.size());
+  Vec2<double> from = path.start;
+  for (std::size_t k = 0; k < path.segments.size(); ++k) {
+    StreamedSegment s{path.segments[k], out.pieces[k], from};
+    for (std::uint32_t i = out.pieces[k].first; i <= out.pieces[k].last; ++i)
+      ASSERT_LE(off(s, in.points[i]), kTol + 0.0015) << "segment " << k << " point " << i;
+    from = path.segments[k].end;
+  }
+  EXPECT_EQ(out.pieces.back().last, 9999u);
+  EXPECT_LT(path.segments.size(), 20u);
+}
+
+}  // namespace
