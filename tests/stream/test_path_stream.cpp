@@ -238,3 +238,49 @@ TEST(PathStream, FitPathsStreamsAPathLongerThanTheWindow) {
 }
 
 }  // namespace
+
+namespace {
+
+std::size_t pieces_in(const std::vector<fit::Piece<double>>& pieces) {
+  std::size_t n = 0;
+  for (std::size_t k = 0; k < pieces.size(); ++k)
+    n += k == 0 || pieces[k].first != pieces[k - 1].first || pieces[k].last != pieces[k - 1].last;
+  return n;
+}
+
+// Past the fit's reach (no forced commit in a path longer than the window)
+// the streamed fit has the whole path's piece count, the fewest (fit/stream.hpp,
+// "Exactness"). The pieces themselves may differ where the whole-file fit's
+// tie-break picks another of several fewest-piece fits.
+TEST(PathStream, NoForcedCommitGivesTheFewestPieces) {
+  constexpr std::uint32_t kWindow = 256;
+  // Vertex, paths up to 2000 points: the whole-path band fit of the long ones takes seconds.
+  for (const job::Criterion criterion : {job::Criterion::vertex}) {
+    control::PathStreamFitter f;
+    std::string error;
+    ASSERT_TRUE(f.start(criterion, job::Numeric::floating, kFeed, kWindow, error));
+    std::size_t compared = 0;
+    for (const std::string& file : corpus()) {
+      for (const Path& path : paths_of(file)) {
+        if (path.pts.size() <= kWindow || path.pts.size() > 2000) continue;
+        const std::uint32_t forced_before = f.stats().forced;
+        std::vector<StreamedSegment> got;
+        if (!stream(f, path, got, error) || f.stats().forced != forced_before) continue;
+        io::PointFile one;
+        one.file = "corpus";
+        one.points = path.pts;
+        one.point_lines = path.lines;
+        control::FittedJob whole;
+        Status st = Status::ok;
+        if (!control::fit_paths(one, criterion, path.tol, kFeed, whole, error, st)) continue;
+        std::vector<fit::Piece<double>> streamed;
+        for (const StreamedSegment& s : got) streamed.push_back(s.piece);
+        EXPECT_EQ(pieces_in(streamed), pieces_in(whole.pieces)) << file;
+        ++compared;
+      }
+    }
+    EXPECT_GE(compared, 5u);
+  }
+}
+
+}  // namespace
