@@ -2,15 +2,17 @@
 
 #include <chrono>
 #include <memory>
+#include <utility>
 
 #include "job/point_stream.hpp"
 
 namespace kerf::control {
 
+PointFileProducer::PointFileProducer() = default;
+
 PointFileProducer::~PointFileProducer() {
   stopping_ = true;
   join();
-  delete static_cast<job::PointStream*>(stream_);
 }
 
 void PointFileProducer::join() {
@@ -26,7 +28,7 @@ bool PointFileProducer::start(const std::string& file, const JobStreamSetup& set
   }
   if (!fitter_.start(setup.criterion, job::Numeric::floating, setup.feed_mm_s, setup.window, error)) return false;
   fitter_.begin_path(in->file(), 0, setup.tol);
-  stream_ = in.release();
+  stream_ = std::move(in);
   thread_ = std::thread([this, file, &ring] { run(file, ring); });
   return true;
 }
@@ -41,7 +43,7 @@ bool PointFileProducer::put(JobRing& ring, const StreamItem& item) {
 }
 
 void PointFileProducer::run(const std::string&, JobRing& ring) {
-  job::PointStream& in = *static_cast<job::PointStream*>(stream_);
+  job::PointStream& in = *stream_;
   const PathStreamFitter::Sink sink = [&](const StreamedSegment& s) {
     StreamItem item;
     item.seg = s;

@@ -9,11 +9,16 @@
 
 #include <atomic>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <thread>
 
 #include "control/path_stream.hpp"
 #include "control/stream_ring.hpp"
+
+namespace kerf::job {
+class PointStream;
+}
 
 namespace kerf::control {
 
@@ -34,6 +39,8 @@ struct JobStreamSetup {
 
 class PointFileProducer {
  public:
+  PointFileProducer();
+  // Stops the thread after its current line (a FIFO's read may wait for it).
   ~PointFileProducer();
   // Opens `file` and starts the thread. False with "FILE: reason" if the
   // file cannot be opened or the setup is refused (nothing started).
@@ -55,7 +62,7 @@ class PointFileProducer {
   std::string error_;
   std::atomic<std::uint64_t> points_{0};
   std::atomic<bool> stopping_{false};
-  void* stream_ = nullptr;  // job::PointStream, opened in start()
+  std::unique_ptr<job::PointStream> stream_;  // opened in start()
 };
 
 }  // namespace kerf::control
