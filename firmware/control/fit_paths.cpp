@@ -1,20 +1,71 @@
 #include "control/fit_paths.hpp"
 
 #include "control/cut_rules.hpp"
+#include "control/path_stream.hpp"
 #include "job/fit_job.hpp"
 
 #include <cstdio>
 
 namespace kerf::control {
 
+namespace {
+
+// A path longer than the fit's window, in double by the vertex or band
+// criterion with one width, and without a repeated point (the window drops
+// repeats, which would shift the pieces' point numbers): fitted in the
+// bounded window (control/path_stream.hpp). Shorter paths are the window's
+// whole-path case: fitted here directly, the same bytes.
+bool streams(const io::PointFile& in, std::size_t b, std::size_t e, job::Criterion criterion, job::Numeric numeric) {
+  if (e - b <= PathStreamFitter::kMaxWindow || numeric != job::Numeric::floating || !in.tols.empty()) return false;
+  if (criterion != job::Criterion::vertex && criterion != job::Criterion::band) return false;
+  for (std::size_t k = b + 1; k < e; ++k)
+    if (in.points[k] == in.points[k - 1]) return false;
+  return true;
+}
+
+bool fit_in_window(const io::PointFile& in, std::size_t p, std::size_t b, std::size_t e, job::Criterion criterion,
+                   double tol, double feed_mm_s, PathStreamFitter& window, FittedJob& out, std::string& error,
+                   Status& status) {
+  if (!window.start(criterion, job::Numeric::floating, feed_mm_s, PathStreamFitter::kMaxWindow, error)) {
+    status = Status::invalid_argument;
+    return false;
+  }
+  window.begin_path(in.file, p, tol);
+  control::CutPath path;
+  const PathStreamFitter::Sink sink = [&](const StreamedSegment& s) {
+    if (path.segments.empty()) path.start = s.from;
+    path.segments.push_back(s.cmd);
+    out.pieces.push_back(s.piece);
+    out.piece_path.push_back(p);
+    return true;
+  };
+  for (std::size_t k = b; k < e; ++k)
+    if (!window.push(in.points[k], k < in.point_lines.size() ? in.point_lines[k] : 0, sink, error, status)) return false;
+  if (!window.end_path(sink, error, status)) return false;
+  out.lines_for_arcs += window.stats().lines_for_arcs;
+  out.job.forced_commits += window.stats().forced;
+  if (path.segments.empty()) return true;  // the whole path is shorter than the grid
+  out.job.paths.push_back(std::move(path));
+  out.path_point.push_back(b);
+  return true;
+}
+
+}  // namespace
+
 bool fit_paths(const io::PointFile& in, job::Criterion criterion, double tol, double feed_mm_s,
                FittedJob& out, std::string& error, Status& status, job::Numeric numeric) {
   out = FittedJob{};
   std::vector<std::size_t> begins = in.path_begin;
   if (begins.empty()) begins.push_back(0);
+  std::unique_ptr<PathStreamFitter> window;  // for paths longer than it
   for (std::size_t p = 0; p < begins.size(); ++p) {
     const std::size_t b = begins[p];
     const std::size_t e = p + 1 < begins.size() ? begins[p + 1] : in.points.size();
+    if (streams(in, b, e, criterion, numeric)) {
+      if (!window) window = std::make_unique<PathStreamFitter>();
+      if (!fit_in_window(in, p, b, e, criterion, tol, feed_mm_s, *window, out, error, status)) return false;
+      continue;
+    }
     const std::vector<Vec2<double>> pts(in.points.begin() + static_cast<std::ptrdiff_t>(b),
                                         in.points.begin() + static_cast<std::ptrdiff_t>(e));
     std::vector<double> tols;

@@ -34,6 +34,9 @@ using JobAction = job::ProgramAction;
 struct Job {
   std::vector<CutPath> paths;
   std::vector<JobAction> actions;  // in order; each runs before paths[before_path] (or at the end)
+  // Where the fit's bounded window forced a commit (control/path_stream.hpp):
+  // those paths may have more pieces than the fewest. For the run report.
+  std::size_t forced_commits = 0;
 
   std::size_t segment_count() const;
   // The path holding job segment k, and k's index inside it.

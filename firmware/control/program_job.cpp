@@ -94,6 +94,7 @@ int fit_program_or_say(const job::GcodeProgram& prog, job::Criterion criterion, 
       out.piece_path.push_back(out.job.paths.size());
     }
     out.lines_for_arcs += f.lines_for_arcs;
+    out.job.forced_commits += f.job.forced_commits;
     out.job.paths.push_back(std::move(path));
     out.path_point.push_back(b);
   }

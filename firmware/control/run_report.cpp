@@ -124,6 +124,7 @@ std::string format_run_json(const RunSummary& s) {
     out.insert(out.find("  \"segments_planned\":"), z);
   }
   out.insert(out.find("  \"link\":"), std::string("  \"dry_run_option\": ") + (s.dry_run_option ? "true" : "false") + ",\n");
+  out.insert(out.find("  \"segments_planned\":"), "  \"fit_forced_commits\": " + std::to_string(s.forced_commits) + ",\n");
   char ferror[160];
   std::snprintf(ferror, sizeof ferror, "{\"max_mm\": %.6f, \"at_fault_mm\": %.6f, \"limit_at_fault_mm\": %.6f}",
                 s.max_ferror_mm, s.ferror_at_fault_mm, s.ferror_limit_mm);
@@ -167,6 +168,8 @@ std::string format_run_summary(const RunSummary& s) {
                  std::to_string(s.actions) + " program actions";
   }
   if (s.dry_run_option) program += "; DRY RUN (--dry-run): torch and gas outputs held off";
+  if (s.forced_commits > 0)
+    program += "; " + std::to_string(s.forced_commits) + " forced commits in the fit's window (more pieces than the fewest)";
   std::string out = std::string(head) + tail + program + "; torch " + (s.torch_on ? "ON" : "off") +
                     (s.reason.empty() ? "" : "; stopped: " + s.reason) + "\n";
   if (!s.cut_rules.empty()) {  // path N rule feed %, ...

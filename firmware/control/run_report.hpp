@@ -63,6 +63,8 @@ struct RunSummary {
   double max_ferror_mm = 0.0, ferror_at_fault_mm = 0.0, ferror_limit_mm = 0.0;
   // Where the cutting rules applied (FittedJob::cut_rules): path, rule, feed %.
   std::vector<CutRuleNote> cut_rules;
+  // Where the fit's bounded window forced a commit (Job::forced_commits).
+  std::size_t forced_commits = 0;
 };
 
 // The summary's fields that come from the controller's report and the

@@ -74,6 +74,7 @@ int run_on_machine(const Job& job, const config::Config& cfg, hal::SegmentLink& 
   sum.simulated = false;
   if (program != nullptr) control::describe_program(*program, sum);
   if (cut_rules != nullptr) sum.cut_rules = *cut_rules;
+  sum.forced_commits = job.forced_commits;
   sum.dry_run_option = dry_run;
   sum.torch_on = ctl.torch();
   sum.duration_s = now;  // on the loop's clock: overrun cycles are skipped, not counted

@@ -328,6 +328,7 @@ int run_sim(const SimOptions& given) {
   sum.rt = res.rt;
   sum.rt_histogram = res.rt_histogram;
   sum.cut_rules = fitted.cut_rules;
+  sum.forced_commits = fitted.job.forced_commits;
   if (gcode) control::describe_program(prog, sum);
   sum.dry_run_option = opts.dry_run;
   if (!journal) {  // no journal: count repeats in this run's own record
