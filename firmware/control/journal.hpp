@@ -15,6 +15,10 @@
 // not known done: it is cut again on resume (from the cut_to slot's point).
 // The format is text lines (control/journal_record.hpp), readable with `cat`.
 //
+// The controller does not call these in its cycle: it queues them to a
+// JournalWriter (control/journal_writer.hpp), whose thread writes and syncs
+// them in order; completed(k, false) and sync() let it sync a batch at once.
+//
 // completed(k) takes segments in order: k <= last_completed + 1 (a repeat is
 // journalled and counted as a duplicate; a gap is refused). cut_to() does not
 // allocate. One process at a time: the file is flock()ed while open.
@@ -69,7 +73,8 @@ class Journal {
   Journal(const Journal&) = delete;
   Journal& operator=(const Journal&) = delete;
 
-  bool completed(std::uint32_t segment);  // appended and synced
+  bool completed(std::uint32_t segment, bool sync = true);  // appended (and synced)
+  bool sync();                            // every appended record on disk (fdatasync)
   bool cut_to(const CutPoint& p);         // in place, not synced
   bool finished();                        // appended and synced
   const JournalState& state() const { return state_; }
@@ -77,7 +82,7 @@ class Journal {
 
  private:
   Journal() = default;
-  bool append(const char* text, std::size_t n);
+  bool append(const char* text, std::size_t n, bool sync = true);
   void fail(const char* what, int err);
   int fd_ = -1;
   std::uint64_t append_at_ = 0;  // file offset of the next appended record
