@@ -1,5 +1,6 @@
 #include "control/controller.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "control/format_text.hpp"
@@ -67,12 +68,17 @@ void Controller::start(const ResumePoint& from) {
   finished_ = false;
   have_status_ = false;
   has_tail_ = false;
+  // The longest block the cycle queues: a path (+ a resumed segment's split,
+  // resume_segment.hpp), or the moves before a path and its travel, or the moves after it.
   std::size_t longest = 0;
-  for (const CutPath& p : job_.paths) longest = p.segments.size() > longest ? p.segments.size() : longest;
+  for (const CutPath& p : job_.paths)
+    longest = std::max({longest, p.segments.size() + 2, p.before.size() + 1, p.after.size()});
   queue_.clear();
-  queue_.reserve(longest + 2);  // + a resumed segment's split (resume_segment.hpp)
+  queue_.reserve(longest);
   job_of_wire_.clear();
-  job_of_wire_.reserve(n + job_.paths.size() + 1);
+  std::size_t moves = 0;  // wire segments that are not job segments: travels, z moves
+  for (const CutPath& p : job_.paths) moves += p.before.size() + 1 + p.after.size();
+  job_of_wire_.reserve(n + moves + 2);  // + a resumed segment's split
   next_seg_ = from.first;
   pierce_at_ = from.from;
   state_ = State::ready;

@@ -129,6 +129,10 @@ class Controller {
   // Done, or stopped by a fault with the board at rest: nothing more will happen.
   // Also waits for the journal writer to have synced everything.
   bool finished() const { return finished_ && (writer_ == nullptr || writer_abandoned_); }
+  // The simulator's clock waits while this holds (its disk is not simulated):
+  // the writer is behind by more than half its queue, or the run is over and
+  // waits for it. False without a writer, or once it failed.
+  bool journal_lagging() const;
   // The journal's writer while a run is on (tests hold it to fill its queue).
   JournalWriter* journal_writer() { return writer_.get(); }
   bool torch() const { return torch_; }

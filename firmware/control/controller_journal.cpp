@@ -30,6 +30,11 @@ bool Controller::journal_finished() {
   return false;
 }
 
+bool Controller::journal_lagging() const {
+  if (!writer_ || writer_abandoned_ || writer_->failed()) return false;
+  return finished_ ? !writer_->caught_up() : writer_->queued() > writer_->capacity() / 2;
+}
+
 std::string Controller::journal_error() const {
   if (journal_full_)
     return format_text("journal: the writer's queue is full (%zu records not yet on disk): the disk is stalled or "
