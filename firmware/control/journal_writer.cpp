@@ -1,5 +1,8 @@
 #include "control/journal_writer.hpp"
 
+#include <pthread.h>
+#include <sched.h>
+
 #include <chrono>
 #include <cstdio>
 
@@ -59,6 +62,9 @@ void JournalWriter::fail() {
 }
 
 void JournalWriter::run() {
+  // Not real-time: a thread started from a SCHED_FIFO one inherits its policy.
+  sched_param sp{};
+  pthread_setschedparam(pthread_self(), SCHED_OTHER, &sp);
   for (;;) {
     const bool stopping = stop_.load(std::memory_order_acquire);
     if (hold_.load(std::memory_order_acquire) || failed() || q_.empty()) {

@@ -2,6 +2,9 @@
 
 #include "kerf/hal/canopen.hpp"
 
+#include <pthread.h>
+#include <sched.h>
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -299,6 +302,8 @@ void CspSegmentLink::run_sink(SinkFn fn, double period_s) {
   if (!sink_ || sink_thread_.joinable()) return;
   sink_stop_.store(false);
   sink_thread_ = std::thread([this, fn = std::move(fn), period_s] {
+    sched_param sp{};  // not real-time: a thread started from a SCHED_FIFO one inherits its policy
+    pthread_setschedparam(pthread_self(), SCHED_OTHER, &sp);
     while (!sink_stop_.load(std::memory_order_acquire)) {
       drain(fn);
       std::this_thread::sleep_for(std::chrono::duration<double>(period_s));
