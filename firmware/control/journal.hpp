@@ -5,10 +5,10 @@
 // Two kinds of record:
 // - completed(k): job segment k (0-based, in job order) ran to its end.
 //   Appended and fdatasync'd before the call returns, so it survives a power
-//   loss. The controller writes it in the cycle the board reports the
-//   segment done, before it journals or commands anything that follows.
+//   loss. The controller records it in the cycle the board reports the
+//   segment done, before any record that follows.
 // - cut_to(k, point): segment k has been cut (torch on) from its start up to
-//   `point`. Overwritten in place every cycle without a sync: it survives a
+//   `point`. Overwritten in place without a sync: it survives a
 //   crash or kill -9 (the page cache outlives the process), not a power loss.
 // Every record carries a checksum; a torn or corrupt tail is ignored on
 // reading (and reported), never trusted. A torn `done k` therefore means k is
