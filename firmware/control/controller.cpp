@@ -1,5 +1,6 @@
 #include "control/controller.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "control/format_text.hpp"
@@ -52,8 +53,14 @@ Controller::Controller(const Job& job, const ControllerConfig& cfg, hal::Segment
     : job_(job), cfg_(cfg), link_(link), gpio_(gpio), journal_(journal),
       actions_(job, cfg.outputs, cfg.operator_delay_s), latch_(cfg.reset_at_start), ferror_(cfg.ferror) {}
 
+Controller::~Controller() = default;  // the writer's destructor writes what is queued
+
 void Controller::start(const ResumePoint& from) {
   const std::size_t n = job_.segment_count();
+  // The writer thread from the first start on (a restart after a reset keeps it).
+  const bool journal_done = journal_ != nullptr && writer_ == nullptr && journal_->state().finished;
+  if (journal_ && !cfg_.journal_inline && !writer_) writer_ = std::make_unique<JournalWriter>(*journal_, cfg_.journal_queue);
+  finished_at_ = {};
   report_ = RunReport{};
   report_.planned = n;
   report_.first = from.first;
@@ -61,19 +68,24 @@ void Controller::start(const ResumePoint& from) {
   finished_ = false;
   have_status_ = false;
   has_tail_ = false;
+  // The longest block the cycle queues: a path (+ a resumed segment's split,
+  // resume_segment.hpp), or the moves before a path and its travel, or the moves after it.
   std::size_t longest = 0;
-  for (const CutPath& p : job_.paths) longest = p.segments.size() > longest ? p.segments.size() : longest;
+  for (const CutPath& p : job_.paths)
+    longest = std::max({longest, p.segments.size() + 2, p.before.size() + 1, p.after.size()});
   queue_.clear();
-  queue_.reserve(longest + 2);  // + a resumed segment's split (resume_segment.hpp)
+  queue_.reserve(longest);
   job_of_wire_.clear();
-  job_of_wire_.reserve(n + job_.paths.size() + 1);
+  std::size_t moves = 0;  // wire segments that are not job segments: travels, z moves
+  for (const CutPath& p : job_.paths) moves += p.before.size() + 1 + p.after.size();
+  job_of_wire_.reserve(n + moves + 2);  // + a resumed segment's split
   next_seg_ = from.first;
   pierce_at_ = from.from;
   state_ = State::ready;
   if (from.done || n == 0) {
     state_ = State::done;
     finished_ = true;
-    if (journal_ && !journal_->state().finished) journal_->finished();
+    if (journal_ && !journal_done) journal_finished();
     return;
   }
   // Resumed inside a segment: its rest on the link's grid, by the fit's
@@ -88,14 +100,14 @@ void Controller::start(const ResumePoint& from) {
   }
   if (resumed_.whole || distance(from.from, job_.segment(next_seg_).end) < kSamePoint) {
     resumed_.clear();
-    if (journal_) journal_->completed(static_cast<std::uint32_t>(next_seg_));
+    if (journal_) journal_completed(static_cast<std::uint32_t>(next_seg_));
     report_.last_completed = static_cast<std::int64_t>(next_seg_);
     ++report_.completed_this_run;
     ++next_seg_;
     if (next_seg_ == n) {
       state_ = State::done;
       finished_ = true;
-      if (journal_) journal_->finished();
+      if (journal_) journal_finished();
       return;
     }
     pierce_at_ = job_.segment_start(next_seg_);
@@ -108,6 +120,7 @@ void Controller::start(const ResumePoint& from) {
   first_actions_ = i == 0 && distance(pierce_at_, job_.paths[path_].start) < kSamePoint;
   if (!actions_.replay_outputs(first_actions_ ? path_ : path_ + 1) && stop_request_.empty())
     stop_request_ = actions_.error();  // a fault in the first cycle, before anything moves
+  report_.actions.reserve(job_.paths.size() + 8);
 }
 
 // job_of_wire_: the job segment k of each wire segment; -1 a rapid; -2 - k
@@ -128,7 +141,10 @@ std::int64_t Controller::wire_job(std::size_t i) const {
 }
 
 void Controller::cycle(double now_s) {
-  if (finished_) return;
+  if (finished_) {
+    settle_journal();
+    return;
+  }
   cycle_steps(now_s);
   drive_thc_lock();
 }
@@ -238,13 +254,18 @@ void Controller::record_completions() {
     ++seen_executed_;
     const std::int64_t k = job_segment_of(seen_executed_);
     if (k < 0 || !completes_job_segment(seen_executed_)) continue;
-    if (journal_ && !journal_->completed(static_cast<std::uint32_t>(k))) {
+    const bool journalled = journal_ == nullptr || journal_completed(static_cast<std::uint32_t>(k));
+    if (!journalled && !journal_full_) {  // not written: not counted
       journal_failed_ = true;
       return;
     }
-    report_.last_completed = k;
+    report_.last_completed = k;  // queued (a full queue still took it from its reserve)
     report_.has_cut_to = false;
     ++report_.completed_this_run;
+    if (!journalled) {
+      journal_failed_ = true;
+      return;
+    }
   }
 }
 
@@ -252,16 +273,16 @@ void Controller::record_cut_to() {
   if (torch_) record_cut_point();
 }
 
-void Controller::record_cut_point() {
+void Controller::record_cut_point(bool urgent) {
   const std::int64_t k = job_segment_of(st_.executing);
   if (k < 0 || k != report_.last_completed + 1) return;
   report_.has_cut_to = true;
   report_.cut_to = {static_cast<std::uint32_t>(k), st_.position};
-  if (journal_) journal_->cut_to(report_.cut_to);
+  if (journal_) journal_cut_to(report_.cut_to, urgent);
 }
 
 void Controller::torch_went_off() {
-  record_cut_point();  // the cut ends where the torch goes off
+  record_cut_point(true);  // the cut ends where the torch goes off: from the queue's reserve if need be
   report_.torch_off_valid = true;
   report_.torch_off_at = st_.position;
 }
@@ -417,8 +438,9 @@ void Controller::path_finished(double now_s) {
 }
 
 void Controller::run_state(double now_s) {
-  if (journal_failed_) {
-    stop(State::fault, std::string("journal: ") + journal_->last_error(), now_s);
+  if (journal_failed_ || (writer_ && writer_->failed())) {
+    journal_failed_ = true;
+    stop(State::fault, journal_error(), now_s);
     return;
   }
   const bool hold_pressed = in_.hold && !prev_in_.hold;

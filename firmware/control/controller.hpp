@@ -26,11 +26,17 @@
 // following error (actual vs commanded position, FollowingError) is a fault.
 //
 // The controller never blocks: each cycle makes at most a few link
-// transactions and returns. It allocates only in start().
+// transactions and returns. It allocates only in start() (and in a fault's
+// reason text), and never waits on the disk: journal records go through a
+// JournalWriter's queue to its thread (control/journal_writer.hpp); a full
+// queue is a fault (torch off, motion stopped on the path, the refused record
+// still written from the queue's reserve). A run finishes only once the
+// writer has synced every record: the report's progress is what is on disk.
 #pragma once
 
 #include <chrono>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -38,6 +44,7 @@
 #include "control/job_actions.hpp"
 #include "control/following_error.hpp"
 #include "control/journal.hpp"
+#include "control/journal_writer.hpp"
 #include "control/resume_segment.hpp"
 #include "control/safety_latch.hpp"
 #include "kerf/hal/gpio.hpp"
@@ -69,6 +76,11 @@ struct ControllerConfig {
   bool reset_at_start = true;
   bool wait_for_reset = false;
   FerrorLimits ferror;  // machine.ferror, machine.min_ferror, max_feed
+  // The journal: queued to a writer thread (records of capacity), or written
+  // and synced in the cycle (journal_inline: the old way, for the benchmark).
+  bool journal_inline = false;
+  std::size_t journal_queue = JournalWriter::kDefaultCapacity;
+  double journal_drain_timeout_s = 10.0;  // wall time the end of a run waits for the writer
 };
 
 struct RunReport {
@@ -108,13 +120,21 @@ class Controller {
   void start(const ResumePoint& from);
   // One cycle at controller time now_s (monotonic; simulated in the simulator).
   void cycle(double now_s);
+  ~Controller();
   // Stops the run in the next cycle as a fault with this reason (a signal,
   // the operator): torch off, motion stopped on the path, progress kept.
   void request_stop(const std::string& why) { stop_request_ = why; }
 
   State state() const { return state_; }
   // Done, or stopped by a fault with the board at rest: nothing more will happen.
-  bool finished() const { return finished_; }
+  // Also waits for the journal writer to have synced everything.
+  bool finished() const { return finished_ && (writer_ == nullptr || writer_abandoned_); }
+  // The simulator's clock waits while this holds (its disk is not simulated):
+  // the writer is behind by more than half its queue, or the run is over and
+  // waits for it. False without a writer, or once it failed.
+  bool journal_lagging() const;
+  // The journal's writer while a run is on (tests hold it to fill its queue).
+  JournalWriter* journal_writer() { return writer_.get(); }
   bool torch() const { return torch_; }
   bool link_down() const { return link_down_; }
   const RunReport& report() const { return report_; }
@@ -139,7 +159,7 @@ class Controller {
   bool block_done() const;
   void record_completions();
   void record_cut_to();     // while the torch is on: how far the cut has come
-  void record_cut_point();  // the board's position on the running segment, to the journal
+  void record_cut_point(bool urgent = false);  // the board's position on the running segment, to the journal
   void torch_went_off();    // the cut point and the report's torch-off position
   bool set_torch(bool on, double now_s);
   void stop(State s, const std::string& why, double now_s);
@@ -148,6 +168,13 @@ class Controller {
   void run_actions_or_travel(double now_s);  // the actions before paths[path_], then its travel
   void actions_done(double now_s);
   void finish_job(double now_s);
+  // The journal, through the writer when there is one (controller_journal.cpp).
+  bool journal_completed(std::uint32_t k);
+  void journal_cut_to(const CutPoint& p, bool urgent);
+  bool journal_finished();
+  bool journal_caught_up() const;
+  std::string journal_error() const;
+  void settle_journal();  // finished: wait for the writer, then close it
   double pierce_delay() const;
   // controller_safety.cpp
   void cycle_steps(double now_s);
@@ -177,6 +204,10 @@ class Controller {
   bool have_status_ = false, at_rest_ = false;
   int rest_polls_ = 0;
   bool journal_failed_ = false;
+  bool journal_full_ = false;  // the writer's queue refused a record
+  std::unique_ptr<JournalWriter> writer_;
+  bool writer_abandoned_ = false;  // it did not catch up within journal_drain_timeout_s
+  WallClock::time_point finished_at_{};
   std::string stop_request_;
   WallClock::time_point link_down_since_{};
   bool link_down_ = false;

@@ -32,8 +32,9 @@ void Controller::finish_job(double now_s) {
   }
   state_ = State::done;
   report_.state = State::done;
-  if (journal_ && !journal_->finished()) {
-    stop(State::fault, std::string("journal: ") + journal_->last_error(), now_s);
+  if (journal_ && !journal_finished()) {
+    journal_failed_ = true;
+    stop(State::fault, journal_error(), now_s);
     return;
   }
   report_.stopped_at = st_.position;

@@ -331,14 +331,14 @@ void Journal::fail(const char* what, int err) {
   error_.assign(buf);
 }
 
-bool Journal::append(const char* text, std::size_t n) {
+bool Journal::append(const char* text, std::size_t n, bool sync) {
   char line[rec::kMaxLine];
   const std::size_t len = rec::encode(text, n, 0, line);
   if (len == 0) {
     fail("record too long", 0);
     return false;
   }
-  if (!write_all(fd_, line, len, append_at_) || ::fdatasync(fd_) != 0) {
+  if (!write_all(fd_, line, len, append_at_) || (sync && ::fdatasync(fd_) != 0)) {
     const int err = errno;
     // Drop whatever part was written, so a later record does not follow a torn one.
     if (::ftruncate(fd_, static_cast<off_t>(append_at_)) != 0) {
@@ -350,7 +350,13 @@ bool Journal::append(const char* text, std::size_t n) {
   return true;
 }
 
-bool Journal::completed(std::uint32_t segment) {
+bool Journal::sync() {
+  if (::fdatasync(fd_) == 0) return true;
+  fail("cannot sync", errno);
+  return false;
+}
+
+bool Journal::completed(std::uint32_t segment, bool sync) {
   JournalState& s = state_;
   if (s.finished) {
     fail("completed() after finished()", 0);
@@ -366,7 +372,7 @@ bool Journal::completed(std::uint32_t segment) {
   }
   char text[32];
   const int n = std::snprintf(text, sizeof text, "done %u", static_cast<unsigned>(segment));
-  if (!append(text, static_cast<std::size_t>(n))) return false;
+  if (!append(text, static_cast<std::size_t>(n), sync)) return false;
   if (segment <= s.last_completed) ++s.duplicates;
   s.last_completed = std::max<std::int64_t>(s.last_completed, segment);
   ++s.executed_total;

@@ -5,15 +5,19 @@
 // Two kinds of record:
 // - completed(k): job segment k (0-based, in job order) ran to its end.
 //   Appended and fdatasync'd before the call returns, so it survives a power
-//   loss. The controller writes it in the cycle the board reports the
-//   segment done, before it journals or commands anything that follows.
+//   loss. The controller records it in the cycle the board reports the
+//   segment done, before any record that follows.
 // - cut_to(k, point): segment k has been cut (torch on) from its start up to
-//   `point`. Overwritten in place every cycle without a sync: it survives a
+//   `point`. Overwritten in place without a sync: it survives a
 //   crash or kill -9 (the page cache outlives the process), not a power loss.
 // Every record carries a checksum; a torn or corrupt tail is ignored on
 // reading (and reported), never trusted. A torn `done k` therefore means k is
 // not known done: it is cut again on resume (from the cut_to slot's point).
 // The format is text lines (control/journal_record.hpp), readable with `cat`.
+//
+// The controller does not call these in its cycle: it queues them to a
+// JournalWriter (control/journal_writer.hpp), whose thread writes and syncs
+// them in order; completed(k, false) and sync() let it sync a batch at once.
 //
 // completed(k) takes segments in order: k <= last_completed + 1 (a repeat is
 // journalled and counted as a duplicate; a gap is refused). cut_to() does not
@@ -69,7 +73,8 @@ class Journal {
   Journal(const Journal&) = delete;
   Journal& operator=(const Journal&) = delete;
 
-  bool completed(std::uint32_t segment);  // appended and synced
+  bool completed(std::uint32_t segment, bool sync = true);  // appended (and synced)
+  bool sync();                            // every appended record on disk (fdatasync)
   bool cut_to(const CutPoint& p);         // in place, not synced
   bool finished();                        // appended and synced
   const JournalState& state() const { return state_; }
@@ -77,7 +82,7 @@ class Journal {
 
  private:
   Journal() = default;
-  bool append(const char* text, std::size_t n);
+  bool append(const char* text, std::size_t n, bool sync = true);
   void fail(const char* what, int err);
   int fd_ = -1;
   std::uint64_t append_at_ = 0;  // file offset of the next appended record

@@ -100,6 +100,8 @@ SimMachineResult run_sim_machine(const control::Job& job, const control::Control
         res.setup_error = std::string("this link has no fault ") + to_string(faults[next_fault - 1].kind);
         return res;
       }
+    // The journal's writer thread is not simulated: simulated time waits for it.
+    while (ctl.journal_lagging()) std::this_thread::sleep_for(std::chrono::microseconds(100));
     ctl.cycle(now);
     // Link faults are wall-time events (timeouts, the board's watchdog): while
     // the link is down the simulation runs at least in real time, so that the

@@ -68,6 +68,7 @@ void run_demo(double lag_alpha, DemoRun& out) {
   std::vector<std::uint32_t> all(n);
   for (std::uint32_t k = 0; k < n; ++k) all[k] = k + 1;
   EXPECT_EQ(rig.link->executed(), all);
+  ASSERT_EQ(rig.link->trace().size(), rig.link->trace_total()) << "the trace ring wrapped: part of the job unchecked";
   for (const auto& s : rig.link->trace()) {
     const Vec2<double> p{s.actual[0] * kCount, s.actual[1] * kCount};
     out.worst_path = std::max(out.worst_path, distance_to_path(job.path, p));

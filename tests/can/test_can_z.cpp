@@ -58,6 +58,7 @@ TEST(CanZ, ZMovesRunOnTheThirdDriveAtRestInXy) {
   EXPECT_EQ(rig.bus.drive(0).actual(), 10000);
   // z changes only while a z move runs, and then x and y stand still.
   const std::vector<hal::CspSample> trace = link->trace();
+  ASSERT_EQ(trace.size(), link->trace_total()) << "the trace ring wrapped";
   std::int64_t lowest = 0;
   for (std::size_t k = 1; k < trace.size(); ++k) {
     const hal::CspSample& a = trace[k - 1];

@@ -2,9 +2,13 @@
 
 #include "kerf/hal/canopen.hpp"
 
+#include <pthread.h>
+#include <sched.h>
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 namespace kerf::hal {
 
@@ -45,11 +49,14 @@ std::unique_ptr<CspSegmentLink> CspSegmentLink::create(AxisLink& axes, const Csp
 
 CspSegmentLink::CspSegmentLink(AxisLink& axes, const CspConfig& cfg)
     : axes_(axes), cfg_(cfg), storage_(cfg.queue_slots), motion_({storage_.data(), storage_.size()}),
-      ring_(cfg.queue_slots) {
-  trace_.reserve(cfg.trace_reserve);
+      ring_(cfg.queue_slots), trace_(cfg.trace_capacity), executed_(cfg.executed_capacity) {
+  if (cfg.sink_capacity > 0) sink_ = std::make_unique<SpscQueue<CspRecord>>(cfg.sink_capacity);
 }
 
-CspSegmentLink::~CspSegmentLink() { stop_clock(); }
+CspSegmentLink::~CspSegmentLink() {
+  stop_clock();
+  stop_sink();
+}
 
 bool CspSegmentLink::configure(std::string& error) {
   motion::MotionConfig<double> mc;
@@ -222,7 +229,13 @@ void CspSegmentLink::cycle() {
     target_[0] = c.x;
     target_[1] = c.y;
   }
-  for (std::uint32_t s = e.completed_from + 1; s <= e.completed_to; ++s) executed_.push_back(s);
+  for (std::uint32_t s = e.completed_from + 1; s <= e.completed_to; ++s) {
+    executed_.push(s);
+    CspRecord r;
+    r.executed = true;
+    r.seq = s;
+    record(r);
+  }
   const std::int32_t tx = static_cast<std::int32_t>(target_[0]);
   const std::int32_t ty = static_cast<std::int32_t>(target_[1]);
   const std::int32_t tz = has_z() ? z_counts() : 0;
@@ -262,8 +275,47 @@ void CspSegmentLink::cycle() {
   s.actual[1] = ay.actual;
   s.target_z = tz;
   s.torch = exec_->torch();
-  trace_.push_back(s);
+  trace_.push(s);
+  CspRecord r;
+  r.sample = s;
+  record(r);
   changed_.notify_all();
+}
+
+void CspSegmentLink::record(const CspRecord& r) {
+  if (sink_ && !sink_->try_push(r)) sink_dropped_.fetch_add(1, std::memory_order_relaxed);
+}
+
+std::size_t CspSegmentLink::drain(const SinkFn& fn) {
+  if (!sink_) return 0;
+  std::lock_guard<std::mutex> lock(drain_mu_);
+  std::size_t n = 0;
+  CspRecord r;
+  while (sink_->try_pop(r)) {
+    fn(r);
+    ++n;
+  }
+  return n;
+}
+
+void CspSegmentLink::run_sink(SinkFn fn, double period_s) {
+  if (!sink_ || sink_thread_.joinable()) return;
+  sink_stop_.store(false);
+  sink_thread_ = std::thread([this, fn = std::move(fn), period_s] {
+    sched_param sp{};  // not real-time: a thread started from a SCHED_FIFO one inherits its policy
+    pthread_setschedparam(pthread_self(), SCHED_OTHER, &sp);
+    while (!sink_stop_.load(std::memory_order_acquire)) {
+      drain(fn);
+      std::this_thread::sleep_for(std::chrono::duration<double>(period_s));
+    }
+    drain(fn);  // what the cycle pushed before the stop
+  });
+}
+
+void CspSegmentLink::stop_sink() {
+  if (!sink_thread_.joinable()) return;
+  sink_stop_.store(true, std::memory_order_release);
+  sink_thread_.join();
 }
 
 void CspSegmentLink::clock_loop(bool paced) {
@@ -301,12 +353,17 @@ const char* CspSegmentLink::last_error() const { return error_; }
 
 std::vector<CspSample> CspSegmentLink::trace() const {
   std::lock_guard<std::mutex> lock(mu_);
-  return trace_;
+  return trace_.copy();
 }
 
 std::vector<std::uint32_t> CspSegmentLink::executed() const {
   std::lock_guard<std::mutex> lock(mu_);
-  return executed_;
+  return executed_.copy();
+}
+
+std::uint64_t CspSegmentLink::trace_total() const {
+  std::lock_guard<std::mutex> lock(mu_);
+  return trace_.total();
 }
 
 }  // namespace kerf::hal

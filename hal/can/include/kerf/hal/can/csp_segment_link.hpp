@@ -13,9 +13,17 @@
 // run_clock() runs it on a thread, either as fast as the job allows (only
 // while the queue is full or finished, so host latency cannot starve it) or
 // paced by the AxisLink itself (SocketCAN: wall-clock SYNC).
+//
+// cycle() allocates nothing: the trace (one CspSample per SYNC) and the
+// executed sequence numbers go to fixed-size rings (trace(), executed(): the
+// last trace_capacity / executed_capacity of them) and, when sink_capacity > 0,
+// also to a lock-free queue that a non-real-time thread drains (drain(), or
+// run_sink()'s thread) to keep all of it. A full sink queue drops the record
+// and counts it (sink_dropped()): the trace is a record, not the job.
 #pragma once
 
 #include <array>
+#include <atomic>
 #include <condition_variable>
 #include <cstdint>
 #include <functional>
@@ -27,6 +35,7 @@
 #include <vector>
 
 #include "kerf/hal/axis_link.hpp"
+#include "kerf/hal/rings.hpp"
 #include "kerf/hal/segment_link.hpp"
 #include "kerf/motion/board_executor.hpp"
 #include "kerf/motion/interpolator_motion.hpp"
@@ -40,7 +49,9 @@ struct CspConfig {
   double corner_angle_rad = 0.05;  // tangent turns above this are corners
   double vad = 0.9;                // thc_lock below this fraction of the cut feed
   std::size_t queue_slots = 32;    // the credit the host sees, and the look-ahead behind it
-  std::size_t trace_reserve = 0;
+  std::size_t trace_capacity = 1 << 16;    // samples kept (65 s at a 1 ms SYNC)
+  std::size_t executed_capacity = 1 << 14; // sequence numbers kept
+  std::size_t sink_capacity = 0;           // > 0: the sink queue (records), drained off the cycle
   // A z axis (axis 2): its limits and resolution; period 0 (the default): none.
   motion::AxisLimits<double> z{};
   double z_counts_per_mm = 1000.0;
@@ -54,6 +65,14 @@ struct CspSample {
   std::int32_t actual[2]{};         // counts the drives reported
   std::int64_t target_z = 0;        // counts sent to the z drive (0 without one)
   bool torch = false;
+};
+
+// What the sink queue carries: a sample each SYNC, an executed sequence number
+// for each segment completed.
+struct CspRecord {
+  bool executed = false;  // true: `seq` completed; false: `sample`
+  std::uint32_t seq = 0;
+  CspSample sample;
 };
 
 class CspSegmentLink final : public SegmentLink {
@@ -79,8 +98,20 @@ class CspSegmentLink final : public SegmentLink {
   // Blocks until pred(status) holds or `timeout_s` of wall time pass.
   bool wait_until(const std::function<bool(const BoardStatus&)>& pred, double timeout_s);
 
+  // The last trace_capacity samples and executed_capacity sequence numbers, oldest first.
   std::vector<CspSample> trace() const;
   std::vector<std::uint32_t> executed() const;
+  std::uint64_t trace_total() const;  // samples taken since the link was made
+
+  // The sink (sink_capacity > 0). drain(): from one non-real-time thread at a
+  // time, hands every queued record to `fn`; returns how many. run_sink()
+  // drains on its own thread every `period_s`; stop_sink() joins it after a
+  // last drain. sink_dropped(): records refused because the queue was full.
+  using SinkFn = std::function<void(const CspRecord&)>;
+  std::size_t drain(const SinkFn& fn);
+  void run_sink(SinkFn fn, double period_s = 0.01);
+  void stop_sink();
+  std::uint64_t sink_dropped() const { return sink_dropped_.load(std::memory_order_relaxed); }
   AxisLink& axes() { return axes_; }
 
  private:
@@ -92,6 +123,7 @@ class CspSegmentLink final : public SegmentLink {
   void fault_locked(std::uint16_t bit, const char* why);
   BoardStatus status_locked() const;
   void clock_loop(bool paced);
+  void record(const CspRecord& r);
 
   AxisLink& axes_;
   CspConfig cfg_;
@@ -109,8 +141,13 @@ class CspSegmentLink final : public SegmentLink {
   Vec2<double> position_{};  // mm: the setpoint of the SYNC the feedback is from
   Vec2<double> actual_{};    // mm: the drives' reported positions (0x6064)
   std::array<std::array<std::int32_t, 2>, 4> sent_{};  // setpoints by SYNC cycle, modulo 4
-  std::vector<CspSample> trace_;
-  std::vector<std::uint32_t> executed_;
+  HistoryRing<CspSample> trace_;
+  HistoryRing<std::uint32_t> executed_;
+  std::unique_ptr<SpscQueue<CspRecord>> sink_;  // null without a sink
+  std::atomic<std::uint64_t> sink_dropped_{0};
+  std::thread sink_thread_;
+  std::atomic<bool> sink_stop_{false};
+  std::mutex drain_mu_;  // drain() has one consumer at a time
   char error_[240] = "";
   std::uint8_t homed_ = 0;
   HomingState homing_ = HomingState::none;
