@@ -138,4 +138,19 @@ bool check_homed(const config::Config& cfg, const job::MachineState& state, bool
   return true;
 }
 
+bool check_board_homed(const job::MachineState& state, hal::SegmentLink& link, std::string& error) {
+  hal::BoardStatus st;
+  if (link.status(st) != hal::LinkError::none) {
+    error = std::string("cannot read the board's homed state: ") + link.last_error();
+    return false;
+  }
+  std::string lost;
+  for (int a = 0; a < 2; ++a)
+    if (state.homed[a] && (st.homed & (1u << a)) == 0) lost += lost.empty() ? kAxis[a] : std::string(" ") + kAxis[a];
+  if (lost.empty()) return true;
+  error = "the state file says homed, but the board says " + lost +
+          " not homed since its power-up (was it power-cycled?): run `kerf home` again";
+  return false;
+}
+
 }  // namespace kerf::machine

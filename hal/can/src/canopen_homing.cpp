@@ -8,6 +8,20 @@ namespace kerf::hal {
 
 using namespace canopen;
 
+AxisError CanOpenMaster::homed_since_power_up(std::size_t axis, bool& homed) {
+  homed = false;
+  std::uint32_t sw = 0;
+  if (const AxisError e = sdo_write(axis, kModeOfOperation, 0, static_cast<std::uint8_t>(kModeHoming), 1);
+      e != AxisError::none)
+    return e;
+  const AxisError read = sdo_read(axis, kStatusword, 0, sw);
+  if (const AxisError e = sdo_write(axis, kModeOfOperation, 0, static_cast<std::uint8_t>(kModeCsp), 1);
+      e != AxisError::none)
+    return e;
+  homed = read == AxisError::none && (sw & kSwHomingAttained) != 0;
+  return read;
+}
+
 AxisError CanOpenMaster::home(std::size_t axis, const DriveHoming& h, DriveHomingResult& result,
                               const std::function<bool()>& stop) {
   result = DriveHomingResult::drive_error;

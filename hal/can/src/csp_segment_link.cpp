@@ -121,6 +121,11 @@ LinkError CspSegmentLink::status(BoardStatus& status) {
   return LinkError::none;
 }
 
+void CspSegmentLink::set_homed(std::uint8_t bits) {
+  std::lock_guard<std::mutex> lock(mu_);
+  homed_ = bits;
+}
+
 LinkError CspSegmentLink::home(const HomeCommand& h, const std::function<bool()>& stop) {
   std::lock_guard<std::mutex> lock(mu_);  // the clock waits: the homing runs the SYNC itself
   const BoardState st = exec_->state();

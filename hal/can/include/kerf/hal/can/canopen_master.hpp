@@ -55,6 +55,11 @@ class CanOpenMaster final : public AxisLink {
   AxisError home(std::size_t axis, const DriveHoming& h, DriveHomingResult& result,
                  const std::function<bool()>& stop) override;
 
+  // Whether the axis's drive has been homed since its power-up: mode 6 for
+  // one SDO read of the statusword (bit 12, homing attained), then CSP again.
+  // Before enable(): nothing moves.
+  AxisError homed_since_power_up(std::size_t axis, bool& homed);
+
   // Expedited SDO, exposed for setup beyond the standard set and for tests.
   AxisError sdo_write(std::size_t axis, std::uint16_t index, std::uint8_t sub, std::uint32_t value,
                       std::uint8_t size);
