@@ -202,6 +202,27 @@ TEST(HomeSession, HomesXThenYIntoTheStateFile) {
   EXPECT_TRUE(machine::check_homed([] { auto c = session_config(); c.machine.state = "s"; return c; }(), state, false, why)) << why;
 }
 
+// kerf run's cross-check once the link is up: the board's register 22 must
+// say homed for each axis the state file does. A power-cycled board (a new
+// one) has lost its home.
+TEST(HomeSession, KerfRunCrossChecksTheBoardsHomedFlag) {
+  job::MachineState state;
+  std::string error;
+  {
+    HomeRig rig(Wire::tcp, true);
+    rig.board->start_servo(0.0);
+    ASSERT_TRUE(machine::home_axes(session_config(), 3u, *rig.link, nullptr, state, error, nullptr)) << error;
+    EXPECT_TRUE(machine::check_board_homed(state, *rig.link, error)) << error;
+  }
+  HomeRig power_cycled(Wire::tcp, true);
+  EXPECT_FALSE(machine::check_board_homed(state, *power_cycled.link, error));
+  EXPECT_EQ(error, "the state file says homed, but the board says x y not homed since its power-up (was it "
+                   "power-cycled?): run `kerf home` again");
+  ASSERT_TRUE(machine::home_axes(session_config(), 1u, *power_cycled.link, nullptr, state, error, nullptr));
+  EXPECT_FALSE(machine::check_board_homed(state, *power_cycled.link, error));
+  EXPECT_NE(error.find("the board says y not homed"), std::string::npos) << error;
+}
+
 TEST(HomeSession, TheEStopAbortsItAndTheAxisStaysUnhomed) {
   HomeRig rig(Wire::tcp, true);
   rig.board->start_servo(1.0);  // real time: x needs 42.5 mm / 10 mm/s
