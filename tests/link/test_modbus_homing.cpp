@@ -215,6 +215,7 @@ TEST(HomeSession, KerfRunCrossChecksTheBoardsHomedFlag) {
     EXPECT_TRUE(machine::check_board_homed(state, *rig.link, error)) << error;
   }
   HomeRig power_cycled(Wire::tcp, true);
+  power_cycled.board->start_servo(0.0);
   EXPECT_FALSE(machine::check_board_homed(state, *power_cycled.link, error));
   EXPECT_EQ(error, "the state file says homed, but the board says x y not homed since its power-up (was it "
                    "power-cycled?): run `kerf home` again");
@@ -324,6 +325,76 @@ TEST(Jog, TheEStopStopsItOnThePath) {
   EXPECT_LT(at.x, 40.0);  // and stopped about 2 mm into a 95 mm jog
   std::this_thread::sleep_for(std::chrono::milliseconds(100));
   EXPECT_NEAR(rig.board->status().position.x, at.x, 0.5);  // braked, not travelling on
+}
+
+// Continuous jog (jog until released): to the soft limit at most, stopped by
+// the operator letting go (a ramp to a stop on the path, then idle) or the
+// E-stop. Refused before homing: tests/cli/bad_input.tsv (jog_continuous_not_homed).
+motion::SoftLimits<double> x_limits() {
+  motion::SoftLimits<double> lim;
+  lim.on[0] = true;
+  lim.min[0] = 0;
+  lim.max[0] = 50;  // y unlimited
+  return lim;
+}
+
+TEST(JogContinuous, StopsAtTheSoftLimit) {
+  HomeRig rig(Wire::tcp, true);
+  rig.board->start_servo(0.0);
+  job::MachineState state;
+  std::string error;
+  ASSERT_TRUE(machine::home_axes(session_config(), 3u, *rig.link, nullptr, state, error, nullptr)) << error;
+  Vec2<double> to{};
+  EXPECT_FALSE(machine::continuous_target({5.0, -1.0}, 1, 1, x_limits(), to));  // y has no limits
+  ASSERT_TRUE(machine::continuous_target({5.0, -1.0}, 0, 1, x_limits(), to));
+  EXPECT_EQ(to.x, 50.0);
+  EXPECT_EQ(to.y, -1.0);
+  Vec2<double> at{};
+  ASSERT_TRUE(machine::jog_until_released(*rig.link, nullptr, to, 50.0, [] { return false; }, at, error)) << error;
+  EXPECT_NEAR(at.x, 50.0, 1e-9);  // at the limit, not past it
+  ASSERT_TRUE(machine::continuous_target(at, 0, -1, x_limits(), to));
+  EXPECT_EQ(to.x, 0.0);
+}
+
+TEST(JogContinuous, StopsOnThePathWhenReleased) {
+  HomeRig rig(Wire::tcp, true, true);
+  rig.board->start_servo(1.0);
+  config::Config c = session_config();
+  c.machine.axes[0].home_search_speed = 6000;
+  c.machine.axes[0].home_latch_speed = 600;
+  job::MachineState state;
+  std::string error;
+  ASSERT_TRUE(machine::home_axes(c, 1u, *rig.link, nullptr, state, error, nullptr)) << error;
+  const auto t0 = std::chrono::steady_clock::now();
+  auto released = [&] { return std::chrono::steady_clock::now() - t0 > std::chrono::milliseconds(200); };
+  Vec2<double> at{};
+  ASSERT_TRUE(machine::jog_until_released(*rig.link, nullptr, {50.0, 30.0}, 10.0, released, at, error)) << error;
+  EXPECT_GT(at.x, 5.5);   // it had moved (about 2 mm in 0.2 s)
+  EXPECT_LT(at.x, 20.0);  // and stopped far short of the limit
+  const hal::BoardStatus st = rig.board->status();
+  EXPECT_EQ(st.state, hal::BoardState::idle);  // released is no fault: ready for the next jog
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  EXPECT_EQ(rig.board->status().position.x, at.x);  // stopped, and stays
+  ASSERT_TRUE(machine::jog_to(*rig.link, nullptr, {at.x + 1.0, 30.0}, 10.0, at, error)) << error;
+}
+
+TEST(JogContinuous, TheEStopStopsIt) {
+  HomeRig rig(Wire::tcp, true, true);
+  rig.board->start_servo(1.0);
+  config::Config c = session_config();
+  c.machine.axes[0].home_search_speed = 6000;
+  c.machine.axes[0].home_latch_speed = 600;
+  job::MachineState state;
+  std::string error;
+  ASSERT_TRUE(machine::home_axes(c, 1u, *rig.link, nullptr, state, error, nullptr)) << error;
+  sim::ScriptedGpio gpio;
+  ASSERT_TRUE(gpio.estop_at(0.2, true));
+  Vec2<double> at{};
+  EXPECT_FALSE(machine::jog_until_released(*rig.link, &gpio, {50.0, 30.0}, 10.0, [] { return false; }, at, error));
+  EXPECT_EQ(error, "E-stop: the jog stopped");
+  EXPECT_EQ(rig.board->status().state, hal::BoardState::fault);
+  EXPECT_GT(at.x, 5.0);
+  EXPECT_LT(at.x, 20.0);
 }
 
 }  // namespace
