@@ -77,11 +77,13 @@ bool CanMasterLink::start(hal::CanBus& bus, const CanLinkOptions& o, bool wall_c
     error = std::string("CAN bring-up: ") + master_->last_error();
     return false;
   }
-  // Homed since the drives' power-up (kerf run checks it against the state file).
+  // Homed since the drives' power-up (kerf run checks it against the state
+  // file). A drive without homing mode refuses mode 6 (SDO abort): not homed.
   std::uint8_t homed = 0;
   for (std::size_t a = 0; a < 2; ++a) {
     bool h = false;
-    if (master_->homed_since_power_up(a, h) != hal::AxisError::none) {
+    const hal::AxisError e = master_->homed_since_power_up(a, h);
+    if (e != hal::AxisError::none && e != hal::AxisError::sdo_abort) {
       error = std::string("CAN bring-up: reading the homed state: ") + master_->last_error();
       return false;
     }

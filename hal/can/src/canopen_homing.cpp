@@ -15,9 +15,10 @@ AxisError CanOpenMaster::homed_since_power_up(std::size_t axis, bool& homed) {
       e != AxisError::none)
     return e;
   const AxisError read = sdo_read(axis, kStatusword, 0, sw);
+  // Left in mode 6 the drive would not run CSP: never an abort the caller may pass over.
   if (const AxisError e = sdo_write(axis, kModeOfOperation, 0, static_cast<std::uint8_t>(kModeCsp), 1);
       e != AxisError::none)
-    return e;
+    return e == AxisError::sdo_abort ? AxisError::drive_fault : e;
   homed = read == AxisError::none && (sw & kSwHomingAttained) != 0;
   return read;
 }

@@ -57,7 +57,8 @@ class CanOpenMaster final : public AxisLink {
 
   // Whether the axis's drive has been homed since its power-up: mode 6 for
   // one SDO read of the statusword (bit 12, homing attained), then CSP again.
-  // Before enable(): nothing moves.
+  // Before enable(): nothing moves. sdo_abort: the drive has no homing mode
+  // (or refused the read); its mode is CSP again either way.
   AxisError homed_since_power_up(std::size_t axis, bool& homed);
 
   // Expedited SDO, exposed for setup beyond the standard set and for tests.
