@@ -450,8 +450,8 @@ TEST(HilVcan, HomingWithTheDrivesInAnotherProcess) {
   ASSERT_EQ(rig.link->status(st), LinkError::none);
   EXPECT_EQ(st.homing, hal::HomingState::no_switch);
   EXPECT_EQ(st.state, BoardState::fault);
-  EXPECT_GT(st.position.y, -5.0 - 1e-9);  // inside the search distance
-  EXPECT_LT(st.position.y, -4.8);         // after searching all of it
+  EXPECT_GT(st.position.y, -5.0 - 1e-9);  // inside the search distance, however late the feedback
+  EXPECT_LT(st.position.y, -4.5);         // after searching nearly all of it (the halt allows for late feedback)
   EXPECT_EQ(st.homed, 1);
 
   // kerf run's session: a new master on the same drives.

@@ -76,9 +76,11 @@ AxisError CanOpenMaster::homing_cycles(std::size_t axis, const DriveHoming& h, D
     const bool fresh = n.st.feedback_cycle + 1 >= counters_.cycles;
     if (fresh && (sw & kSwTargetReached) == 0) started = true;
     const bool halt = stop && stop();
-    // Halted a SYNC before the travel could pass max_travel: the feedback is
-    // a period old and the halt takes effect a period later.
-    const double ahead = 2.0 * h.search_speed * period;
+    // Halted before the travel could pass max_travel: the feedback is a
+    // period old (older when the drive's TPDO came late: a drive in another
+    // process, a loaded bus) and the halt takes effect a period later.
+    const std::uint64_t age = counters_.cycles > n.st.feedback_cycle + 1 ? counters_.cycles - n.st.feedback_cycle : 1;
+    const double ahead = static_cast<double>(age + 1) * h.search_speed * period;
     const bool too_far =
         static_cast<double>(std::llabs(std::int64_t{n.st.actual} - start)) + ahead > static_cast<double>(h.max_travel);
     if (halt || too_far) {
