@@ -128,6 +128,7 @@ struct HilRig {
     cfg.sdo_timeout_us = 2000000;
     cfg.boot_timeout_us = 5000000;
     cfg.enable_cycles = 500;
+    cfg.homing_lead_syncs = 5;  // as kerf run's link (machine/can_link.cpp): the TPDOs come late here
     master = hal::CanOpenMaster::create(*bus, cfg, err);
     ASSERT_TRUE(master) << err;
     ASSERT_EQ(master->bring_up(), hal::AxisError::none) << master->last_error();
@@ -444,7 +445,7 @@ TEST(HilVcan, HomingWithTheDrivesInAnotherProcess) {
   EXPECT_DOUBLE_EQ(st.position.x, -2.0);
 
   h.axis = 1;  // no switch
-  h.search_speed = 50;
+  h.search_speed = 25;  // 0.05 mm per SYNC: halted 0.25 mm ahead of the distance
   h.search_distance = 5;
   ASSERT_EQ(rig.link->home(h, {}), LinkError::none) << rig.link->last_error();
   ASSERT_EQ(rig.link->status(st), LinkError::none);

@@ -1,4 +1,5 @@
 // CanOpenMaster::home: CiA 402 homing mode on one drive (canopen_master.hpp).
+#include <algorithm>
 #include <cstdlib>
 
 #include "kerf/hal/can/canopen_master.hpp"
@@ -77,10 +78,11 @@ AxisError CanOpenMaster::homing_cycles(std::size_t axis, const DriveHoming& h, D
     if (fresh && (sw & kSwTargetReached) == 0) started = true;
     const bool halt = stop && stop();
     // Halted before the travel could pass max_travel: the feedback is a
-    // period old (older when the drive's TPDO came late: a drive in another
-    // process, a loaded bus) and the halt takes effect a period later.
-    const std::uint64_t age = counters_.cycles > n.st.feedback_cycle + 1 ? counters_.cycles - n.st.feedback_cycle : 1;
-    const double ahead = static_cast<double>(age + 1) * h.search_speed * period;
+    // period old or more (homing_lead_syncs; older still when no TPDO came)
+    // and the halt takes effect a period later.
+    const std::uint64_t age = counters_.cycles > n.st.feedback_cycle ? counters_.cycles - n.st.feedback_cycle : 0;
+    const std::uint64_t lead = std::max<std::uint64_t>(age + 1, cfg_.homing_lead_syncs);
+    const double ahead = static_cast<double>(lead) * h.search_speed * period;
     const bool too_far =
         static_cast<double>(std::llabs(std::int64_t{n.st.actual} - start)) + ahead > static_cast<double>(h.max_travel);
     if (halt || too_far) {

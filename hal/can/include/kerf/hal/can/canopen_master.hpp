@@ -26,6 +26,11 @@ struct CanOpenConfig {
   std::uint32_t sdo_timeout_us = 50000;
   std::uint32_t boot_timeout_us = 500000;  // reset node -> boot-up heartbeat
   std::uint32_t enable_cycles = 50;        // per 402 transition
+  // A homing search is halted this many SYNCs' travel before its search
+  // distance: the feedback's age plus the halt's own period. 2 where the
+  // feedback is one SYNC old (the in-process bus); more on a real bus, where
+  // a drive's TPDO can come a SYNC or more late.
+  std::uint32_t homing_lead_syncs = 2;
 };
 
 class CanOpenMaster final : public AxisLink {
