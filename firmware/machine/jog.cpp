@@ -48,7 +48,7 @@ bool stop_released(hal::SegmentLink& link, hal::BoardStatus& st, Vec2<double>& a
 }
 
 bool jog(hal::SegmentLink& link, hal::Gpio* gpio, Vec2<double> to, double feed, const std::function<bool()>& released,
-         Vec2<double>& at, std::string& error) {
+         Vec2<double>& at, std::string& error, Vec2<double>* released_at) {
   hal::BoardStatus st;
   auto link_error = [&](const char* what) {
     error = std::string(what) + ": " + link.last_error();
@@ -85,7 +85,10 @@ bool jog(hal::SegmentLink& link, hal::Gpio* gpio, Vec2<double> to, double feed, 
     }
     at = st.position;
     if (st.state == hal::BoardState::done) return true;
-    if (released && released()) return stop_released(link, st, at, error);
+    if (released && released()) {
+      if (released_at != nullptr) *released_at = st.position;
+      return stop_released(link, st, at, error);
+    }
     if (st.state == hal::BoardState::fault) {
       error = "the board faulted while jogging (faults 0x" + std::to_string(st.faults) + ")";
       return false;
@@ -103,12 +106,13 @@ bool jog(hal::SegmentLink& link, hal::Gpio* gpio, Vec2<double> to, double feed, 
 
 bool jog_to(hal::SegmentLink& link, hal::Gpio* gpio, Vec2<double> to, double feed, Vec2<double>& at,
             std::string& error) {
-  return jog(link, gpio, to, feed, {}, at, error);
+  return jog(link, gpio, to, feed, {}, at, error, nullptr);
 }
 
 bool jog_until_released(hal::SegmentLink& link, hal::Gpio* gpio, Vec2<double> to, double feed,
-                        const std::function<bool()>& released, Vec2<double>& at, std::string& error) {
-  return jog(link, gpio, to, feed, released, at, error);
+                        const std::function<bool()>& released, Vec2<double>& at, std::string& error,
+                        Vec2<double>* released_at) {
+  return jog(link, gpio, to, feed, released, at, error, released_at);
 }
 
 bool continuous_target(Vec2<double> from, int axis, int dir, const motion::SoftLimits<double>& limits,

@@ -30,8 +30,10 @@ bool jog_to(hal::SegmentLink& link, hal::Gpio* gpio, Vec2<double> to, double fee
 // on the path (feed hold), then the rest of the move is dropped (abort, fault
 // reset), as grblHAL's jog cancel (0x85) does; true, `at` where it stopped.
 // The E-stop line and a board fault: false with the reason, as jog_to.
+// `released_at`: where the axes were at the poll that saw the release.
 bool jog_until_released(hal::SegmentLink& link, hal::Gpio* gpio, Vec2<double> to, double feed,
-                        const std::function<bool()>& released, Vec2<double>& at, std::string& error);
+                        const std::function<bool()>& released, Vec2<double>& at, std::string& error,
+                        Vec2<double>* released_at = nullptr);
 
 // The target of a continuous jog: the soft limit of `axis` (0 x, 1 y) in
 // direction `dir` (+1, -1) from `from`. False when that axis has no limits:
