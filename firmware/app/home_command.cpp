@@ -19,7 +19,7 @@ CLI::App* add_home_command(CLI::App& app, HomeOptions& o) {
   return h;
 }
 
-int home_job(const HomeOptions& opts, const char* who, RunCheck check, LinesOpener open_lines) {
+int home_job(const HomeOptions& opts, const char* who, RunCheck check, LinesOpener open_lines, LinkOpener open_link) {
   std::string error;
   config::Config cfg;
   if (!config::load(opts.config, cfg, error)) {
@@ -59,7 +59,8 @@ int home_job(const HomeOptions& opts, const char* who, RunCheck check, LinesOpen
     std::fprintf(stderr, "%s: home: the E-stop is asserted: nothing moves\n", who);
     return io::kExitFailure;
   }
-  std::unique_ptr<hal::SegmentLink> link = machine::open_link(cfg, error);
+  std::unique_ptr<hal::SegmentLink> link =
+      open_link != nullptr ? open_link(cfg, opts, error) : machine::open_link(cfg, error);
   if (!link) {
     std::fprintf(stderr, "%s: home: %s: %s\n", who, config::to_string(cfg.link.kind), error.c_str());
     return io::kExitFailure;

@@ -1,7 +1,12 @@
 #include "app/jog_command.hpp"
 
 #include <CLI/CLI.hpp>
+#include <poll.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cmath>
+#include <csignal>
 #include <cstdio>
 
 #include "control/soft_limits.hpp"
@@ -69,6 +74,27 @@ int open_session(const std::string& file, const char* who, const char* what, Run
   return io::kExitOk;
 }
 
+volatile std::sig_atomic_t g_interrupted = 0;
+extern "C" void on_interrupt(int) { g_interrupted = 1; }
+
+// The operator lets go of a continuous jog: SIGINT (Ctrl-C), or stdin gives
+// a line or closes (an operator interface holds the jog by keeping its pipe
+// open, as a pendant holds the button).
+bool operator_released() {
+  static bool installed = false;
+  if (!installed) {
+    installed = true;
+    struct sigaction sa {};
+    sa.sa_handler = on_interrupt;
+    sigaction(SIGINT, &sa, nullptr);
+    sigaction(SIGTERM, &sa, nullptr);
+  }
+  if (g_interrupted != 0) return true;
+  pollfd p{STDIN_FILENO, POLLIN, 0};
+  if (::poll(&p, 1, 0) <= 0) return false;
+  return (p.revents & (POLLIN | POLLHUP | POLLERR | POLLNVAL)) != 0;  // a key, or EOF
+}
+
 void keep_position(job::MachineState& s, Vec2<double> at) {
   s.has_position = true;
   s.position[0] = at.x;
@@ -78,13 +104,19 @@ void keep_position(job::MachineState& s, Vec2<double> at) {
 }  // namespace
 
 CLI::App* add_jog_command(CLI::App& app, JogOptions& o) {
-  CLI::App* j = app.add_subcommand("jog", "Jog one axis at [machine] jog_speed: by --distance, or --to a machine "
-                                          "position; refused before homing, stopped by the E-stop");
+  CLI::App* j = app.add_subcommand("jog", "Jog one axis at [machine] jog_speed: by --distance, --to a machine "
+                                          "position, or --continuous until released; refused before homing, stopped "
+                                          "by the E-stop");
   j->add_option("--config", o.config, "Machine configuration (TOML)")->type_name("FILE")->required();
   j->add_option("--axis", o.axis, "x or y")->check(CLI::IsMember({"x", "y"}));
   auto* d = j->add_option("--distance", o.distance, "Incremental move, mm (signed)");
   auto* t = j->add_option("--to", o.to, "Absolute machine position, mm");
+  auto* c = j->add_option("--continuous", o.continuous,
+                          "Jog in this direction until released (Enter, stdin closed, or Ctrl-C), at most to the "
+                          "axis's soft limit")
+                ->check(CLI::IsMember({"+", "-"}));
   d->excludes(t);
+  c->excludes(d)->excludes(t);
   j->callback([&o, d, t] {
     o.has_distance = d->count() > 0;
     o.has_to = t->count() > 0;
@@ -100,18 +132,31 @@ CLI::App* add_touch_off_command(CLI::App& app, TouchOffOptions& o) {
 }
 
 int jog_job(JogOptions opts, const char* who, RunCheck check, LinesOpener open_lines) {
-  if (opts.has_distance == opts.has_to) return io::usage_error("jog: give --distance or --to");
+  const bool continuous = !opts.continuous.empty();
+  if (!continuous && opts.has_distance == opts.has_to)
+    return io::usage_error("jog: give --distance, --to or --continuous");
   Session s;
   if (const int rc = open_session(opts.config, who, "jog", check, open_lines, s); rc != io::kExitOk) return rc;
+  const motion::SoftLimits<double> limits = control::soft_limits_of(s.cfg.machine);
+  const int axis = opts.axis == "x" ? 0 : 1;
   Vec2<double> to = s.st.position;
-  double& v = opts.axis == "x" ? to.x : to.y;
-  v = opts.has_to ? opts.to : v + opts.distance;
-  if (machine::clamp_to_limits(to, control::soft_limits_of(s.cfg.machine)))
-    std::fprintf(stderr, "%s: jog: stops at the soft limit: %.3f %.3f\n", who, to.x, to.y);
+  if (continuous && !machine::continuous_target(s.st.position, axis, opts.continuous == "+" ? 1 : -1, limits, to)) {
+    std::fprintf(stderr, "%s: jog: %s: machine.axis: --continuous needs min and max on axis %s (it must end "
+                         "somewhere)\n", who, s.cfg.file.c_str(), opts.axis.c_str());
+    return io::kExitUsage;
+  }
+  if (!continuous) {
+    double& v = axis == 0 ? to.x : to.y;
+    v = opts.has_to ? opts.to : v + opts.distance;
+    if (machine::clamp_to_limits(to, limits))
+      std::fprintf(stderr, "%s: jog: stops at the soft limit: %.3f %.3f\n", who, to.x, to.y);
+  }
   const double feed = std::min(s.cfg.machine.jog_speed, s.cfg.machine.rapid_feed) / 60.0;
   Vec2<double> at{};
   std::string error;
-  const bool ok = machine::jog_to(*s.link, s.gpio.get(), to, feed, at, error);
+  const bool ok = continuous
+                      ? machine::jog_until_released(*s.link, s.gpio.get(), to, feed, operator_released, at, error)
+                      : machine::jog_to(*s.link, s.gpio.get(), to, feed, at, error);
   keep_position(s.state, at);
   std::string saved;
   if (!job::save_machine_state(s.cfg.machine.state, s.state, saved)) {
@@ -122,6 +167,9 @@ int jog_job(JogOptions opts, const char* who, RunCheck check, LinesOpener open_l
     std::fprintf(stderr, "%s: jog: %s; the axes stand at %.3f %.3f\n", who, error.c_str(), at.x, at.y);
     return io::kExitFailure;
   }
+  if (continuous)
+    std::printf("%s jog: %s\n", who, std::hypot(at.x - to.x, at.y - to.y) < 0.001 ? "stopped at the soft limit"
+                                                                                    : "released");
   std::printf("%s jog: at %.3f %.3f\n", who, at.x, at.y);
   return io::kExitOk;
 }

@@ -18,6 +18,7 @@ struct JogOptions {
   std::string axis = "x";
   double distance = 0;  // incremental, mm
   double to = 0;        // absolute machine position, mm
+  std::string continuous;  // "+" or "-": jog until released (stdin EOF or a line, SIGINT), up to the soft limit
   bool has_distance = false, has_to = false;
 };
 

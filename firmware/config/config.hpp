@@ -34,6 +34,10 @@ struct Axis {
   int home_dir = -1;
   double home_search_speed = 1200, home_latch_speed = 60;
   double home_search_distance = 2000, home_backoff = 2, home_position = 0;
+  // The switch on a GPIO line: a [[gpio.input]] number (home_input); kerf
+  // searches it with jog moves and sets the board's position (machine/
+  // homing_gpio.hpp). -1: the board's or drive's own input.
+  int home_input = -1;
 };
 
 struct Machine {

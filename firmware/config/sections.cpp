@@ -50,6 +50,7 @@ void read_axes(TableReader& r, Machine& m) {
     a.positive("home_search_distance", axis.home_search_distance);
     a.non_negative("home_backoff", axis.home_backoff);
     a.number("home_position", axis.home_position);
+    a.integer("home_input", axis.home_input, 0, 255);
     if (i == 2) {  // z's own limits
       a.positive("feed", axis.feed);
       a.positive("accel", axis.accel);

@@ -20,6 +20,7 @@ hal::CanOpenConfig master_config(const CanLinkOptions& o, bool wall_clock) {
     c.heartbeat_timeout_ms = 250;
     c.sdo_timeout_us = 500000;
     c.boot_timeout_us = 2000000;
+    c.homing_lead_syncs = 5;  // drives' TPDOs a few SYNCs late (seen on vcan0: one more than the in-process 2)
   }
   return c;
 }
@@ -73,7 +74,23 @@ std::vector<hal::CanFilter> can_master_filters() {
 bool CanMasterLink::start(hal::CanBus& bus, const CanLinkOptions& o, bool wall_clock, std::string& error) {
   master_ = hal::CanOpenMaster::create(bus, master_config(o, wall_clock), error);
   if (!master_) return false;
-  if (master_->bring_up() != hal::AxisError::none || master_->enable() != hal::AxisError::none) {
+  if (master_->bring_up() != hal::AxisError::none) {
+    error = std::string("CAN bring-up: ") + master_->last_error();
+    return false;
+  }
+  // Homed since the drives' power-up (kerf run checks it against the state
+  // file). A drive without homing mode refuses mode 6 (SDO abort): not homed.
+  std::uint8_t homed = 0;
+  for (std::size_t a = 0; a < 2; ++a) {
+    bool h = false;
+    const hal::AxisError e = master_->homed_since_power_up(a, h);
+    if (e != hal::AxisError::none && e != hal::AxisError::sdo_abort) {
+      error = std::string("CAN bring-up: reading the homed state: ") + master_->last_error();
+      return false;
+    }
+    if (h) homed = static_cast<std::uint8_t>(homed | (1u << a));
+  }
+  if (master_->enable() != hal::AxisError::none) {
     error = std::string("CAN bring-up: ") + master_->last_error();
     return false;
   }
@@ -89,6 +106,7 @@ bool CanMasterLink::start(hal::CanBus& bus, const CanLinkOptions& o, bool wall_c
     c.z_counts_per_mm = o.z_counts_per_mm;
   }
   csp_ = hal::CspSegmentLink::create(*master_, c, error);
+  if (csp_) csp_->set_homed(homed);
   return csp_ != nullptr;
 }
 

@@ -49,6 +49,10 @@ class CanMasterLink : public hal::SegmentLink {
   hal::LinkError push(const hal::SegmentCommand& s, hal::BoardStatus& st) override { return csp_->push(s, st); }
   hal::LinkError status(hal::BoardStatus& st) override { return csp_->status(st); }
   hal::LinkError command(hal::Command c) override { return csp_->command(c); }
+  // CiA 402 homing mode on the axis's drive (kerf home).
+  hal::LinkError home(const hal::HomeCommand& h, const std::function<bool()>& stop) override {
+    return csp_->home(h, stop);
+  }
   std::uint64_t resends() const override { return 0; }
   const char* last_error() const override { return csp_->last_error(); }
 

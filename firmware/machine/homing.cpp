@@ -3,6 +3,8 @@
 #include <chrono>
 #include <thread>
 
+#include "machine/homing_gpio.hpp"
+
 namespace kerf::machine {
 
 namespace {
@@ -22,11 +24,34 @@ double cycle_limit_s(const hal::HomeCommand& h) {
   return (h.search_distance + 2 * h.backoff) / h.search_speed + (h.backoff + 1) / h.latch_speed + 5.0;
 }
 
+// A GPIO home switch needs its [[gpio.input]] and the Modbus board (which
+// takes "here" as the home; CAN drives home on their own inputs).
+bool gpio_switch_usable(const config::Config& cfg, int input, hal::Gpio* gpio, std::string& error) {
+  bool configured = false;
+  for (const hal::GpioProgramLine& l : cfg.gpio.inputs) configured = configured || l.number == input;
+  if (!configured || gpio == nullptr) {
+    error = cfg.file + ": machine.axis: home_input = " + std::to_string(input) + ": no [[gpio.input]] with that number";
+    return false;
+  }
+  if (cfg.link.kind == config::Link::Kind::can) {
+    error = cfg.file + ": machine.axis: home_input: a GPIO home switch needs the Modbus board; CAN drives home on "
+                       "their own inputs (CiA 402 homing)";
+    return false;
+  }
+  return true;
+}
+
 // t_start: the session's start, the scripted lines' time origin.
 bool home_one(const config::Config& cfg, int a, hal::SegmentLink& link, hal::Gpio* gpio, double t_start,
               hal::BoardStatus& st, std::string& error, std::FILE* log) {
-  const hal::HomeCommand h = home_command(cfg.machine, a);
+  hal::HomeCommand h = home_command(cfg.machine, a);
   const std::string who = std::string(kAxis[a]) + ": ";
+  if (const int input = cfg.machine.axes[static_cast<std::size_t>(a)].home_input; input >= 0) {
+    if (!gpio_switch_usable(cfg, input, gpio, error) || !search_gpio_switch(link, *gpio, h, input, h, error)) {
+      error = who + error;
+      return false;
+    }
+  }
   // The E-stop line: the Modbus board is aborted below while the host
   // polls; a CAN drive is halted by the master while home() runs.
   auto estop = [&] {
@@ -136,6 +161,21 @@ bool check_homed(const config::Config& cfg, const job::MachineState& state, bool
     return false;
   }
   return true;
+}
+
+bool check_board_homed(const job::MachineState& state, hal::SegmentLink& link, std::string& error) {
+  hal::BoardStatus st;
+  if (link.status(st) != hal::LinkError::none) {
+    error = std::string("cannot read the board's homed state: ") + link.last_error();
+    return false;
+  }
+  std::string lost;
+  for (int a = 0; a < 2; ++a)
+    if (state.homed[a] && (st.homed & (1u << a)) == 0) lost += lost.empty() ? kAxis[a] : std::string(" ") + kAxis[a];
+  if (lost.empty()) return true;
+  error = "the state file says homed, but the board says " + lost +
+          " not homed since its power-up (was it power-cycled?): run `kerf home` again";
+  return false;
 }
 
 }  // namespace kerf::machine

@@ -32,4 +32,10 @@ bool home_axes(const config::Config& cfg, unsigned axes, hal::SegmentLink& link,
 // False with the reason.
 bool check_homed(const config::Config& cfg, const job::MachineState& state, bool assume_homed, std::string& error);
 
+// kerf run's second check, once the link is up: the board (Modbus status
+// register 22) or the drives (CiA 402 homing attained, read at bring-up) must
+// say homed too for every axis the state file says is. A board that was
+// power-cycled since `kerf home` lost its home: false with the reason.
+bool check_board_homed(const job::MachineState& state, hal::SegmentLink& link, std::string& error);
+
 }  // namespace kerf::machine

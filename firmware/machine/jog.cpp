@@ -13,10 +13,42 @@ double now_s() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
-}  // namespace
+// The operator let go: ramp to a stop on the path, then drop the rest of
+// the move and leave the board idle where it stands.
+bool stop_released(hal::SegmentLink& link, hal::BoardStatus& st, Vec2<double>& at, std::string& error) {
+  if (link.command(hal::Command::hold) != hal::LinkError::none) {
+    link.command(hal::Command::abort);
+    error = std::string("hold: ") + link.last_error();
+    return false;
+  }
+  Vec2<double> last{1e300, 1e300};
+  const double t0 = now_s();
+  for (int still = 0; still < 3 && now_s() - t0 < 10.0;) {  // three polls without motion: at rest
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    if (link.status(st) != hal::LinkError::none) break;
+    still = st.position.x == last.x && st.position.y == last.y ? still + 1 : 0;
+    last = st.position;
+    if (st.state == hal::BoardState::done || st.state == hal::BoardState::fault) break;
+  }
+  link.command(hal::Command::abort);  // drops the rest of the move
+  link.status(st);
+  at = st.position;
+  // abort faults the board; the reset is taken once the axes are at rest.
+  for (int i = 0; i < 200 && st.state == hal::BoardState::fault; ++i) {
+    link.command(hal::Command::fault_reset);
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    if (link.status(st) != hal::LinkError::none) break;
+  }
+  at = st.position;
+  if (st.state == hal::BoardState::fault) {
+    error = "released, but the board stayed in fault (faults 0x" + std::to_string(st.faults) + ")";
+    return false;
+  }
+  return true;
+}
 
-bool jog_to(hal::SegmentLink& link, hal::Gpio* gpio, Vec2<double> to, double feed, Vec2<double>& at,
-            std::string& error) {
+bool jog(hal::SegmentLink& link, hal::Gpio* gpio, Vec2<double> to, double feed, const std::function<bool()>& released,
+         Vec2<double>& at, std::string& error, Vec2<double>* released_at) {
   hal::BoardStatus st;
   auto link_error = [&](const char* what) {
     error = std::string(what) + ": " + link.last_error();
@@ -53,6 +85,10 @@ bool jog_to(hal::SegmentLink& link, hal::Gpio* gpio, Vec2<double> to, double fee
     }
     at = st.position;
     if (st.state == hal::BoardState::done) return true;
+    if (released && released()) {
+      if (released_at != nullptr) *released_at = st.position;
+      return stop_released(link, st, at, error);
+    }
     if (st.state == hal::BoardState::fault) {
       error = "the board faulted while jogging (faults 0x" + std::to_string(st.faults) + ")";
       return false;
@@ -64,6 +100,27 @@ bool jog_to(hal::SegmentLink& link, hal::Gpio* gpio, Vec2<double> to, double fee
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
+}
+
+}  // namespace
+
+bool jog_to(hal::SegmentLink& link, hal::Gpio* gpio, Vec2<double> to, double feed, Vec2<double>& at,
+            std::string& error) {
+  return jog(link, gpio, to, feed, {}, at, error, nullptr);
+}
+
+bool jog_until_released(hal::SegmentLink& link, hal::Gpio* gpio, Vec2<double> to, double feed,
+                        const std::function<bool()>& released, Vec2<double>& at, std::string& error,
+                        Vec2<double>* released_at) {
+  return jog(link, gpio, to, feed, released, at, error, released_at);
+}
+
+bool continuous_target(Vec2<double> from, int axis, int dir, const motion::SoftLimits<double>& limits,
+                       Vec2<double>& to) {
+  if (!limits.on[axis]) return false;
+  to = from;
+  (axis == 0 ? to.x : to.y) = dir > 0 ? limits.max[axis] : limits.min[axis];
+  return true;
 }
 
 bool clamp_to_limits(Vec2<double>& to, const motion::SoftLimits<double>& limits) {

@@ -12,6 +12,7 @@
 #include "io/options.hpp"
 #include "io/output_file.hpp"
 #include "kerf/hal/rt_loop.hpp"
+#include "machine/homing.hpp"
 #include "machine/machine_factory.hpp"
 
 namespace kerf::machine {
@@ -38,6 +39,15 @@ int run_on_machine(const Job& job, const config::Config& cfg, hal::SegmentLink& 
   sigaction(SIGINT, &sa, nullptr);
   sigaction(SIGTERM, &sa, nullptr);
 
+  // The state file says homed (kerf home): the board must still say so.
+  if (homed != nullptr && std::strcmp(homed, kHomedByKerfHome) == 0) {
+    job::MachineState state;
+    std::string error;
+    if (!job::load_machine_state(cfg.machine.state, state, error) || !check_board_homed(state, link, error)) {
+      std::fprintf(stderr, "kerf: run: %s\n", error.c_str());
+      return kExitFailure;
+    }
+  }
   control::ControllerConfig ccfg = control::controller_config(cfg);
   ccfg.reset_at_start = reset_at_start;
   control::GpioOutputs outputs(gpio);  // [[gpio.output]] / [[gpio.input]]: the program's lines

@@ -22,6 +22,10 @@
 
 namespace kerf::machine {
 
+// The `homed` of a run whose state file says homed (kerf home): the board's
+// own homed flags are checked against it before anything moves.
+inline constexpr const char* kHomedByKerfHome = "kerf home";
+
 // Returns the exit code: 0 done, 1 stopped (fault, E-stop, signal) or the
 // report could not be written. The E-stop latch starts latched: it opens on
 // `reset_at_start` or the gpio.reset line (the caller refuses a run with

@@ -46,7 +46,12 @@ std::vector<sim::DriveConfig> drive_configs(const CanSimOptions& o) {
     sim::DriveConfig d;
     d.node = machine::can_node_of(o, i);
     const double mm = i == 0 ? o.start.x : i == 1 ? o.start.y : 0.0;
-    d.start = static_cast<std::int32_t>(std::lround(mm * (i == 1 ? o.counts_per_mm.y : o.counts_per_mm.x)));
+    const double cpm = i == 1 ? o.counts_per_mm.y : o.counts_per_mm.x;
+    d.start = static_cast<std::int32_t>(std::lround(mm * cpm));
+    if (i < 2 && o.has_home_switch[i]) {
+      d.has_home_switch = true;
+      d.home_switch = static_cast<std::int32_t>(std::lround(o.home_switch[i] * cpm));
+    }
     v.push_back(d);
   }
   return v;
@@ -89,6 +94,7 @@ class VirtualCanSimLink final : public CanSimLinkBase {
     for (const auto& l : log) bits += hal::canopen::worst_case_bits(l.frame.dlc);
     return static_cast<double>(bits) / (static_cast<double>(log.back().t_us - log.front().t_us) * 1e-6);
   }
+  std::int32_t home_latch(std::size_t axis) const override { return bus_.drive(axis).last_latch(); }
   bool finish_log(std::string& error) override {
     return opts_.candump_path.empty() || bus_.write_candump(opts_.candump_path, "vcan-sim", error);
   }
@@ -129,6 +135,7 @@ class SocketCanSimLink final : public CanSimLinkBase {
     }
   }
   double bus_load_bps() const override { return 0.0; }
+  std::int32_t home_latch(std::size_t) const override { return 0; }
   bool finish_log(std::string&) override { return true; }
 
  private:

@@ -36,6 +36,10 @@ struct CanSimOptions : machine::CanLinkOptions {
   // link cannot be made and the error says which drive. -1: none.
   int refuse_enable_axis = -1;
   std::string candump_path;      // candump -L log of every frame ("": none)
+  // Home switches (x, y), mm in the power-up frame: CiA 402 homing (methods
+  // 17/18) finds them. No switch: homing runs out of its search distance.
+  bool has_home_switch[2] = {false, false};
+  double home_switch[2] = {0.0, 0.0};
 };
 
 class CanSimLink : public machine::CanMasterLink {
@@ -51,6 +55,9 @@ class CanSimLink : public machine::CanMasterLink {
   const hal::AxisLink& axes() const { return *master_; }
   // Worst-case bus load of the frames sent so far, bits/s (in-process only; 0 otherwise).
   virtual double bus_load_bps() const = 0;
+  // Where the axis's drive last left its home switch, counts in its power-up
+  // frame (in-process only; 0 otherwise).
+  virtual std::int32_t home_latch(std::size_t axis) const = 0;
   // Writes candump_path (the in-process log; SocketCAN logs as it goes).
   virtual bool finish_log(std::string& error) = 0;
 };

@@ -33,6 +33,11 @@ void HomingCycle::move(double v, double dt) {
 
 double HomingCycle::step(double dt, const double* switch_at) {
   const double dir = cmd_.dir;
+  if (cmd_.dir == 0 && state_ == HomingState::search) {  // "here": the switch was searched elsewhere
+    latched_ = pos_;
+    state_ = HomingState::done;
+    return pos_;
+  }
   switch (state_) {
     case HomingState::search:
       if (travelled_ + cmd_.search_speed * dt > cmd_.search_distance) {  // stop at the distance

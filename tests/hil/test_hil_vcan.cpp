@@ -22,6 +22,8 @@
 #include <string>
 #include <vector>
 
+#include "machine/can_link.hpp"
+#include "machine/homing.hpp"
 #include "simulated/can_sim_link.hpp"
 #include "kerf/hal/can/canopen_master.hpp"
 #include "kerf/hal/can/csp_segment_link.hpp"
@@ -126,6 +128,7 @@ struct HilRig {
     cfg.sdo_timeout_us = 2000000;
     cfg.boot_timeout_us = 5000000;
     cfg.enable_cycles = 500;
+    cfg.homing_lead_syncs = 5;  // as kerf run's link (machine/can_link.cpp): the TPDOs come late here
     master = hal::CanOpenMaster::create(*bus, cfg, err);
     ASSERT_TRUE(master) << err;
     ASSERT_EQ(master->bring_up(), hal::AxisError::none) << master->last_error();
@@ -402,6 +405,73 @@ TEST(HilVcan, KerfRunCutsAJobOnDrivesInAnotherProcess) {
   EXPECT_NE(rep.find("\"state\": \"done\""), std::string::npos) << rep;
   EXPECT_NE(rep.find("\"link\": \"can\""), std::string::npos) << rep;
   EXPECT_NE(rep.find("\"duplicates\": 0"), std::string::npos) << rep;
+}
+
+// Homing on a real vcan0, the drives in another process (kerf-drive-sim
+// --home-switch: x's switch at -2.5 mm from where it powered up, y none):
+// an E-stop mid-search halts it unhomed; the switch is found (homed, at the
+// home position); a switch that never trips is a fault inside the search
+// distance. Then kerf run's own link (machine::open_machine_can_link, a new
+// master: NMT reset, the drives keep their home) reads the drives' homed
+// state and refuses a state file that says y is homed. Whether the latch fell
+// within a count of the switch is asserted on the in-process bus
+// (tests/can/test_can_home_session.cpp): the drive's latch is not on the bus.
+TEST(HilVcan, HomingWithTheDrivesInAnotherProcess) {
+  HilRig rig;
+  ASSERT_NO_FATAL_FAILURE(rig.start("hil_homing", {"--home-switch", "-2500"}));
+  hal::HomeCommand h;
+  h.axis = 0;
+  h.dir = -1;
+  h.search_speed = 5;   // 10 counts per 2 ms SYNC: 250 SYNCs to the switch
+  h.latch_speed = 0.5;  // one count per SYNC
+  h.search_distance = 100;
+  h.home_position = -2.0;
+  int polls = 0;
+  ASSERT_EQ(rig.link->home(h, [&] { return ++polls > 50; }), LinkError::none) << rig.link->last_error();
+  hal::BoardStatus st;
+  ASSERT_EQ(rig.link->status(st), LinkError::none);
+  EXPECT_EQ(st.homing, hal::HomingState::aborted);
+  EXPECT_EQ(st.homed, 0);
+  EXPECT_LT(st.position.x, -0.1);  // it had moved
+  EXPECT_GT(st.position.x, -2.0);  // and stopped short of the switch
+  if (st.state == BoardState::fault) {
+    ASSERT_EQ(rig.link->command(hal::Command::fault_reset), LinkError::none);
+  }
+
+  ASSERT_EQ(rig.link->home(h, {}), LinkError::none) << rig.link->last_error();
+  ASSERT_EQ(rig.link->status(st), LinkError::none);
+  EXPECT_EQ(st.homing, hal::HomingState::done) << rig.link->last_error();
+  EXPECT_EQ(st.homed, 1);
+  EXPECT_DOUBLE_EQ(st.position.x, -2.0);
+
+  h.axis = 1;  // no switch
+  h.search_speed = 25;  // 0.05 mm per SYNC: halted 0.25 mm ahead of the distance
+  h.search_distance = 5;
+  ASSERT_EQ(rig.link->home(h, {}), LinkError::none) << rig.link->last_error();
+  ASSERT_EQ(rig.link->status(st), LinkError::none);
+  EXPECT_EQ(st.homing, hal::HomingState::no_switch);
+  EXPECT_EQ(st.state, BoardState::fault);
+  EXPECT_GT(st.position.y, -5.0 - 1e-9);  // inside the search distance, however late the feedback
+  EXPECT_LT(st.position.y, -4.5);         // after searching nearly all of it (the halt allows for late feedback)
+  EXPECT_EQ(st.homed, 1);
+
+  // kerf run's session: a new master on the same drives.
+  rig.link.reset();
+  rig.master.reset();
+  rig.bus.reset();
+  machine::CanLinkOptions o;
+  o.iface = "vcan0";
+  o.node_ids = {1, 2};
+  o.sync_ms = 2;
+  std::string err;
+  auto run_link = machine::open_machine_can_link(o, err);
+  ASSERT_TRUE(run_link) << err;
+  job::MachineState state;
+  state.homed[0] = true;
+  EXPECT_TRUE(machine::check_board_homed(state, *run_link, err)) << err;
+  state.homed[1] = true;
+  EXPECT_FALSE(machine::check_board_homed(state, *run_link, err));
+  EXPECT_NE(err.find("the board says y not homed since its power-up"), std::string::npos) << err;
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include "kerf/sim/scripted_gpio.hpp"
 #include "link_rig.hpp"
 #include "machine/homing.hpp"
+#include "machine/homing_gpio.hpp"
 #include "machine/jog.hpp"
 
 namespace kerf::test {
@@ -164,6 +165,16 @@ TEST(HomeBlock, RoundTripsAndRefusesBadBlocks) {
   EXPECT_DOUBLE_EQ(back.latch_speed, 1.0);
   r[map::kHomeAxisMask] = 3;  // two axes at once
   EXPECT_FALSE(map::decode_home(r, back, reason));
+  h.dir = 0;  // "here": no search, so no distance needed
+  h.search_distance = 0;
+  ASSERT_TRUE(map::encode_home(h, r));
+  ASSERT_TRUE(map::decode_home(r, back, reason)) << reason;
+  EXPECT_EQ(back.dir, 0);
+  r[map::kHomeDir] = 2;
+  EXPECT_FALSE(map::decode_home(r, back, reason));
+  h.dir = -1;  // a search needs its distance
+  EXPECT_FALSE(map::encode_home(h, r));
+  h.search_distance = 100;
   h.search_speed = 0;
   EXPECT_FALSE(map::encode_home(h, r));
 }
@@ -200,6 +211,28 @@ TEST(HomeSession, HomesXThenYIntoTheStateFile) {
   EXPECT_EQ(rig.board->status().homed, 3);
   std::string why;
   EXPECT_TRUE(machine::check_homed([] { auto c = session_config(); c.machine.state = "s"; return c; }(), state, false, why)) << why;
+}
+
+// kerf run's cross-check once the link is up: the board's register 22 must
+// say homed for each axis the state file does. A power-cycled board (a new
+// one) has lost its home.
+TEST(HomeSession, KerfRunCrossChecksTheBoardsHomedFlag) {
+  job::MachineState state;
+  std::string error;
+  {
+    HomeRig rig(Wire::tcp, true);
+    rig.board->start_servo(0.0);
+    ASSERT_TRUE(machine::home_axes(session_config(), 3u, *rig.link, nullptr, state, error, nullptr)) << error;
+    EXPECT_TRUE(machine::check_board_homed(state, *rig.link, error)) << error;
+  }
+  HomeRig power_cycled(Wire::tcp, true);
+  power_cycled.board->start_servo(0.0);
+  EXPECT_FALSE(machine::check_board_homed(state, *power_cycled.link, error));
+  EXPECT_EQ(error, "the state file says homed, but the board says x y not homed since its power-up (was it "
+                   "power-cycled?): run `kerf home` again");
+  ASSERT_TRUE(machine::home_axes(session_config(), 1u, *power_cycled.link, nullptr, state, error, nullptr));
+  EXPECT_FALSE(machine::check_board_homed(state, *power_cycled.link, error));
+  EXPECT_NE(error.find("the board says y not homed"), std::string::npos) << error;
 }
 
 TEST(HomeSession, TheEStopAbortsItAndTheAxisStaysUnhomed) {
@@ -303,6 +336,191 @@ TEST(Jog, TheEStopStopsItOnThePath) {
   EXPECT_LT(at.x, 40.0);  // and stopped about 2 mm into a 95 mm jog
   std::this_thread::sleep_for(std::chrono::milliseconds(100));
   EXPECT_NEAR(rig.board->status().position.x, at.x, 0.5);  // braked, not travelling on
+}
+
+// Continuous jog (jog until released): to the soft limit at most, stopped by
+// the operator letting go (a ramp to a stop on the path, then idle) or the
+// E-stop. Refused before homing: tests/cli/bad_input.tsv (jog_continuous_not_homed).
+motion::SoftLimits<double> x_limits() {
+  motion::SoftLimits<double> lim;
+  lim.on[0] = true;
+  lim.min[0] = 0;
+  lim.max[0] = 50;  // y unlimited
+  return lim;
+}
+
+TEST(JogContinuous, StopsAtTheSoftLimit) {
+  HomeRig rig(Wire::tcp, true);
+  rig.board->start_servo(0.0);
+  job::MachineState state;
+  std::string error;
+  ASSERT_TRUE(machine::home_axes(session_config(), 3u, *rig.link, nullptr, state, error, nullptr)) << error;
+  Vec2<double> to{};
+  EXPECT_FALSE(machine::continuous_target({5.0, -1.0}, 1, 1, x_limits(), to));  // y has no limits
+  ASSERT_TRUE(machine::continuous_target({5.0, -1.0}, 0, 1, x_limits(), to));
+  EXPECT_EQ(to.x, 50.0);
+  EXPECT_EQ(to.y, -1.0);
+  Vec2<double> at{};
+  ASSERT_TRUE(machine::jog_until_released(*rig.link, nullptr, to, 50.0, [] { return false; }, at, error)) << error;
+  EXPECT_NEAR(at.x, 50.0, 1e-9);  // at the limit, not past it
+  ASSERT_TRUE(machine::continuous_target(at, 0, -1, x_limits(), to));
+  EXPECT_EQ(to.x, 0.0);
+}
+
+TEST(JogContinuous, StopsOnThePathWhenReleased) {
+  HomeRig rig(Wire::tcp, true, true);
+  rig.board->start_servo(1.0);
+  config::Config c = session_config();
+  c.machine.axes[0].home_search_speed = 6000;
+  c.machine.axes[0].home_latch_speed = 600;
+  job::MachineState state;
+  std::string error;
+  ASSERT_TRUE(machine::home_axes(c, 1u, *rig.link, nullptr, state, error, nullptr)) << error;
+  const auto t0 = std::chrono::steady_clock::now();
+  auto released = [&] { return std::chrono::steady_clock::now() - t0 > std::chrono::milliseconds(200); };
+  Vec2<double> at{};
+  ASSERT_TRUE(machine::jog_until_released(*rig.link, nullptr, {50.0, 30.0}, 10.0, released, at, error)) << error;
+  EXPECT_GT(at.x, 5.5);   // it had moved (about 2 mm in 0.2 s)
+  EXPECT_LT(at.x, 20.0);  // and stopped far short of the limit
+  const hal::BoardStatus st = rig.board->status();
+  EXPECT_EQ(st.state, hal::BoardState::idle);  // released is no fault: ready for the next jog
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  EXPECT_EQ(rig.board->status().position.x, at.x);  // stopped, and stays
+  ASSERT_TRUE(machine::jog_to(*rig.link, nullptr, {at.x + 1.0, 30.0}, 10.0, at, error)) << error;
+}
+
+TEST(JogContinuous, TheEStopStopsIt) {
+  HomeRig rig(Wire::tcp, true, true);
+  rig.board->start_servo(1.0);
+  config::Config c = session_config();
+  c.machine.axes[0].home_search_speed = 6000;
+  c.machine.axes[0].home_latch_speed = 600;
+  job::MachineState state;
+  std::string error;
+  ASSERT_TRUE(machine::home_axes(c, 1u, *rig.link, nullptr, state, error, nullptr)) << error;
+  sim::ScriptedGpio gpio;
+  ASSERT_TRUE(gpio.estop_at(0.2, true));
+  Vec2<double> at{};
+  EXPECT_FALSE(machine::jog_until_released(*rig.link, &gpio, {50.0, 30.0}, 10.0, [] { return false; }, at, error));
+  EXPECT_EQ(error, "E-stop: the jog stopped");
+  EXPECT_EQ(rig.board->status().state, hal::BoardState::fault);
+  EXPECT_GT(at.x, 5.0);
+  EXPECT_LT(at.x, 20.0);
+}
+
+// A GPIO home switch (home_input): kerf searches it with jog moves and the
+// board takes the latch point as the home (home block dir 0). The double is a
+// switch fixed on the machine: program input 3 reads x <= at, x in the
+// power-up frame (the board's position plus the frame shift the test gives it
+// once the board has taken its new home).
+class SwitchAt final : public hal::Gpio {
+ public:
+  SwitchAt(sim::MotionBoard& b, bool present, double at, double estop_after_s = -1)
+      : board_(b), present_(present), at_(at), estop_after_(estop_after_s) {}
+  bool read(double now_s, hal::GpioInputs& in) override {
+    in = {};
+    in.estop = estop_after_ >= 0 && now_s >= estop_after_;
+    return true;
+  }
+  bool read_input(int number, double, bool& value) override {
+    value = number == 3 && present_ && board_.status().position.x + shift_ <= at_;
+    return true;
+  }
+  void shift(double s) { shift_ = s; }
+  bool set_torch(bool) override { return true; }
+  const char* last_error() const override { return ""; }
+
+ private:
+  sim::MotionBoard& board_;
+  bool present_;
+  double at_, estop_after_;
+  double shift_ = 0;
+};
+
+config::Config gpio_switch_config() {
+  config::Config c = session_config();
+  c.machine.axes[0].home_input = 3;
+  c.machine.axes[0].home_search_speed = 1200;  // 20 mm/s
+  c.machine.axes[0].home_latch_speed = 30;     // 0.5 mm/s
+  c.machine.axes[0].home_search_distance = 60;
+  c.machine.axes[0].home_backoff = 0.5;
+  hal::GpioProgramLine l;
+  l.number = 3;
+  c.gpio.inputs.push_back(l);
+  return c;
+}
+
+TEST(GpioHomeSwitch, FoundAtItsPositionWithinAFewPollsOfLatchTravel) {
+  HomeRig rig(Wire::tcp, false, true);  // the board's own x switch is not the one searched: its frame is
+  rig.board->start_servo(1.0);
+  SwitchAt sw(*rig.board, true, 37.0);  // 3 mm from where x powered up (40)
+  const config::Config c = gpio_switch_config();
+  hal::HomeCommand here;
+  std::string error;
+  ASSERT_TRUE(machine::search_gpio_switch(*rig.link, sw, machine::home_command(c.machine, 0), 3, here, error))
+      << error;
+  EXPECT_EQ(here.dir, 0);
+  const double before = rig.board->status().position.x;  // at rest, power-up frame
+  ASSERT_EQ(rig.link->home(here, {}), hal::LinkError::none) << rig.link->last_error();
+  const hal::BoardStatus st = rig.wait_homing_end();
+  EXPECT_EQ(st.homing, hal::HomingState::done);
+  EXPECT_EQ(st.homed & 1u, 1u);
+  EXPECT_EQ(st.state, hal::BoardState::idle);
+  sw.shift(before - st.position.x);
+  // Where the switch is, in the new frame: jog back until it trips at the
+  // latch speed again; that is home_position (5), within 50 ms of latch
+  // travel (the host polls the board and the line, about 10 ms a round, once
+  // for the latch and once for this check; seen: 12-16 µm at 0.5 mm/s).
+  Vec2<double> at{}, seen{};
+  ASSERT_TRUE(machine::jog_until_released(*rig.link, &sw, {-10.0, st.position.y}, 0.5,
+                                          [&] { bool v = false; sw.read_input(3, 0, v); return v; }, at, error, &seen))
+      << error;
+  std::printf("GPIO home switch: found at %.4f mm (home position 5 mm)\n", seen.x);
+  EXPECT_NEAR(seen.x, 5.0, 0.5 * 0.05);
+}
+
+TEST(GpioHomeSwitch, ASwitchThatNeverTripsIsAFaultInsideTheSearchDistance) {
+  HomeRig rig(Wire::tcp, false, false);
+  rig.board->start_servo(0.0);
+  SwitchAt sw(*rig.board, false, 0.0);
+  job::MachineState state;
+  std::string error;
+  EXPECT_FALSE(machine::home_axes(gpio_switch_config(), 1u, *rig.link, &sw, state, error, nullptr));
+  EXPECT_EQ(error, "x: the switch never tripped within the search distance (60.000000 mm, GPIO input 3)");
+  EXPECT_FALSE(state.homed[0]);
+  EXPECT_NEAR(rig.board->status().position.x, 40.0 - 60.0, 1e-9);  // the whole distance, not past it
+  EXPECT_EQ(rig.board->status().homed, 0);
+}
+
+TEST(GpioHomeSwitch, TheEStopStopsTheSearchUnhomed) {
+  HomeRig rig(Wire::tcp, false, true);
+  rig.board->start_servo(1.0);
+  SwitchAt sw(*rig.board, true, 0.0, 0.2);  // the switch 40 mm off at 20 mm/s; the E-stop at 0.2 s
+  job::MachineState state;
+  state.homed[0] = true;
+  std::string error;
+  EXPECT_FALSE(machine::home_axes(gpio_switch_config(), 1u, *rig.link, &sw, state, error, nullptr));
+  EXPECT_EQ(error, "x: E-stop: the jog stopped");
+  EXPECT_FALSE(state.homed[0]);
+  EXPECT_EQ(rig.board->status().homed, 0);
+  EXPECT_LT(rig.board->status().position.x, 40.0 - 1.0);  // it had moved
+  EXPECT_GT(rig.board->status().position.x, 30.0);        // and stopped
+}
+
+TEST(GpioHomeSwitch, RefusedWithoutItsInputLineOrOverCan) {
+  config::Config c = gpio_switch_config();
+  c.gpio.inputs.clear();
+  HomeRig rig(Wire::tcp);
+  rig.board->start_servo(0.0);
+  SwitchAt sw(*rig.board, true, 37.0);
+  job::MachineState state;
+  std::string error;
+  EXPECT_FALSE(machine::home_axes(c, 1u, *rig.link, &sw, state, error, nullptr));
+  EXPECT_NE(error.find("home_input = 3: no [[gpio.input]] with that number"), std::string::npos) << error;
+  c = gpio_switch_config();
+  c.link.kind = config::Link::Kind::can;
+  EXPECT_FALSE(machine::home_axes(c, 1u, *rig.link, &sw, state, error, nullptr));
+  EXPECT_NE(error.find("a GPIO home switch needs the Modbus board"), std::string::npos) << error;
 }
 
 }  // namespace

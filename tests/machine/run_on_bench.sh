@@ -5,7 +5,8 @@
 # --resume finishes the job, each segment once. The config says [bench]: every
 # status line, the summary and the report say BENCH. Before homing, kerf run
 # is refused before anything moves; `kerf-sim home` homes x and y against the
-# board's switches and keeps the result in the state file.
+# board's switches and keeps the result in the state file. A power-cycled
+# board (lost its home) is refused by kerf run although the state file says homed.
 #
 #   run_on_bench.sh KERF_SIM BOARD_SIM JOB SIM_TOML WORKDIR
 set -euo pipefail
@@ -76,3 +77,18 @@ printf 'G21 G90\nG0 X0 Y0\nG1 X10 Y0 F1200\nG1 X10 Y5\nM30\n' >"$dir/touched.ngc
 "$kerf" jog --config "$dir/bench.toml" --axis x --distance 0 >"$dir/where.out" 2>&1
 grep -q 'jog: at 22.500 12.000$' "$dir/where.out" || { cat "$dir/where.out"; echo "FAIL: the job did not run from the touched-off point"; exit 1; }
 echo "ok: touched off at 12.5 7, the job ended at 22.5 12"
+
+# The board power-cycled (a new kerf-board-sim) since `kerf home`: the state
+# file still says homed, the board's register 22 says not. kerf run refuses
+# once the link is up, before anything moves.
+kill "$BOARD_PID" 2>/dev/null || true
+wait "$BOARD_PID" 2>/dev/null || true
+coproc BOARD2 { exec "$board" --port 0 --watchdog 0.5 --start 7,4 --home-switch-x -1 --home-switch-y -1.5; }
+trap 'kill "$BOARD2_PID" 2>/dev/null || true' EXIT
+read -r -t 10 line <&"${BOARD2[0]}"
+sed -i "s/^port = .*/port = ${line##*:}/" "$dir/bench.toml"
+rc=0
+"$kerf" run --config "$dir/bench.toml" "$dir/touched.ngc" >"$dir/run4.out" 2>"$dir/run4.err" || rc=$?
+((rc == 1)) && grep -q 'the state file says homed, but the board says x y not homed since its power-up' "$dir/run4.err" ||
+  { cat "$dir/run4.out" "$dir/run4.err"; echo "FAIL: kerf run on a power-cycled board must be refused, got $rc"; exit 1; }
+echo "ok: $(cat "$dir/run4.err")"

@@ -1,4 +1,5 @@
 // CanOpenMaster::home: CiA 402 homing mode on one drive (canopen_master.hpp).
+#include <algorithm>
 #include <cstdlib>
 
 #include "kerf/hal/can/canopen_master.hpp"
@@ -7,6 +8,21 @@
 namespace kerf::hal {
 
 using namespace canopen;
+
+AxisError CanOpenMaster::homed_since_power_up(std::size_t axis, bool& homed) {
+  homed = false;
+  std::uint32_t sw = 0;
+  if (const AxisError e = sdo_write(axis, kModeOfOperation, 0, static_cast<std::uint8_t>(kModeHoming), 1);
+      e != AxisError::none)
+    return e;
+  const AxisError read = sdo_read(axis, kStatusword, 0, sw);
+  // Left in mode 6 the drive would not run CSP: never an abort the caller may pass over.
+  if (const AxisError e = sdo_write(axis, kModeOfOperation, 0, static_cast<std::uint8_t>(kModeCsp), 1);
+      e != AxisError::none)
+    return e == AxisError::sdo_abort ? AxisError::drive_fault : e;
+  homed = read == AxisError::none && (sw & kSwHomingAttained) != 0;
+  return read;
+}
 
 AxisError CanOpenMaster::home(std::size_t axis, const DriveHoming& h, DriveHomingResult& result,
                               const std::function<bool()>& stop) {
@@ -61,9 +77,12 @@ AxisError CanOpenMaster::homing_cycles(std::size_t axis, const DriveHoming& h, D
     const bool fresh = n.st.feedback_cycle + 1 >= counters_.cycles;
     if (fresh && (sw & kSwTargetReached) == 0) started = true;
     const bool halt = stop && stop();
-    // Halted a SYNC before the travel could pass max_travel: the feedback is
-    // a period old and the halt takes effect a period later.
-    const double ahead = 2.0 * h.search_speed * period;
+    // Halted before the travel could pass max_travel: the feedback is a
+    // period old or more (homing_lead_syncs; older still when no TPDO came)
+    // and the halt takes effect a period later.
+    const std::uint64_t age = counters_.cycles > n.st.feedback_cycle ? counters_.cycles - n.st.feedback_cycle : 0;
+    const std::uint64_t lead = std::max<std::uint64_t>(age + 1, cfg_.homing_lead_syncs);
+    const double ahead = static_cast<double>(lead) * h.search_speed * period;
     const bool too_far =
         static_cast<double>(std::llabs(std::int64_t{n.st.actual} - start)) + ahead > static_cast<double>(h.max_travel);
     if (halt || too_far) {

@@ -128,9 +128,18 @@ LinkError CspSegmentLink::status(BoardStatus& status) {
   return LinkError::none;
 }
 
+void CspSegmentLink::set_homed(std::uint8_t bits) {
+  std::lock_guard<std::mutex> lock(mu_);
+  homed_ = bits;
+}
+
 LinkError CspSegmentLink::home(const HomeCommand& h, const std::function<bool()>& stop) {
   std::lock_guard<std::mutex> lock(mu_);  // the clock waits: the homing runs the SYNC itself
   const BoardState st = exec_->state();
+  if (h.dir == 0) {  // "here" (kerf's own GPIO search): not offered over CAN
+    std::snprintf(error_, sizeof error_, "home: dir 0 (here) is for the Modbus board; a drive homes on its own input");
+    return LinkError::rejected;
+  }
   if (h.axis < 0 || h.axis > 1 || (st != BoardState::idle && st != BoardState::done) || !exec_->at_rest()) {
     std::snprintf(error_, sizeof error_, "home: not allowed now (axis %d)", h.axis);
     return LinkError::rejected;

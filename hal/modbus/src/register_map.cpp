@@ -55,11 +55,11 @@ bool decode_slot(const std::uint16_t* slot, SegmentCommand& s, const char*& reas
 
 bool encode_home(const HomeCommand& h, std::uint16_t* r) {
   std::int32_t ss = 0, ls = 0, dist = 0, pos = 0, back = 0;
-  if (h.axis < 0 || h.axis > 2 || (h.dir != 1 && h.dir != -1)) return false;
+  if (h.axis < 0 || h.axis > 2 || h.dir < -1 || h.dir > 1) return false;
   if (!to_units(h.search_speed, ss) || !to_units(h.latch_speed, ls) || !to_units(h.search_distance, dist) ||
       !to_units(h.home_position, pos) || !to_units(h.backoff, back))
     return false;
-  if (ss <= 0 || ls <= 0 || dist <= 0 || back < 0) return false;
+  if (ss <= 0 || ls <= 0 || (dist <= 0 && h.dir != 0) || back < 0) return false;
   r[kHomeAxisMask] = static_cast<std::uint16_t>(1u << h.axis);
   r[kHomeDir] = static_cast<std::uint16_t>(static_cast<std::int16_t>(h.dir));
   put32(r + kHomeSearchSpeed, static_cast<std::uint32_t>(ss));
@@ -74,9 +74,9 @@ bool decode_home(const std::uint16_t* r, HomeCommand& h, const char*& reason) {
   const std::uint16_t mask = r[kHomeAxisMask];
   if (mask != 1 && mask != 2 && mask != 4) { reason = "axis mask is not one of x, y, z"; return false; }
   const auto dir = static_cast<std::int16_t>(r[kHomeDir]);
-  if (dir != 1 && dir != -1) { reason = "direction not +1/-1"; return false; }
+  if (dir < -1 || dir > 1) { reason = "direction not -1, 0 or +1"; return false; }
   if (get_i32(r + kHomeSearchSpeed) <= 0 || get_i32(r + kHomeLatchSpeed) <= 0 ||
-      get_i32(r + kHomeSearchDistance) <= 0 || get_i32(r + kHomeBackoff) < 0) {
+      (get_i32(r + kHomeSearchDistance) <= 0 && dir != 0) || get_i32(r + kHomeBackoff) < 0) {
     reason = "speed or distance <= 0";
     return false;
   }

@@ -72,7 +72,10 @@ void DriveNode::reset_node(std::uint64_t now_us, bool announce) {
   next_heartbeat_us_ = now_us;
 }
 
-void DriveNode::power_on(std::uint64_t now_us) { reset_node(now_us, true); }
+void DriveNode::power_on(std::uint64_t now_us) {
+  referenced_ = false;
+  reset_node(now_us, true);
+}
 
 DriveNode::Entry* DriveNode::find(std::uint16_t index, std::uint8_t sub) {
   for (int i = 0; i < od_count_; ++i)
@@ -91,7 +94,7 @@ std::uint16_t DriveNode::statusword() const {
   if (following_error_) sw |= kSwFollowingError;
   if (static_cast<std::int8_t>(od(kModeDisplay, 0)) == kModeHoming) {
     sw = static_cast<std::uint16_t>(sw & ~kSwFollowingError);
-    if (homing_ == Homing::attained) sw |= kSwHomingAttained;
+    if (homing_ == Homing::attained || (homing_ == Homing::idle && referenced_)) sw |= kSwHomingAttained;
     if (homing_ != Homing::search && homing_ != Homing::release) sw |= kSwTargetReached;
     return sw;
   }
@@ -250,7 +253,10 @@ void DriveNode::apply_controlword(std::uint16_t cw) {
   last_cw_ = cw;
   if (static_cast<std::int8_t>(od(kModeDisplay, 0)) == kModeHoming && state_ == DriveState::operation_enabled) {
     if ((cw & kCwHalt) != 0 && (homing_ == Homing::search || homing_ == Homing::release)) homing_ = Homing::halted;
-    else if (start_edge && (cw & kCwHalt) == 0) homing_ = Homing::search;
+    else if (start_edge && (cw & kCwHalt) == 0) {
+      homing_ = Homing::search;
+      referenced_ = false;
+    }
   }
   if (state_ == DriveState::fault) {
     if (reset_edge) {
@@ -371,6 +377,7 @@ void DriveNode::homing_step() {
     actual_ = static_cast<std::int32_t>(od(kHomeOffset, 0));
     actual_exact_ = actual_;
     homing_ = Homing::attained;
+    referenced_ = true;
   }
 }
 

@@ -45,7 +45,9 @@ enum FaultBit : std::uint16_t {
 // home_position. Speeds in mm/s, lengths in mm.
 struct HomeCommand {
   int axis = 0;          // 0 x, 1 y, 2 z
-  int dir = -1;          // -1: the switch is towards negative, +1 towards positive
+  int dir = -1;          // -1: the switch is towards negative, +1 towards positive;
+                         // 0: no search, where the axis stands becomes home_position
+                         // (after kerf's own search on a GPIO switch; CiA 402 method 37)
   double search_speed = 20;
   double latch_speed = 1;
   double search_distance = 1000;

@@ -108,6 +108,9 @@ class DriveNode {
   DriveCounters counters_{};
   enum class Homing : std::uint8_t { idle, search, release, attained, halted };
   Homing homing_ = Homing::idle;
+  // Homed since power-up: survives mode changes and NMT reset (the position
+  // counter does too); in homing mode the statusword's bit 12 reports it.
+  bool referenced_ = false;
   std::int32_t latched_ = 0;
 };
 

@@ -35,6 +35,7 @@ class VirtualCanBus {
   // Adds a drive and powers it on (its boot-up message goes out now).
   DriveNode& add_drive(const DriveConfig& cfg);
   DriveNode& drive(std::size_t i) { return *drives_[i]; }
+  const DriveNode& drive(std::size_t i) const { return *drives_[i]; }
   std::size_t drive_count() const { return drives_.size(); }
 
   std::uint64_t now_us() const { return now_us_; }

@@ -26,6 +26,11 @@ struct CanOpenConfig {
   std::uint32_t sdo_timeout_us = 50000;
   std::uint32_t boot_timeout_us = 500000;  // reset node -> boot-up heartbeat
   std::uint32_t enable_cycles = 50;        // per 402 transition
+  // A homing search is halted this many SYNCs' travel before its search
+  // distance: the feedback's age plus the halt's own period. 2 where the
+  // feedback is one SYNC old (the in-process bus); more on a real bus, where
+  // a drive's TPDO can come a SYNC or more late.
+  std::uint32_t homing_lead_syncs = 2;
 };
 
 class CanOpenMaster final : public AxisLink {
@@ -54,6 +59,12 @@ class CanOpenMaster final : public AxisLink {
   // `result` says how homing ended.
   AxisError home(std::size_t axis, const DriveHoming& h, DriveHomingResult& result,
                  const std::function<bool()>& stop) override;
+
+  // Whether the axis's drive has been homed since its power-up: mode 6 for
+  // one SDO read of the statusword (bit 12, homing attained), then CSP again.
+  // Before enable(): nothing moves. sdo_abort: the drive has no homing mode
+  // (or refused the read); its mode is CSP again either way.
+  AxisError homed_since_power_up(std::size_t axis, bool& homed);
 
   // Expedited SDO, exposed for setup beyond the standard set and for tests.
   AxisError sdo_write(std::size_t axis, std::uint16_t index, std::uint8_t sub, std::uint32_t value,

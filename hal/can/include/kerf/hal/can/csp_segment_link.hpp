@@ -89,6 +89,9 @@ class CspSegmentLink final : public SegmentLink {
   LinkError home(const HomeCommand& h, const std::function<bool()>& stop) override;
   std::uint64_t resends() const override { return 0; }
   const char* last_error() const override;
+  // The axes the drives report homed since their power-up (read at bring-up:
+  // CanOpenMaster::homed_since_power_up), bit 0 x, bit 1 y.
+  void set_homed(std::uint8_t bits);
 
   // One SYNC period (tests drive the virtual clock with it).
   void cycle();
