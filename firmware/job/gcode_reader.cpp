@@ -18,16 +18,7 @@ static_assert(sizeof(GWord) <= 16, "a word is written for every letter of a file
 
 namespace {
 
-struct State {
-  Motion motion = Motion::none;
-  bool xy_plane = true;
-  bool inches = false;
-  bool relative = false;
-  bool torch = false;
-  double pos[3] = {0, 0, 0};
-  bool known[3] = {false, false, false};
-  bool flow = false;  // an O-word was read: a loop or a call may run any later line again
-};
+using State = GcodeModal;
 
 // One block's words, comments and unknown words while it is parsed; reused
 // from block to block, then appended to the file's Source.
@@ -433,13 +424,14 @@ class LineEnds {
   std::size_t next_nl_;  // the first '\n' at or after the last `at` (or the text's size)
 };
 
-GcodeFile parse_source(std::string text_in, std::string display_name) {
+GcodeFile parse_source(std::string text_in, std::string display_name, GcodePart* part = nullptr) {
   GcodeFile f;
   f.file = std::move(display_name);
   auto src = std::make_shared<GcodeFile::Source>();
   src->text = std::move(text_in);
   const std::string_view text = src->text;
-  State st;
+  State st = part != nullptr ? part->modal : State{};
+  bool run_open = false;  // as collect_polylines sees the blocks, for part->run_block
   // One block per line and at most a word per letter, reserved at once:
   // growing them moved and faulted in megabytes.
   // (Counted apart, so that each loop is vectorised; a CRLF file counts
@@ -452,7 +444,7 @@ GcodeFile parse_source(std::string text_in, std::string display_name) {
   src->pieces.reserve(lines);  // a comment or an unknown word per line is common; more grows
   std::size_t blocks_mapped = 0, words_mapped = 0, pieces_mapped = 0;
   Scratch sc;
-  std::size_t i = 0, line = 0;
+  std::size_t i = 0, line = part != nullptr ? part->first_line - 1 : 0;
   LineEnds ends(text);
   auto refuse = [&](std::string why) {
     fail(f, line, std::move(why));
@@ -481,6 +473,7 @@ GcodeFile parse_source(std::string text_in, std::string display_name) {
     sc.unknown.clear();
     if (b.text.find('\0') != std::string::npos) reason = "a NUL byte (not a text file?)";
     bool oword = false;
+    const State before = st;
     if (!reason.empty() || !split_words(b, sc, reason) ||
         (b.dynamic && !dynamic_words(b, sc, oword, reason)) || !apply_block(b, sc, st, reason)) {
       refuse(std::move(reason));
@@ -496,11 +489,16 @@ GcodeFile parse_source(std::string text_in, std::string display_name) {
     b.words = {src->words.data(), sc.words.size()};
     b.comments = {src->pieces.data(), sc.comments.size()};
     b.unknown = {src->pieces.data(), sc.unknown.size()};
+    if (part != nullptr && !b.only_comment()) {
+      if (!b.xy_line || b.has_f) run_open = false, part->run_block = static_cast<std::size_t>(-1);
+      if (b.xy_line && !run_open) run_open = true, part->run_block = f.blocks.size(), part->at_run = before;
+    }
     make_room(f.blocks, blocks_mapped, 1);
     f.blocks.push_back(b);
   }
   bind_spans(f, *src);
   f.source = std::move(src);
+  if (part != nullptr) part->modal = st;
   collect_polylines(f);
   f.ok = true;
   return f;
@@ -510,6 +508,11 @@ GcodeFile parse_source(std::string text_in, std::string display_name) {
 
 GcodeFile parse_gcode(std::string_view text, std::string display_name) {
   return parse_source(std::string(text), std::move(display_name));
+}
+
+GcodeFile parse_gcode_part(std::string text, std::string display_name, GcodePart& part) {
+  part.run_block = static_cast<std::size_t>(-1);
+  return parse_source(std::move(text), std::move(display_name), &part);
 }
 
 GcodeFile read_gcode(const std::string& path) {

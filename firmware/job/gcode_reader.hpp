@@ -106,6 +106,31 @@ struct GcodeFile {
   std::size_t decimals = 0;  // most digits after the point in any X/Y word
 };
 
+// The modal state between two lines: what reading a file in parts carries
+// from one part to the next (kerf weld streams, weld/weld_stream.cpp).
+struct GcodeModal {
+  Motion motion = Motion::none;
+  bool xy_plane = true;
+  bool inches = false;
+  bool relative = false;
+  bool torch = false;
+  double pos[3] = {0, 0, 0};
+  bool known[3] = {false, false, false};
+  bool flow = false;  // an O-word was read: a loop or a call may run any later line again
+};
+
+// One part of a file, parsed as its lines from `first_line` on: `modal` is
+// the state before them, and after them once parsed. `run_block` is the
+// first block of the run (a GPolyline) still open at the part's end, or npos,
+// and `at_run` the state before it: where to read again from to keep that run whole.
+struct GcodePart {
+  GcodeModal modal;
+  std::size_t first_line = 1;
+  std::size_t run_block = static_cast<std::size_t>(-1);
+  GcodeModal at_run;
+};
+GcodeFile parse_gcode_part(std::string text, std::string display_name, GcodePart& part);
+
 // Reads `path` ("-": stdin) and parses it.
 GcodeFile read_gcode(const std::string& path);
 GcodeFile parse_gcode(std::string_view text, std::string display_name);
