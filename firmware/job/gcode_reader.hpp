@@ -68,10 +68,11 @@ struct GBlock {
   double end_pos[3] = {0, 0, 0};  // position after it
   double centre[2] = {0, 0};   // arc centre, absolute (G2/G3 moves only)
   bool has_f = false;
+  bool new_feed = false;       // an F word that changes the feed in force (a repeated one is modal noise)
   bool dynamic = false;        // parameters, expressions or an O-word: words is empty, the text is parsed at run
   bool only_comment() const { return words.empty() && !dynamic; }
-  // A G1 move in the XY plane with only X, Y (and N, F, G1) words: a
-  // polyline vertex that welding may replace.
+  // A G1 move in the XY plane with only X, Y (and N, F, G1) words, and Z
+  // only to repeat the known Z: a polyline vertex that welding may replace.
   bool xy_line = false;
   std::size_t decimals = 0;    // most digits after the point in its X/Y words
 };
@@ -117,6 +118,9 @@ struct GcodeModal {
   double pos[3] = {0, 0, 0};
   bool known[3] = {false, false, false};
   bool flow = false;  // an O-word was read: a loop or a call may run any later line again
+  double feed = std::nan("");  // the F in force (NaN: none yet)
+  bool lf_ends = true;  // the file's lines end at LF (else CR only); set by the first part with a line end
+  bool ends_known = false;
 };
 
 // One part of a file, parsed as its lines from `first_line` on: `modal` is

@@ -81,12 +81,17 @@ int weld_file(const std::string& in, const std::string& out, WeldOptions w) {
       if (f != stdin) std::fclose(f);
     }
   } close{f};
-  const StreamOptions so;
+  StreamOptions so;
   std::string error;
   // A file larger than a part is read twice: first for its decimals (so that
-  // the output is the whole-file weld's), its lines and its errors.
+  // the output is the whole-file weld's), its lines and its errors. A smaller
+  // one is read in one part of its size (a part's buffer is written whole
+  // before the read: 1 MiB of page faults cost a small file 0.6 ms).
   GcodeScan scan;
-  if (!use_stdin && std::fseek(f, 0, SEEK_END) == 0 && std::ftell(f) > static_cast<long>(so.chunk_bytes)) {
+  const long size = !use_stdin && std::fseek(f, 0, SEEK_END) == 0 ? std::ftell(f) : -1;
+  if (size >= 0 && static_cast<unsigned long>(size) < so.chunk_bytes)
+    so.chunk_bytes = static_cast<std::size_t>(size) + 1;
+  if (size > static_cast<long>(so.chunk_bytes)) {
     std::rewind(f);
     if (!scan_gcode(f, name, so.chunk_bytes, scan, error)) {
       std::fprintf(stderr, "kerf: %s\n", error.c_str());
