@@ -4,8 +4,9 @@
 // Supported: G0/G1/G2/G3 (I J or R arcs), G4, G17/G18/G19, G20/G21, G90/G91,
 // G92, F, S, T, P, N line numbers, `$n` (a spindle select, as an unknown word), `;` and `( )` comments, M3/M4/M5 (torch),
 // M7/M8/M9, M0/M1/M2/M30. Dialects: zero-padded words (G01, M03), bare modal
-// lines (X.. Y.. with no G word), blanks and tabs anywhere, lower case, CRLF,
-// CR or LF line ends, inch files (G20), a `%` tape mark.
+// lines (X.. Y.. with no G word), blanks and tabs anywhere, lower case, LF,
+// CRLF or CR CR LF line ends (a file with an LF ends its lines there; one
+// without, at CR), inch files (G20), a `%` tape mark.
 //
 // A line with a parameter (#), an expression ([...]) or an O-word is marked
 // `dynamic`: job/gcode_expr.hpp parses it (its syntax errors are refused
@@ -78,7 +79,8 @@ struct GBlock {
 };
 
 // A run of consecutive xy_line blocks (comment-only lines in between do not
-// break it) at a known start. points[0] is the start; points[k] (k >= 1) is
+// break it; an F that changes the feed starts another) at a known start.
+// points[0] is the start; points[k] (k >= 1) is
 // the end of block point_block[k].
 struct GPolyline {
   std::size_t first_block = 0;  // index in GcodeFile::blocks
