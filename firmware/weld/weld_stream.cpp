@@ -6,6 +6,7 @@
 #include <string>
 
 #include "io/point_file.hpp"
+#include "io/prefault.hpp"
 #include "job/gcode_reader.hpp"
 #include "weld/weld.hpp"
 
@@ -29,6 +30,8 @@ std::size_t last_line_end(const std::string& buf) {
 // Appends up to n bytes of in to buf; false on a read error.
 bool read_more(std::FILE* in, std::string& buf, std::size_t n, bool& eof) {
   const std::size_t have = buf.size();
+  if (buf.capacity() < have + n) buf.reserve(have + n);
+  io::prefault(buf.data() + have, n);  // one call instead of a page fault per 4 KiB
   buf.resize(have + n);
   const std::size_t got = std::fread(buf.data() + have, 1, n, in);
   buf.resize(have + got);
@@ -73,9 +76,13 @@ StreamEnd weld_stream(std::FILE* in, const std::string& name, const Sink& sink, 
     if (cut == 0 && !eof && buf.size() <= io::kMaxLineBytes) continue;
     if (cut == 0) cut = buf.size();  // a line too long: the parse refuses it
     const std::size_t first_line = part.first_line;
-    const job::GcodeFile g = job::parse_gcode_part(buf.substr(0, cut), name, part);
-    if (!g.ok) return error = job::describe_error(g), StreamEnd::bad_input;
     const bool last = eof && cut == buf.size();
+    // The part's text moves into the parse (copying it cost small files a
+    // page fault per 4 KiB); what follows it, a piece of a line, is kept.
+    std::string rest = buf.substr(cut);
+    buf.resize(cut);
+    const job::GcodeFile g = job::parse_gcode_part(std::move(buf), name, part);
+    if (!g.ok) return error = job::describe_error(g), StreamEnd::bad_input;
     std::size_t end = g.blocks.size();
     if (!last && part.run_block != kNone) {
       if (end - part.run_block <= so.window_lines) end = part.run_block;  // read again with what follows
@@ -86,13 +93,17 @@ StreamEnd weld_stream(std::FILE* in, const std::string& name, const Sink& sink, 
       welder.set_decimals(std::max<int>(3, static_cast<int>(decimals)));
     }
     out.clear();
+    if (out.capacity() < cut + cut / 8) out.reserve(cut + cut / 8);  // arcs shorten it, a "G1 " lengthens it
+    io::prefault(out.data(), cut);
     if (!welder.add(g, end, error)) return StreamEnd::fit_failed;
     if (!out.empty() && !sink(out)) return error = "cannot write the output", StreamEnd::write_failed;
     stats.lines += end;
     if (last) break;
+    const std::string& text = g.source->text;
     const std::size_t consumed =
-        end < g.blocks.size() ? static_cast<std::size_t>(g.blocks[end].text.data() - g.source->text.data()) : cut;
-    buf.erase(0, consumed);
+        end < g.blocks.size() ? static_cast<std::size_t>(g.blocks[end].text.data() - text.data()) : cut;
+    buf.assign(text, consumed);
+    buf += rest;
     part.first_line = first_line + end;
     if (end < g.blocks.size()) part.modal = part.at_run;
   }
