@@ -18,16 +18,7 @@ static_assert(sizeof(GWord) <= 16, "a word is written for every letter of a file
 
 namespace {
 
-struct State {
-  Motion motion = Motion::none;
-  bool xy_plane = true;
-  bool inches = false;
-  bool relative = false;
-  bool torch = false;
-  double pos[3] = {0, 0, 0};
-  bool known[3] = {false, false, false};
-  bool flow = false;  // an O-word was read: a loop or a call may run any later line again
-};
+using State = GcodeModal;
 
 // One block's words, comments and unknown words while it is parsed; reused
 // from block to block, then appended to the file's Source.
@@ -280,13 +271,20 @@ bool apply_block(GBlock& b, Scratch& sc, State& st, std::string& reason) {
       case 'J': ij[1] = w.value; has_ij = true; break;
       case 'K': has_k = true; break;
       case 'R': r = w.value; has_r = true; break;
-      case 'F': b.has_f = true; break;
+      case 'F':
+        b.has_f = true;
+        b.new_feed = !(w.value == st.feed);  // NaN (no feed yet) compares unequal
+        st.feed = w.value;
+        break;
       case 'N': break;
       case 'S': case 'T': case 'P': other_words = true; break;
       default: sc.unknown.push_back(word_text(b, w)); other_words = true; break;
     }
   }
   if (torch_change != 0) st.torch = torch_change > 0;
+  // A Z word that repeats the known Z (absolute) moves nothing: modal noise
+  // that does not stop a run, like an F that repeats the feed in force.
+  const bool z_same = has_axis[2] && st.known[2] && !st.relative && axis[2] == st.pos[2];
   for (int k = 0; k < 3; ++k) b.start[k] = st.pos[k];
   b.known_start = st.known[0] && st.known[1];
   const bool any_axis = has_axis[0] || has_axis[1] || has_axis[2];
@@ -330,7 +328,7 @@ bool apply_block(GBlock& b, Scratch& sc, State& st, std::string& reason) {
       return reason = "I, J or R on a move that is not an arc", false;
     }
     (void)other_words;
-    b.xy_line = st.motion == Motion::linear && st.xy_plane && !has_axis[2] && b.known_start &&
+    b.xy_line = st.motion == Motion::linear && st.xy_plane && (!has_axis[2] || z_same) && b.known_start &&
                 sc.unknown.empty() && !other_words;
   }
   for (int k = 0; k < 3; ++k) b.end_pos[k] = st.pos[k];
@@ -353,7 +351,7 @@ void collect_polylines(GcodeFile& f) {
   for (std::size_t i = 0; i < f.blocks.size(); ++i) {
     const GBlock& b = f.blocks[i];
     if (b.only_comment()) continue;  // comments and blank lines do not break a run
-    if (!b.xy_line || (open && b.has_f)) close();
+    if (!b.xy_line || (open && b.new_feed)) close();
     if (!b.xy_line) continue;
     if (!open) {
       open = true;
@@ -410,36 +408,42 @@ void bind_spans(GcodeFile& f, const GcodeFile::Source& src) {
   }
 }
 
-// Finds where each line ends: the first '\n' or '\r', or the end of the
-// text. memchr for the '\n' (every line but a CR file's ends there), kept
-// until passed so that a CR file is not searched to its end per line, then
-// for a '\r' before it.
+// Finds where each line ends. A file with an LF anywhere ends its lines at
+// LF, and the CRs just before it belong to the line end ("\r\n", and
+// "\r\r\n" from text mode applied twice); a file without one (CR only)
+// ends them at CR. So a reader that splits at LF only and one that splits
+// at CR or LF see the same lines (the second, some blank ones between).
 class LineEnds {
  public:
-  explicit LineEnds(std::string_view text) : text_(text), next_nl_(find('\n', 0, text.size())) {}
-  std::size_t from(std::size_t at) {
-    if (next_nl_ < at) next_nl_ = find('\n', at, text_.size());
-    return find('\r', at, next_nl_);
+  LineEnds(std::string_view text, bool lf) : text_(text), lf_(lf) {}
+  // The end of the text of the line that starts at `at`; `next`: where its line end ends.
+  std::size_t from(std::size_t at, std::size_t& next) const {
+    const std::size_t j = find(lf_ ? '\n' : '\r', at);
+    next = j < text_.size() ? j + 1 : j;
+    std::size_t k = j;
+    if (lf_ && j < text_.size())
+      while (k > at && j - k < 2 && text_[k - 1] == '\r') --k;
+    return k;
   }
 
  private:
-  // The first c in [at, end), or end.
-  std::size_t find(char c, std::size_t at, std::size_t end) const {
-    const void* p = std::memchr(text_.data() + at, c, end - at);
-    return p != nullptr ? static_cast<std::size_t>(static_cast<const char*>(p) - text_.data()) : end;
+  std::size_t find(char c, std::size_t at) const {
+    const void* p = std::memchr(text_.data() + at, c, text_.size() - at);
+    return p != nullptr ? static_cast<std::size_t>(static_cast<const char*>(p) - text_.data()) : text_.size();
   }
 
   std::string_view text_;
-  std::size_t next_nl_;  // the first '\n' at or after the last `at` (or the text's size)
+  bool lf_;
 };
 
-GcodeFile parse_source(std::string text_in, std::string display_name) {
+GcodeFile parse_source(std::string text_in, std::string display_name, GcodePart* part = nullptr) {
   GcodeFile f;
   f.file = std::move(display_name);
   auto src = std::make_shared<GcodeFile::Source>();
   src->text = std::move(text_in);
   const std::string_view text = src->text;
-  State st;
+  State st = part != nullptr ? part->modal : State{};
+  bool run_open = false;  // as collect_polylines sees the blocks, for part->run_block
   // One block per line and at most a word per letter, reserved at once:
   // growing them moved and faulted in megabytes.
   // (Counted apart, so that each loop is vectorised; a CRLF file counts
@@ -452,8 +456,12 @@ GcodeFile parse_source(std::string text_in, std::string display_name) {
   src->pieces.reserve(lines);  // a comment or an unknown word per line is common; more grows
   std::size_t blocks_mapped = 0, words_mapped = 0, pieces_mapped = 0;
   Scratch sc;
-  std::size_t i = 0, line = 0;
-  LineEnds ends(text);
+  std::size_t i = 0, line = part != nullptr ? part->first_line - 1 : 0;
+  const bool has_lf = std::memchr(text.data(), '\n', text.size()) != nullptr;
+  const bool has_cr = std::memchr(text.data(), '\r', text.size()) != nullptr;
+  if (part != nullptr && !st.ends_known && (has_lf || has_cr)) st.ends_known = true, st.lf_ends = has_lf;
+  const bool lf = part != nullptr && st.ends_known ? st.lf_ends : has_lf || !has_cr;
+  const LineEnds ends(text, lf);
   auto refuse = [&](std::string why) {
     fail(f, line, std::move(why));
     bind_spans(f, *src);
@@ -461,7 +469,8 @@ GcodeFile parse_source(std::string text_in, std::string display_name) {
   };
   while (i < text.size()) {
     ++line;
-    const std::size_t j = ends.from(i);
+    std::size_t next = 0;
+    const std::size_t j = ends.from(i, next);
     if (j - i > io::kMaxLineBytes) {
       refuse("line longer than 65536 bytes (not a G-code file?)");
       return f;
@@ -469,18 +478,20 @@ GcodeFile parse_source(std::string text_in, std::string display_name) {
     GBlock b;
     b.line = line;
     b.text = text.substr(i, j - i);
-    i = j;
-    if (j < text.size()) {
-      const bool crlf = text[j] == '\r' && j + 1 < text.size() && text[j + 1] == '\n';
-      b.end = crlf ? "\r\n" : text[j] == '\r' ? "\r" : "\n";
-      i += crlf ? 2 : 1;
-    }
+    b.end = text.substr(j, next - j);
+    i = next;
     std::string reason;
+    if (lf && has_cr && b.text.find('\r') != std::string::npos)
+      reason = "a CR inside a line (this file's lines end with LF: readers that also end lines at CR "
+               "would see another program)";
+    else if (!lf && has_lf && b.text.find('\n') != std::string::npos)
+      reason = "an LF in a file whose lines end with CR";
     sc.words.clear();
     sc.comments.clear();
     sc.unknown.clear();
-    if (b.text.find('\0') != std::string::npos) reason = "a NUL byte (not a text file?)";
+    if (reason.empty() && b.text.find('\0') != std::string::npos) reason = "a NUL byte (not a text file?)";
     bool oword = false;
+    const State before = st;
     if (!reason.empty() || !split_words(b, sc, reason) ||
         (b.dynamic && !dynamic_words(b, sc, oword, reason)) || !apply_block(b, sc, st, reason)) {
       refuse(std::move(reason));
@@ -496,11 +507,16 @@ GcodeFile parse_source(std::string text_in, std::string display_name) {
     b.words = {src->words.data(), sc.words.size()};
     b.comments = {src->pieces.data(), sc.comments.size()};
     b.unknown = {src->pieces.data(), sc.unknown.size()};
+    if (part != nullptr && !b.only_comment()) {
+      if (!b.xy_line || b.new_feed) run_open = false, part->run_block = static_cast<std::size_t>(-1);
+      if (b.xy_line && !run_open) run_open = true, part->run_block = f.blocks.size(), part->at_run = before;
+    }
     make_room(f.blocks, blocks_mapped, 1);
     f.blocks.push_back(b);
   }
   bind_spans(f, *src);
   f.source = std::move(src);
+  if (part != nullptr) part->modal = st;
   collect_polylines(f);
   f.ok = true;
   return f;
@@ -510,6 +526,11 @@ GcodeFile parse_source(std::string text_in, std::string display_name) {
 
 GcodeFile parse_gcode(std::string_view text, std::string display_name) {
   return parse_source(std::string(text), std::move(display_name));
+}
+
+GcodeFile parse_gcode_part(std::string text, std::string display_name, GcodePart& part) {
+  part.run_block = static_cast<std::size_t>(-1);
+  return parse_source(std::move(text), std::move(display_name), &part);
 }
 
 GcodeFile read_gcode(const std::string& path) {

@@ -4,8 +4,9 @@
 // Supported: G0/G1/G2/G3 (I J or R arcs), G4, G17/G18/G19, G20/G21, G90/G91,
 // G92, F, S, T, P, N line numbers, `$n` (a spindle select, as an unknown word), `;` and `( )` comments, M3/M4/M5 (torch),
 // M7/M8/M9, M0/M1/M2/M30. Dialects: zero-padded words (G01, M03), bare modal
-// lines (X.. Y.. with no G word), blanks and tabs anywhere, lower case, CRLF,
-// CR or LF line ends, inch files (G20), a `%` tape mark.
+// lines (X.. Y.. with no G word), blanks and tabs anywhere, lower case, LF,
+// CRLF or CR CR LF line ends (a file with an LF ends its lines there; one
+// without, at CR), inch files (G20), a `%` tape mark.
 //
 // A line with a parameter (#), an expression ([...]) or an O-word is marked
 // `dynamic`: job/gcode_expr.hpp parses it (its syntax errors are refused
@@ -68,16 +69,18 @@ struct GBlock {
   double end_pos[3] = {0, 0, 0};  // position after it
   double centre[2] = {0, 0};   // arc centre, absolute (G2/G3 moves only)
   bool has_f = false;
+  bool new_feed = false;       // an F word that changes the feed in force (a repeated one is modal noise)
   bool dynamic = false;        // parameters, expressions or an O-word: words is empty, the text is parsed at run
   bool only_comment() const { return words.empty() && !dynamic; }
-  // A G1 move in the XY plane with only X, Y (and N, F, G1) words: a
-  // polyline vertex that welding may replace.
+  // A G1 move in the XY plane with only X, Y (and N, F, G1) words, and Z
+  // only to repeat the known Z: a polyline vertex that welding may replace.
   bool xy_line = false;
   std::size_t decimals = 0;    // most digits after the point in its X/Y words
 };
 
 // A run of consecutive xy_line blocks (comment-only lines in between do not
-// break it) at a known start. points[0] is the start; points[k] (k >= 1) is
+// break it; an F that changes the feed starts another) at a known start.
+// points[0] is the start; points[k] (k >= 1) is
 // the end of block point_block[k].
 struct GPolyline {
   std::size_t first_block = 0;  // index in GcodeFile::blocks
@@ -105,6 +108,34 @@ struct GcodeFile {
   std::vector<GPolyline> polylines;
   std::size_t decimals = 0;  // most digits after the point in any X/Y word
 };
+
+// The modal state between two lines: what reading a file in parts carries
+// from one part to the next (kerf weld streams, weld/weld_stream.cpp).
+struct GcodeModal {
+  Motion motion = Motion::none;
+  bool xy_plane = true;
+  bool inches = false;
+  bool relative = false;
+  bool torch = false;
+  double pos[3] = {0, 0, 0};
+  bool known[3] = {false, false, false};
+  bool flow = false;  // an O-word was read: a loop or a call may run any later line again
+  double feed = std::nan("");  // the F in force (NaN: none yet)
+  bool lf_ends = true;  // the file's lines end at LF (else CR only); set by the first part with a line end
+  bool ends_known = false;
+};
+
+// One part of a file, parsed as its lines from `first_line` on: `modal` is
+// the state before them, and after them once parsed. `run_block` is the
+// first block of the run (a GPolyline) still open at the part's end, or npos,
+// and `at_run` the state before it: where to read again from to keep that run whole.
+struct GcodePart {
+  GcodeModal modal;
+  std::size_t first_line = 1;
+  std::size_t run_block = static_cast<std::size_t>(-1);
+  GcodeModal at_run;
+};
+GcodeFile parse_gcode_part(std::string text, std::string display_name, GcodePart& part);
 
 // Reads `path` ("-": stdin) and parses it.
 GcodeFile read_gcode(const std::string& path);

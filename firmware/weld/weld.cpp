@@ -44,6 +44,10 @@ std::string_view word_text(const job::GBlock& b, char letter) {
   return {};
 }
 
+}  // namespace
+
+namespace detail {
+
 class Emitter {
  public:
   explicit Emitter(std::string& out) : out_(out) {}
@@ -67,7 +71,7 @@ class Emitter {
 
 // Writes the input lines and the plans, in file order; keeps the stats.
 struct Writer {
-  const job::GcodeFile& g;
+  const job::GcodeFile* g = nullptr;  // the part of the file being written
   const WeldOptions& opts;
   WeldStats& stats;
   Emitter emit;
@@ -98,14 +102,14 @@ struct Writer {
       const std::size_t end_block = last_piece ? pl.last_block : block;
       if (p.keep) {
         for (std::size_t i = next_block; i <= end_block; ++i) {
-          emit.verbatim(g.blocks[i]);
-          if (g.blocks[i].moves) ++stats.output_moves;
+          emit.verbatim(g->blocks[i]);
+          if (g->blocks[i].moves) ++stats.output_moves;
         }  // its X/Y words are the input's: offset is zero after it (resolve)
         next_block = end_block + 1;
         continue;
       }
       stats.max_deviation_mm = std::max(stats.max_deviation_mm, w.deviation * r.unit);
-      const job::GBlock& eb = g.blocks[block];
+      const job::GBlock& eb = g->blocks[block];
       std::string line;
       if (const std::string_view n = word_text(eb, 'N'); !n.empty()) {
         line = n;
@@ -113,7 +117,7 @@ struct Writer {
       }
       line += w.text;
       if (k == 0)
-        if (const std::string_view f = word_text(g.blocks[pl.first_block], 'F'); !f.empty()) {
+        if (const std::string_view f = word_text(g->blocks[pl.first_block], 'F'); !f.empty()) {
           line += ' ';
           line += f;
         }
@@ -127,7 +131,7 @@ struct Writer {
       if (arc) ++stats.arcs;
       // The comments of the replaced lines stay, in order, after the piece.
       for (std::size_t i = next_block; i <= end_block; ++i) {
-        const job::GBlock& b = g.blocks[i];
+        const job::GBlock& b = g->blocks[i];
         if (&b == &eb) continue;
         if (b.only_comment()) {
           emit.verbatim(b);
@@ -144,6 +148,10 @@ struct Writer {
     }
   }
 };
+
+}  // namespace detail
+
+namespace {
 
 bool same_point(P a, P b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
@@ -175,8 +183,10 @@ class PlanPool {
  public:
   static constexpr std::size_t kPooledPoints = 32;
 
-  PlanPool(const job::GcodeFile& g, const WeldOptions& opts, int decimals, unsigned threads)
-      : opts_(opts), decimals_(decimals), runs_(g.polylines.size()) {
+  // Plans the first `polylines` polylines of g.
+  PlanPool(const job::GcodeFile& g, std::size_t polylines, const WeldOptions& opts, int decimals,
+           unsigned threads)
+      : opts_(opts), decimals_(decimals), runs_(polylines) {
     parallel_for(runs_.size(), threads,
                  [&](std::size_t p) { detail::prepare(g.polylines[p], opts, decimals, runs_[p]); });
     first_part_.reserve(runs_.size());
@@ -266,31 +276,33 @@ unsigned weld_threads(int requested) {
   return requested <= 0 ? cores : std::min(cores, static_cast<unsigned>(requested));
 }
 
-bool weld_gcode(const job::GcodeFile& g, const WeldOptions& opts, std::string& out,
-                WeldStats& stats, std::string& error) {
-  stats = WeldStats{};
-  stats.decimals = opts.decimals >= 0 ? opts.decimals : std::max<int>(3, static_cast<int>(g.decimals));
-  out.clear();
-  std::size_t bytes = 0;
-  for (const job::GBlock& b : g.blocks) bytes += b.text.size() + b.end.size();
-  out.reserve(bytes + bytes / 8);  // arcs shorten the text; a "G1 " added after one lengthens it
-  io::prefault(out.data(), bytes);
-  Writer w{g, opts, stats, Emitter(out), {}};
-  const unsigned threads = g.polylines.empty() ? 1 : weld_threads(opts.threads);
+Welder::Welder(const WeldOptions& opts, int decimals, WeldStats& stats, std::string& out)
+    : opts_(opts), stats_(stats), writer_(std::make_unique<detail::Writer>(detail::Writer{nullptr, opts, stats, detail::Emitter(out), {}})) {
+  stats_.decimals = decimals;
+}
+
+Welder::~Welder() = default;
+
+bool Welder::add(const job::GcodeFile& g, std::size_t end, std::string& error) {
+  detail::Writer& w = *writer_;
+  w.g = &g;
+  std::size_t polylines = 0;
+  while (polylines < g.polylines.size() && g.polylines[polylines].last_block < end) ++polylines;
+  const unsigned threads = polylines == 0 ? 1 : weld_threads(opts_.threads);
   std::optional<PlanPool> pool;
-  if (threads > 1) pool.emplace(g, opts, stats.decimals, threads);
+  if (threads > 1) pool.emplace(g, polylines, opts_, stats_.decimals, threads);
   Run local;
   PartPlan part;
   std::vector<Planned> pieces;
   std::size_t next = 0;
-  for (std::size_t p = 0; p < g.polylines.size(); ++p) {
+  for (std::size_t p = 0; p < polylines; ++p) {
     const job::GPolyline& pl = g.polylines[p];
     for (; next < pl.first_block; ++next) w.pass(g.blocks[next]);
     next = pl.last_block + 1;
     Run& r = pool ? pool->run(p) : local;
     if (!pool) {
       r = Run{};
-      detail::prepare(pl, opts, stats.decimals, r);
+      detail::prepare(pl, opts_, stats_.decimals, r);
     }
     if (!r.welded) {
       for (std::size_t i = pl.first_block; i <= pl.last_block; ++i) w.pass(g.blocks[i]);
@@ -302,18 +314,18 @@ bool weld_gcode(const job::GcodeFile& g, const WeldOptions& opts, std::string& o
       PartPlan* made = pool ? pool->wait(p, j) : nullptr;
       if (made) {
         if (made->exception) std::rethrow_exception(made->exception);
-        if (!same_point(made->from_in, from)) detail::plan_part(r, j, from, opts, stats.decimals, *made);
+        if (!same_point(made->from_in, from)) detail::plan_part(r, j, from, opts_, stats_.decimals, *made);
       } else {
         made = &part;
-        detail::plan_part(r, j, from, opts, stats.decimals, part);
+        detail::plan_part(r, j, from, opts_, stats_.decimals, part);
       }
       if (!made->ok) {
         error = g.file + ":" + std::to_string(g.blocks[pl.first_block].line) + ": " + made->error;
         return false;
       }
-      stats.kept_pieces += made->kept;
-      if (opts.progress)
-        opts.progress(pl.point_block[r.from_index[r.kept_index[r.cuts[j + 1]]]], g.blocks.size());
+      stats_.kept_pieces += made->kept;
+      if (opts_.progress)
+        opts_.progress(g.blocks[pl.point_block[r.from_index[r.kept_index[r.cuts[j + 1]]]]].line);
       pieces.insert(pieces.end(), made->pieces.begin(), made->pieces.end());
       from = made->from_out;
       *made = PartPlan{};  // taken: its memory is free again
@@ -321,9 +333,22 @@ bool weld_gcode(const job::GcodeFile& g, const WeldOptions& opts, std::string& o
     w.write(pl, r, pieces, from);
     r = Run{};
   }
-  for (; next < g.blocks.size(); ++next) w.pass(g.blocks[next]);
-  for (const job::GBlock& b : g.blocks) stats.input_moves += b.moves ? 1 : 0;
+  for (; next < end; ++next) w.pass(g.blocks[next]);
+  for (std::size_t i = 0; i < end; ++i) stats_.input_moves += g.blocks[i].moves ? 1 : 0;
   return true;
+}
+
+bool weld_gcode(const job::GcodeFile& g, const WeldOptions& opts, std::string& out,
+                WeldStats& stats, std::string& error) {
+  stats = WeldStats{};
+  out.clear();
+  std::size_t bytes = 0;
+  for (const job::GBlock& b : g.blocks) bytes += b.text.size() + b.end.size();
+  out.reserve(bytes + bytes / 8);  // arcs shorten the text; a "G1 " added after one lengthens it
+  io::prefault(out.data(), bytes);
+  Welder welder(opts, opts.decimals >= 0 ? opts.decimals : std::max<int>(3, static_cast<int>(g.decimals)),
+                stats, out);
+  return welder.add(g, g.blocks.size(), error);
 }
 
 }  // namespace kerf::weld

@@ -64,12 +64,12 @@ std::string circle_lines(double cx, double cy, double r, int n, double turns, in
 TEST(GcodeReader, Dialects) {
   const std::string text =
       "%\r\nN10 g21 G90 G17 (mm)\r\nn20 g00 x0 y0\r\n\tG01\tX1.5 Y0 F100 ; cut\r\nX2 y.5\r\n"
-      "(only a comment)\r\nN30 G1 X3 Y1\rM03\nG2 X5 Y1 I1 J0\nG3 X7 Y1 R1\nM05\n";
+      "(only a comment)\r\nN30 G1 X3 Y1\r\r\nM03\nG2 X5 Y1 I1 J0\nG3 X7 Y1 R1\nM05\n";
   const GcodeFile g = parse_gcode(text, "d.nc");
   ASSERT_TRUE(g.ok) << kerf::job::describe_error(g);
   ASSERT_EQ(g.blocks.size(), 11u);
   EXPECT_EQ(g.blocks[1].end, "\r\n");
-  EXPECT_EQ(g.blocks[6].end, "\r");
+  EXPECT_EQ(g.blocks[6].end, "\r\r\n");
   EXPECT_EQ(g.blocks[7].end, "\n");
   EXPECT_EQ(g.blocks[4].motion, kerf::job::Motion::linear);  // bare modal line
   EXPECT_DOUBLE_EQ(g.blocks[4].end_pos[1], 0.5);
@@ -151,23 +151,34 @@ TEST(GcodeReader, NumbersAreCorrectlyRounded) {
   }
 }
 
-// Lines end at LF, CRLF or CR, mixed in one file, and a CR file's lines
-// are found one by one (the reader keeps the next LF between lines).
+// A file with an LF ends its lines there (LF, CRLF or CR CR LF, mixed);
+// one without (CR only) ends them at CR, found one by one; a lone CR inside
+// an LF file's line is refused (readers would disagree on the program).
 TEST(GcodeReader, LineEndsOfEveryKind) {
   std::string cr_only;
   for (int k = 0; k < 2000; ++k) cr_only += "G1 X" + std::to_string(k) + " Y1\r";
-  const GcodeFile g = parse_gcode("G0 X0 Y0\n" + cr_only + "G1 X1 Y2\r\nG1 X3 Y3", "e.nc");
-  ASSERT_TRUE(g.ok) << kerf::job::describe_error(g);
-  ASSERT_EQ(g.blocks.size(), 2003u);
-  EXPECT_EQ(g.blocks[0].end, "\n");
+  const GcodeFile c = parse_gcode("G0 X0 Y0\r" + cr_only + "G1 X3 Y3", "c.nc");
+  ASSERT_TRUE(c.ok) << kerf::job::describe_error(c);
+  ASSERT_EQ(c.blocks.size(), 2002u);
   for (std::size_t k = 1; k <= 2000; ++k) {
-    ASSERT_EQ(g.blocks[k].end, "\r") << k;
-    ASSERT_EQ(g.blocks[k].text, "G1 X" + std::to_string(k - 1) + " Y1") << k;
+    ASSERT_EQ(c.blocks[k].end, "\r") << k;
+    ASSERT_EQ(c.blocks[k].text, "G1 X" + std::to_string(k - 1) + " Y1") << k;
   }
-  EXPECT_EQ(g.blocks[2001].end, "\r\n");
-  EXPECT_EQ(g.blocks[2002].end, "");
-  EXPECT_EQ(g.blocks[2002].text, "G1 X3 Y3");
-  EXPECT_EQ(g.blocks[2002].line, 2003u);
+  EXPECT_EQ(c.blocks[2001].end, "");
+  EXPECT_EQ(c.blocks[2001].line, 2002u);
+  const GcodeFile g = parse_gcode("G0 X0 Y0\nG1 X1 Y1\r\nG1 X2 Y1\r\r\n\r\nG1 X3 Y3", "e.nc");
+  ASSERT_TRUE(g.ok) << kerf::job::describe_error(g);
+  ASSERT_EQ(g.blocks.size(), 5u);
+  EXPECT_EQ(g.blocks[0].end, "\n");
+  EXPECT_EQ(g.blocks[1].end, "\r\n");
+  EXPECT_EQ(g.blocks[2].end, "\r\r\n");
+  EXPECT_EQ(g.blocks[2].text, "G1 X2 Y1");
+  EXPECT_EQ(g.blocks[3].text, "");  // a blank line the file has
+  EXPECT_EQ(g.blocks[4].end, "");
+  const GcodeFile bad = parse_gcode("G0 X0 Y0\nG1 X1 Y1\rG1 X2 Y2\n", "m.nc");
+  ASSERT_FALSE(bad.ok);
+  EXPECT_EQ(bad.line, 2u);
+  EXPECT_NE(bad.reason.find("a CR inside a line"), std::string::npos) << bad.reason;
 }
 
 TEST(GcodeReader, UnknownWordsPassWeldButNotRun) {

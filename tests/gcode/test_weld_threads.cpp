@@ -23,7 +23,7 @@ struct Welded {
   std::string text;
   std::string error;
   WeldStats stats;
-  std::vector<std::pair<std::size_t, std::size_t>> progress;
+  std::vector<std::size_t> progress;
   bool progress_on_caller = true;  // every progress call came from the calling thread
 };
 
@@ -31,8 +31,8 @@ Welded weld(const kerf::job::GcodeFile& g, WeldOptions o, int threads) {
   Welded w;
   o.threads = threads;
   const std::thread::id caller = std::this_thread::get_id();
-  o.progress = [&](std::size_t line, std::size_t lines) {
-    w.progress.emplace_back(line, lines);
+  o.progress = [&](std::size_t line) {
+    w.progress.push_back(line);
     if (std::this_thread::get_id() != caller) w.progress_on_caller = false;
   };
   w.ok = kerf::weld::weld_gcode(g, o, w.text, w.stats, w.error);
