@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "io/input_file.hpp"
 #include "io/options.hpp"
 #include "weld/weld.hpp"
 
@@ -39,6 +40,7 @@ CLI::App* add_weld_command(CLI::App& app, WeldCommandOptions& opts) {
 }
 
 int run_weld(const WeldCommandOptions& opts) {
+  if (!io::input_readable(opts.in)) return io::kExitUsage;
   weld::WeldOptions w;
   std::string error;
   if (!io::parse_length("--tol", opts.tol, false, w.tol_mm, error)) return io::usage_error(error);
