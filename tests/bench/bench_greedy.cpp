@@ -2,8 +2,8 @@
 // ArcWelder's greedy rule ("extend the arc while every point fits, stop at the
 // first failure"), both with kerf's exact pair test (tests/support/
 // greedy_weld.hpp), so the comparison isolates the search. For every file of
-// tests/data/gcode, on the G1 polylines `kerf weld` may replace, per
-// criterion and tol: the points, both move counts and their ratio. Prints
+// tests/data/gcode, on the G1 polylines `kerf weld` may replace (tol in the
+// file's units, relative runs left out), per criterion and tol: the points, both move counts and their ratio. Prints
 // what it counts; exits 1 if optimal ever exceeds greedy (it cannot).
 //
 // usage: kerf_bench_greedy [--criterion vertex|band|both] [FILE...]
@@ -29,10 +29,11 @@ Counts count_file(const kerf::job::GcodeFile& g, double tol, kerf_test::WeldRule
   Counts c;
   for (const kerf::job::GPolyline& pl : g.polylines) {
     const std::vector<kerf::Vec2<double>> p = kerf_test::distinct_points(pl.points);
-    if (p.size() < 2) continue;
+    if (p.size() < 2 || pl.relative) continue;  // as kerf weld: relative runs stay as they are
+    const double t = tol / (pl.inches ? 25.4 : 1.0);
     c.points += p.size();
-    c.optimal += kerf_test::optimal_pieces(p, tol, rule);
-    c.greedy += kerf_test::greedy_pieces(p, tol, rule);
+    c.optimal += kerf_test::optimal_pieces(p, t, rule);
+    c.greedy += kerf_test::greedy_pieces(p, t, rule);
   }
   return c;
 }
