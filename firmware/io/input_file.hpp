@@ -11,8 +11,9 @@ namespace kerf::io {
 // Why `path` cannot be read as an input, or "" when it can: "cannot open:
 // No such file or directory", "is a directory", "cannot read: Input/output
 // error". "-" (stdin) passes. A regular file must give its first byte (a
-// positioned read, so nothing is consumed); a pipe or a device is left to
-// its reader, which must not lose the byte.
+// positioned read, so nothing is consumed); a pipe or a device is not even
+// opened (a named pipe's writer would start into a pipe this check closes):
+// its reader reports.
 std::string input_problem(const std::string& path);
 
 // Prints "FILE: reason" on stderr and returns false when `path` cannot be
