@@ -40,7 +40,6 @@ CLI::App* add_weld_command(CLI::App& app, WeldCommandOptions& opts) {
 }
 
 int run_weld(const WeldCommandOptions& opts) {
-  if (!io::input_readable(opts.in)) return io::kExitUsage;
   weld::WeldOptions w;
   std::string error;
   if (!io::parse_length("--tol", opts.tol, false, w.tol_mm, error)) return io::usage_error(error);
@@ -67,6 +66,7 @@ int run_weld(const WeldCommandOptions& opts) {
                              io::quoted(opts.threads));
     w.threads = static_cast<int>(n);
   }
+  if (!io::input_readable(opts.in)) return io::kExitUsage;
   return weld::weld_file(opts.in, opts.out, w);
 }
 
