@@ -10,6 +10,7 @@
 #include "control/machine_config.hpp"
 #include "control/program_job.hpp"
 #include "control/soft_limits.hpp"
+#include "io/input_file.hpp"
 #include "io/options.hpp"
 #include "io/output_file.hpp"
 #include "io/run_svg.hpp"
@@ -77,6 +78,7 @@ CLI::App* add_check_command(CLI::App& app, CheckOptions& o, bool config_required
 int run_check(const CheckOptions& opts, const char* who, RunCheck check) {
   std::string error;
   config::Config cfg = config::defaults();
+  if (!io::input_readable(opts.config) || !io::input_readable(opts.job)) return io::kExitUsage;
   if (!opts.config.empty() && !config::load(opts.config, cfg, error)) {
     std::fprintf(stderr, "%s\n", error.c_str());
     return io::kExitUsage;

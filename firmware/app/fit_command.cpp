@@ -6,6 +6,7 @@
 #include <string>
 
 #include "app/fit_options.hpp"
+#include "io/input_file.hpp"
 #include "io/options.hpp"
 #include "job/fit_file.hpp"
 #include "job/fit_stream.hpp"
@@ -130,6 +131,7 @@ int check_options(const job::FitOptions& opts, std::optional<job::Criterion> cri
 }  // namespace
 
 int run_fit(const job::FitOptions& opts) {
+  if (!io::input_readable(opts.file)) return io::kExitUsage;
   // Unknown names stay empty here; each check below refuses them in its own words.
   const std::optional<job::Criterion> criterion = job::parse_criterion(opts.criterion);
   const std::optional<job::Numeric> numeric = job::parse_numeric(opts.numeric);

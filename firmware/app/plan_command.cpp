@@ -6,6 +6,7 @@
 
 #include "app/fit_command.hpp"
 #include "app/fit_options.hpp"
+#include "io/input_file.hpp"
 #include "io/options.hpp"
 #include "job/plan_path.hpp"
 
@@ -44,6 +45,7 @@ CLI::App* add_plan_command(CLI::App& app, PlanOptions& opts) {
 }
 
 int run_plan(const PlanOptions& opts) {
+  if (!io::input_readable(opts.file)) return io::kExitUsage;
   std::string error;
   double tol = 0, feed = 0, period = 0, accel = 0, corner = 0, cpm = 0;
   if (!io::parse_length("--tol", opts.tol, false, tol, error)) return io::usage_error(error);

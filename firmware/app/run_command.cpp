@@ -8,6 +8,7 @@
 #include "control/fit_paths.hpp"
 #include "control/program_job.hpp"
 #include "control/soft_limits.hpp"
+#include "io/input_file.hpp"
 #include "io/options.hpp"
 #include "job/machine_state.hpp"
 #include "machine/homing.hpp"
@@ -22,6 +23,7 @@ using io::kExitUsage;
 int run_job(const RunOptions& opts, const char* who, RunCheck check, LinesOpener open_lines) {
   std::string error;
   config::Config cfg;
+  if (!io::input_readable(opts.config) || !io::input_readable(opts.job)) return kExitUsage;
   if (!config::load(opts.config, cfg, error)) {
     std::fprintf(stderr, "%s\n", error.c_str());
     return kExitUsage;

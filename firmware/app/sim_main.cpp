@@ -14,6 +14,7 @@
 #include "app/run_options.hpp"
 #include "app/sim_options.hpp"
 #include "app/sim_run_command.hpp"
+#include "io/input_file.hpp"
 #include "io/options.hpp"
 #if KERF_HAVE_MODBUS
 #include "simulated/sim_command.hpp"
@@ -73,6 +74,8 @@ int main(int argc, char** argv) {
     if (home->parsed()) return run_sim_home(home_opts);
     if (app.got_subcommand("jog")) return run_sim_jog(jog_opts);
     if (app.got_subcommand("touch-off")) return run_sim_touch_off(touch_opts);
+    if (sim->parsed() && !(kerf::io::input_readable(sim_opts.config) && kerf::io::input_readable(sim_opts.file)))
+      return kExitUsage;
 #if KERF_HAVE_MODBUS
     if (sim->parsed()) return kerf::simulated::run_sim(sim_opts);
 #else

@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "io/input_file.hpp"
 #include "io/options.hpp"
 #include "weld/weld.hpp"
 
@@ -65,6 +66,7 @@ int run_weld(const WeldCommandOptions& opts) {
                              io::quoted(opts.threads));
     w.threads = static_cast<int>(n);
   }
+  if (!io::input_readable(opts.in)) return io::kExitUsage;
   return weld::weld_file(opts.in, opts.out, w);
 }
 

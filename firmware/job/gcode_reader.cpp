@@ -1,5 +1,6 @@
 #include "job/gcode_reader.hpp"
 
+#include "io/input_file.hpp"
 #include "io/prefault.hpp"
 #include "job/gcode_expr.hpp"
 
@@ -541,6 +542,13 @@ GcodeFile read_gcode(const std::string& path) {
   if (in == nullptr) {
     f.reason = std::strerror(errno);
     return f;
+  }
+  if (!use_stdin) {  // a directory opens, and its size probe asks for 2^63 bytes
+    f.reason = io::input_problem(path);
+    if (!f.reason.empty()) {
+      std::fclose(in);
+      return f;
+    }
   }
   std::string text;
   if (!use_stdin && std::fseek(in, 0, SEEK_END) == 0) {  // one allocation for the whole file

@@ -14,6 +14,8 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <algorithm>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -135,6 +137,83 @@ TEST(BandPairShortcuts, SameVerdictsAndRangesOnCorpusPolylines) {
   }
   EXPECT_EQ(taken, 4u);
   EXPECT_GT(tally.valid, tally.pairs / 10) << tally.valid << " of " << tally.pairs;
+}
+
+// Issue 25: a jump, then 17 exactly collinear steps, with per-vertex widths
+// (tests/fuzz/corpus/fit_band/collinear_run_order, from fuzz_fit_band). At
+// the tie-break's shortcut scale (widths times 1e-12, gates of 1e-17 on
+// coordinates near 1) a segment's binding point was rebuilt as coordinates
+// that rounded across the chord and cut the line away, in some cell orders
+// only: the search accepted 1 -> 18 and choose() refused it. Every pair must
+// get one verdict in every order, and the fit must exist (the line is in the
+// band).
+TEST(BandPairShortcuts, CollinearRunWithPerVertexWidthsHasOneVerdictInEveryOrder) {
+  struct Row {
+    double x, y, w;
+  };
+  const Row rows[] = {
+      {9920, 9920, 141.875},
+      {-45248, -45248, 141.875},
+      {-45440, -46336, 299.7109375},
+      {-45632, -47424, 299.7109375},
+      {-45824, -48512, 299.7109375},
+      {-46016, -49600, 299.7109375},
+      {-46208, -50688, 299.7109375},
+      {-46400, -51776, 299.7109375},
+      {-46592, -52864, 299.7109375},
+      {-46784, -53952, 177.34375},
+      {-46976, -55040, 1.7734375},
+      {-47168, -56128, 1.7734375},
+      {-47360, -57216, 1.7734375},
+      {-47552, -58304, 1.7734375},
+      {-47744, -59392, 1.7734375},
+      {-47936, -60480, 1.7734375},
+      {-48128, -61568, 1.7734375},
+      {-48320, -62656, 143.6484375},
+      {-48512, -63744, 1.7734375}};
+  std::vector<VD> p;
+  std::vector<BandWidth<double>> w;
+  for (const Row& r : rows) {
+    p.push_back({r.x, r.y});
+    w.push_back({r.w, r.w});
+  }
+  const std::size_t n = p.size();
+  std::mt19937 rng(25);
+  std::size_t orders = 0;
+  for (const double scale : {1.0, 1e-12}) {
+    std::vector<BandWidth<double>> ws_w = w;
+    for (BandWidth<double>& b : ws_w) b = {b.left * scale, b.right * scale};
+    kerf::io::BandStorage storage(n);
+    const auto built = kerf::fit::band_region<double>({p.data(), n}, {ws_w.data(), n}, storage.workspace());
+    ASSERT_TRUE(built.ok());
+    const BandRegion<double> region = built.value();
+    for (std::uint32_t i = 0; i + 2 < n; ++i)
+      for (std::uint32_t j = i + 2; j < n; ++j)
+        for (const int orient : {1, -1}) {
+          const BandPair<double> pair(region, i, j, orient);
+          PsiRange<double> range;
+          std::uint32_t fail = 0;
+          const bool want = pair.run(range, fail);
+          std::vector<std::uint32_t> cells;
+          for (std::uint32_t k = i; k < j; ++k) cells.push_back(k);
+          for (int t = 0; t < 12; ++t, ++orders) {
+            if (t == 0) std::reverse(cells.begin(), cells.end());
+            else std::shuffle(cells.begin(), cells.end(), rng);
+            PsiRange<double> r;
+            bool ok = pair.ends(r);
+            for (std::uint32_t k : cells) ok = ok && pair.cell(k, r);
+            ASSERT_EQ(ok, want) << "scale " << scale << " pair " << i << "->" << j << (orient > 0 ? " ccw" : " cw")
+                                << " order " << t;
+          }
+        }
+  }
+  EXPECT_GT(orders, 0u);
+  kerf::io::BandStorage storage(n);
+  std::vector<kerf::fit::Piece<double>> out(n);
+  const auto fit = kerf::fit::fit_band_min_count<double>({p.data(), n}, {w.data(), n}, storage.workspace(),
+                                                         {out.data(), n});
+  ASSERT_TRUE(fit.ok()) << kerf::to_string(fit.status());
+  EXPECT_EQ(fit.value().pieces, 2u);  // the jump, then the line
 }
 
 }  // namespace

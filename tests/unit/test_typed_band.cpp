@@ -139,6 +139,20 @@ TYPED_TEST(TypedBand, CountsMatchDoubleOnTheTestCurvesAndPiecesStayInTheBand) {
   }
 }
 
+// An airfoil (issue 25): small nose radii far from the origin, 300 mm chord.
+TYPED_TEST(TypedBand, AirfoilCountsMatchDoubleAndPiecesStayInTheBand) {
+  using S = TypeParam;
+  for (const char* code : {"2412", "0012"}) {
+    const std::vector<VD> pd = kerf::test::naca4(code);
+    for (const double tol : {0.05, 0.02, 0.01, 0.005}) {
+      const std::string what = std::string("NACA ") + code + " tol " + std::to_string(tol);
+      const BandRun<double> want = fit_band<double>(pd, tol);
+      ASSERT_TRUE(want.fit.ok()) << what;
+      EXPECT_EQ(check_path<S>(pd, tol, what), want.fit.value().pieces) << what;
+    }
+  }
+}
+
 // The G1 polylines of the three cncjs CNC files (real G-code,
 // tests/data/gcode), as `kerf weld` extracts them, each fitted on its own;
 // consecutive repeated points are dropped, as the point reader does.

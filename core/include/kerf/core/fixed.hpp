@@ -274,6 +274,10 @@ struct Scalar<Fixed> {
   static constexpr Fixed infinity() { return Fixed::max(); }
   // The power of two that brings v (> 0) into [0.5, 1): the fitter's scaled
   // problem then never squares anything above 8.
+  // The power of two a short chord's local terms are scaled by before they are
+  // squared (fit/detail/chord.hpp): Q31.32 has an absolute resolution, so a
+  // square of 1e-5 would keep 7 bits and one of 1e-8 none.
+  static constexpr Fixed local_scale(Fixed m) { return m > Fixed{} ? normaliser(m) : Fixed(1); }
   static constexpr Fixed normaliser(Fixed v) {
     const int lz = fixed_detail::leading_zeros(static_cast<std::uint64_t>(v.raw()));
     // v.raw() has its top bit at 63 - lz; we want it at frac_bits - 1.

@@ -26,6 +26,9 @@ struct Scalar<double> {
   static constexpr double infinity() { return __builtin_huge_val(); }
   // The power of two nearest 1 / v (v > 0): multiplying by it is exact, and
   // brings v near 1 so that squares neither overflow nor underflow.
+  // The power of two a short chord's local terms are scaled by before they are
+  // squared (fit/detail/chord.hpp): none, a double's exponent keeps their bits.
+  static constexpr double local_scale(double) { return 1.0; }
   static double normaliser(double v) {
     int e = 0;
     __builtin_frexp(v, &e);

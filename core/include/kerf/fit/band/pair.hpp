@@ -353,8 +353,18 @@ class BandPair {
     // rounding step from it would carry only noise.)
     const S lo_t = from_end ? S(1e-9) : S(0);
     const S hi_t = to_end ? S(1) - S(1e-9) : S(1);
-    for (int t = 0; t < m; ++t)
-      if (roots[t] > lo_t && roots[t] < hi_t) outside(r, q1 + dq * roots[t]);
+    // The point q(t) is taken through the segment's own terms, offset y1 + t dn
+    // and area a1 + 2 t vd + t^2 dd, not rebuilt as q1 + t dq: its coordinates
+    // would round to the coordinates' resolution, and on a segment that ends
+    // on a or b (a width below it) the rounding is larger than the offset
+    // itself, so q(t) could land beyond the chord and cut the line away. In
+    // one visiting order the early out above returned first, in another the
+    // cut ran: the verdict depended on the order (issue 25,
+    // tests/fuzz/corpus/fit_band/collinear_run_order).
+    for (int t = 0; t < m; ++t) {
+      const S u = roots[t];
+      if (u > lo_t && u < hi_t) cut(r, {-(y1 + u * dn), a1 + u * (S(2) * vd + u * dd)});
+    }
     // A segment that starts or ends on a or b itself (a side of width 0)
     // has w(t) = (-Y, A) -> 0 there, and the binding condition is the limit
     // of its direction: the segment must leave that end outside the disc.

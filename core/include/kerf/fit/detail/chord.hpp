@@ -33,13 +33,43 @@ struct Chord {
   // Signed distance of p from the chord's line, > 0 on the left of a->b.
   S offset(Vec2<S> p) const { return (p - mid).dot(n); }
 
+  // p - mid and h, both times k, a power of two that brings the larger of them
+  // (and of `eps`) near 1. Every test below is homogeneous in the lengths, so
+  // it runs on these: for a short chord far from the origin kerf::Fixed would
+  // otherwise square values of 1e-5 and less at its absolute resolution of
+  // 2^-32 and lose them (an airfoil's nose); a double is left as it is.
+  struct Local {
+    Vec2<S> v;
+    S h;
+    S k;
+  };
+  Local local(Vec2<S> p, S eps = S(0)) const {
+    const Vec2<S> v = p - mid;
+    const S m = max_of(max_of(Scalar<S>::abs(v.x), Scalar<S>::abs(v.y)), max_of(h, eps));
+    const S k = Scalar<S>::local_scale(m);
+    return {v * k, h * k, k};
+  }
+
+  // The annulus test of p at eps, |A s - B c| <= L for the direction (c, s),
+  // with A = |v|^2 - h^2 - eps^2, B = 2 h v.n and L = 2 eps h, all times k^2.
+  struct Terms {
+    S a;
+    S b;
+    S lim;
+  };
+  Terms terms(Vec2<S> p, S eps) const {
+    const Local l = local(p, eps);
+    const S e = eps * l.k;
+    return {l.v.norm2() - l.h * l.h - e * e, S(2) * l.h * l.v.dot(n), S(2) * e * l.h};
+  }
+
   // The power of p with respect to the circle of unit direction d = (cos phi,
   // sin phi), sin phi >= 0, times sin phi:  P = A sin(phi) - 2 h B cos(phi)
   // with A = |p - mid|^2 - h^2 and B = offset(p). It is small and well
   // conditioned for every phi, the line included, unlike |p - c|^2 - r^2.
-  S power(Vec2<S> d, Vec2<S> p) const {
-    const Vec2<S> v = p - mid;
-    return (v.norm2() - h * h) * d.y - S(2) * h * v.dot(n) * d.x;
+  // On local terms (times k^2).
+  static S power(Vec2<S> d, const Local& l, Vec2<S> n) {
+    return (l.v.norm2() - l.h * l.h) * d.y - S(2) * l.h * l.v.dot(n) * d.x;
   }
 
   // Exact distance from p to that circle (to the line for sin phi = 0), free
@@ -47,16 +77,17 @@ struct Chord {
   //   s (d^2 - r^2) = P, s r = h, s d = sqrt(h^2 + s P), so
   //   |d - r| = |P| / (h + sqrt(h^2 + s P)).
   S distance(Vec2<S> d, Vec2<S> p) const {
-    const S pw = power(d, p);
-    const S root = h * h + d.y * pw;
-    return Scalar<S>::abs(pw) / (h + Scalar<S>::sqrt(root > S(0) ? root : S(0)));
+    const Local l = local(p);
+    const S pw = power(d, l, n);
+    const S root = l.h * l.h + d.y * pw;
+    return Scalar<S>::abs(pw) / (l.h + Scalar<S>::sqrt(root > S(0) ? root : S(0))) / l.k;
   }
 
   // The unit direction of the circle through a, b and p, or (0, 0) when p is
   // a or b. Collinear p gives the line, (1, 0).
   Vec2<S> direction_through(Vec2<S> p) const {
-    const Vec2<S> v = p - mid;
-    Vec2<S> d{v.norm2() - h * h, S(2) * h * v.dot(n)};
+    const Local l = local(p);
+    Vec2<S> d{l.v.norm2() - l.h * l.h, S(2) * l.h * l.v.dot(n)};
     const S len = d.norm();
     if (!(len > S(0))) return {};
     d = d * (S(1) / len);

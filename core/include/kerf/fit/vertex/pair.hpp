@@ -52,12 +52,12 @@ std::size_t normalise(Interval<S>* v, std::size_t n) {
 template <class S>
 Status constrain(AngleSet<S>& set, const Chord<S>& chord, Vec2<S> p, S eps) {
   using M = Scalar<S>;
-  const Vec2<S> v = p - chord.mid;
   const S h = chord.h;
-  const S a = v.norm2() - h * h - eps * eps;
-  const S b = S(2) * h * v.dot(chord.n);
+  const typename Chord<S>::Terms t = chord.terms(p, eps);  // times k^2, see Chord::local
+  const S a = t.a;
+  const S b = t.b;
   const S r = M::sqrt(a * a + b * b);
-  const S lim = S(2) * eps * h;
+  const S lim = t.lim;
   if (!(r > lim)) return Status::ok;  // every circle through a and b passes close enough
   const Vec2<S> psi{a / r, b / r};    // the direction (cos psi, sin psi)
   if (!(h < eps)) return set.intersect_arc(psi, lim / r);
@@ -135,10 +135,10 @@ Vec2<S> vertex_pair_witness(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j
   if (d.norm2() == S(0)) return {};
   // |(A - eps^2) s - 2 h B c| <= 2 eps h is the annulus (r - eps)^2 <= |p - c|^2
   // <= (r + eps)^2 times s, a sufficient form of "within eps" for any radius.
-  const S lim = S(2) * eps * chord.h;
-  const S shift = eps * eps * d.y;
-  for (std::uint32_t k = i + 1; k < j; ++k)
-    if (Scalar<S>::abs(chord.power(d, pts[k]) - shift) > lim) return {};
+  for (std::uint32_t k = i + 1; k < j; ++k) {
+    const typename Chord<S>::Terms t = chord.terms(pts[k], eps);
+    if (Scalar<S>::abs(t.a * d.y - t.b * d.x) > t.lim) return {};
+  }
   return d;
 }
 
