@@ -9,24 +9,10 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
-#include <cstdlib>
-#include <new>
 
+#include "alloc_trap.hpp"
 #include "cycle_rig.hpp"
 #include "kerf/hal/can/csp_segment_link.hpp"
-
-namespace {
-thread_local bool g_counting = false;
-thread_local long g_allocations = 0;
-}  // namespace
-
-void* operator new(std::size_t n) {
-  if (g_counting) ++g_allocations;
-  if (void* p = std::malloc(n == 0 ? 1 : n)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace kerf::test {
 namespace {
@@ -36,11 +22,10 @@ std::string temp_journal(const char* name) {
 }
 
 TEST(CycleAllocations, CountingWorks) {  // the checks below could fail
-  g_allocations = 0;
-  g_counting = true;
+  alloc_trap_start();
   std::vector<int> v(10);
-  g_counting = false;
-  EXPECT_EQ(g_allocations, 1);
+  alloc_trap_pause();
+  EXPECT_EQ(alloc_trap_count(), 1);
 }
 
 TEST(CycleAllocations, ControllerCycleOverModbusWithJournalDoesNotAllocate) {
@@ -52,9 +37,10 @@ TEST(CycleAllocations, ControllerCycleOverModbusWithJournalDoesNotAllocate) {
   CycleRig run(quick_controller(), journal.get());
   run.ctl->start({});
   long cycles = 0;
-  g_allocations = 0;
+  alloc_trap_start();
+  alloc_trap_pause();
   const bool done = run.run(60.0, [&](bool on) {
-    g_counting = on;
+    on ? alloc_trap_resume() : alloc_trap_pause();
     cycles += on;
   });
   ASSERT_TRUE(done);
@@ -64,8 +50,8 @@ TEST(CycleAllocations, ControllerCycleOverModbusWithJournalDoesNotAllocate) {
   EXPECT_EQ(r.pierces, 3u);
   EXPECT_EQ(r.z_moves, 9u);
   EXPECT_EQ(run.gpio.torch_ons, 3);
-  std::printf("Controller::cycle: %ld allocations in %ld cycles (%.1f s simulated)\n", g_allocations, cycles, run.t);
-  EXPECT_EQ(g_allocations, 0);
+  std::printf("Controller::cycle: %ld allocations in %ld cycles (%.1f s simulated)\n", alloc_trap_count(), cycles, run.t);
+  EXPECT_EQ(alloc_trap_count(), 0);
   // The writer synced everything before the run finished.
   EXPECT_EQ(journal->state().last_completed, 11);
   EXPECT_TRUE(journal->state().finished);
@@ -129,22 +115,23 @@ TEST(CycleAllocations, CspCycleWithRingsAndSinkDoesNotAllocate) {
   hal::BoardStatus st;
   std::size_t next = 0;
   long cycles = 0;
-  g_allocations = 0;
+  alloc_trap_start();
+  alloc_trap_pause();
   for (int i = 0; i < 200000 && st.state != hal::BoardState::done; ++i) {
-    g_counting = true;
+    alloc_trap_resume();
     while (next < segs.size() && link->push(segs[next], st) == hal::LinkError::none) ++next;
     if (i == 0) link->command(hal::Command::start);
     if (next == segs.size()) link->command(hal::Command::finish);
     link->cycle();
     link->status(st);
-    g_counting = false;
+    alloc_trap_pause();
     ++cycles;
     ASSERT_NE(st.state, hal::BoardState::fault) << link->last_error();
   }
   link->stop_sink();
   ASSERT_EQ(st.state, hal::BoardState::done);
-  std::printf("CspSegmentLink push/cycle/status: %ld allocations in %ld cycles\n", g_allocations, cycles);
-  EXPECT_EQ(g_allocations, 0);
+  std::printf("CspSegmentLink push/cycle/status: %ld allocations in %ld cycles\n", alloc_trap_count(), cycles);
+  EXPECT_EQ(alloc_trap_count(), 0);
   // The rings keep the last ones; the sink got all of them.
   EXPECT_EQ(link->sink_dropped(), 0u);
   ASSERT_EQ(sunk.size(), link->trace_total());

@@ -4,23 +4,9 @@
 // count is per thread: only the calling (host) thread is measured.
 #include <gtest/gtest.h>
 
-#include <cstdlib>
-#include <new>
 
+#include "alloc_trap.hpp"
 #include "link_rig.hpp"
-
-namespace {
-thread_local bool g_counting = false;
-thread_local long g_allocations = 0;
-}  // namespace
-
-void* operator new(std::size_t n) {
-  if (g_counting) ++g_allocations;
-  if (void* p = std::malloc(n == 0 ? 1 : n)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace kerf::test {
 namespace {
@@ -33,20 +19,19 @@ TEST_P(LinkAllocations, PushStatusAndCommandDoNotAllocate) {
   LinkRig rig(GetParam(), opt);
   const auto segs = job(50);  // built before counting
   hal::BoardStatus st;
-  g_allocations = 0;
-  g_counting = true;
+  alloc_trap_start();
   bool ok = rig.link->command(hal::Command::start) == hal::LinkError::none;
   for (const auto& s : segs) ok = ok && rig.link->push(s, st) == hal::LinkError::none;
   ok = ok && rig.link->status(st) == hal::LinkError::none;
-  g_counting = false;
+  alloc_trap_pause();
   ASSERT_TRUE(ok) << rig.link->last_error();
   EXPECT_EQ(st.last_accepted, 50u);
-  EXPECT_EQ(g_allocations, 0);
+  EXPECT_EQ(alloc_trap_count(), 0);
   // The counter itself works: a vector allocates.
-  g_counting = true;
+  alloc_trap_resume();
   std::vector<int> v(10);
-  g_counting = false;
-  EXPECT_EQ(g_allocations, 1);
+  alloc_trap_pause();
+  EXPECT_EQ(alloc_trap_count(), 1);
 }
 
 INSTANTIATE_TEST_SUITE_P(Wires, LinkAllocations, ::testing::Values(Wire::tcp, Wire::rtu), wire_name);
