@@ -172,7 +172,6 @@ class Controller {
   bool journal_completed(std::uint32_t k);
   void journal_cut_to(const CutPoint& p, bool urgent);
   bool journal_finished();
-  bool journal_caught_up() const;
   std::string journal_error() const;
   void settle_journal();  // finished: wait for the writer, then close it
   double pierce_delay() const;
