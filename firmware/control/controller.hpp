@@ -133,6 +133,9 @@ class Controller {
   // the writer is behind by more than half its queue, or the run is over and
   // waits for it. False without a writer, or once it failed.
   bool journal_lagging() const;
+  // The journal is the caller's to read: no writer thread is still at it (one
+  // left behind a stalled disk after journal_drain_timeout_s still is).
+  bool journal_settled() const { return writer_ == nullptr; }
   // The journal's writer while a run is on (tests hold it to fill its queue).
   JournalWriter* journal_writer() { return writer_.get(); }
   bool torch() const { return torch_; }

@@ -80,7 +80,8 @@ int run_on_machine(const Job& job, const config::Config& cfg, hal::SegmentLink& 
   }
   const RunReport& r = ctl.report();
   RunSummary sum =
-      summarise_run(r, job.paths.size(), config::to_string(cfg.link.kind), resumed, journal);
+      summarise_run(r, job.paths.size(), config::to_string(cfg.link.kind), resumed,
+                    ctl.journal_settled() ? journal : nullptr);  // a stalled writer still owns it
   sum.simulated = false;
   if (program != nullptr) control::describe_program(*program, sum);
   if (cut_rules != nullptr) sum.cut_rules = *cut_rules;
