@@ -10,14 +10,17 @@ namespace kerf::control {
 
 namespace {
 
-// A path longer than the fit's window, in double by the vertex or band
-// criterion with one width, and without a repeated point (the window drops
-// repeats, which would shift the pieces' point numbers): fitted in the
-// bounded window (control/path_stream.hpp). Shorter paths are the window's
-// whole-path case: fitted here directly, the same bytes.
+// A path longer than the fit's window, in double by the vertex criterion,
+// and without a repeated point (the window drops repeats, which would shift
+// the pieces' point numbers): fitted in the bounded window
+// (control/path_stream.hpp). Shorter paths are the window's whole-path case:
+// fitted here directly, the same bytes. The band criterion's window rebuilds
+// its region for each point (about 20k points/s, tests/bench kerf_bench_stream):
+// on tball-pocket's long paths that was 5 times the whole-path fit, so band
+// paths are fitted whole until the window keeps its region.
 bool streams(const io::PointFile& in, std::size_t b, std::size_t e, job::Criterion criterion, job::Numeric numeric) {
   if (e - b <= PathStreamFitter::kMaxWindow || numeric != job::Numeric::floating || !in.tols.empty()) return false;
-  if (criterion != job::Criterion::vertex && criterion != job::Criterion::band) return false;
+  if (criterion != job::Criterion::vertex) return false;
   for (std::size_t k = b + 1; k < e; ++k)
     if (in.points[k] == in.points[k - 1]) return false;
   return true;
