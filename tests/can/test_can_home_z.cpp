@@ -1,6 +1,7 @@
 // Homing a z axis over CAN: the third CiA 402 node on the in-process bus
 // homes in mode 6 like x and y, kerf home's session homes z first, and kerf
-// run's cross-check reads z's homed state from the drive at bring-up.
+// run's cross-check reads z's homed state from the drive at bring-up. A
+// switch that never trips and an E-stop leave z unhomed, x and y unmoved.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -123,6 +124,42 @@ TEST(CanHomeZ, AZSwitchThatNeverTripsIsAFaultInsideTheSearchDistance) {
   EXPECT_LE(state.position[2], 5.0) << "and stopped inside it";
   EXPECT_DOUBLE_EQ(state.position[0], 40.0);
   EXPECT_DOUBLE_EQ(state.position[1], 30.0);
+}
+
+// The E-stop pressed at the n-th read of the lines.
+class EstopAfter final : public hal::Gpio {
+ public:
+  explicit EstopAfter(int n) : n_(n) {}
+  bool read(double, hal::GpioInputs& in) override {
+    in = {};
+    in.estop = ++reads_ >= n_;
+    return true;
+  }
+  bool set_torch(bool) override { return true; }
+  const char* last_error() const override { return ""; }
+
+ private:
+  int n_, reads_ = 0;
+};
+
+// An E-stop while z searches halts it there, unhomed; x and y never start.
+TEST(CanHomeZ, AnEStopMidSearchLeavesZUnhomedAndXYUntouched) {
+  auto link = z_link();
+  ASSERT_TRUE(link);
+  EstopAfter lines(60);  // about 60 ms of search at one read per SYNC: 1.5 mm of the 6
+  job::MachineState state;
+  state.homed[2] = true;  // an old flag: homing again drops it first
+  std::string error;
+  EXPECT_FALSE(machine::home_axes(z_config(), 7u, *link, &lines, state, error, nullptr));
+  EXPECT_EQ(error.rfind("z: E-stop", 0), 0u) << error;
+  EXPECT_EQ(job::homed_names(state, 3), "");
+  EXPECT_GT(state.position[2], 0.5);  // it had moved up
+  EXPECT_LT(state.position[2], 5.0);  // and stopped short of the switch
+  EXPECT_DOUBLE_EQ(state.position[0], 40.0);
+  EXPECT_DOUBLE_EQ(state.position[1], 30.0);
+  hal::BoardStatus st;
+  ASSERT_EQ(link->status(st), hal::LinkError::none);
+  EXPECT_EQ(st.homed, 0);
 }
 
 // The machine's link on a given bus (kerf run's bring-up, as open_machine_can_link).
