@@ -73,7 +73,7 @@ bool MotionBoard::home(const hal::HomeCommand& cmd) {
   home_pos_ = exec_.position();
   home_z_ = exec_.z();
   homed_ = static_cast<std::uint8_t>(homed_ & ~(1u << cmd.axis));
-  homing_.start(cmd, *homed_axis_locked(cmd.axis));
+  homing_.start(cmd, *homing_axis_locked(cmd.axis));
   changed_.notify_all();
   return true;
 }
@@ -91,16 +91,16 @@ void MotionBoard::rebase_locked(Vec2<double> at) {
   if (cfg_.z.configured()) exec_.configure_z(cfg_.z, home_z_);  // z at rest where homing left it
 }
 
-double* MotionBoard::homed_axis_locked(int axis) {
+double* MotionBoard::homing_axis_locked(int axis) {
   return axis == 0 ? &home_pos_.x : axis == 1 ? &home_pos_.y : &home_z_;
 }
 
 void MotionBoard::home_tick_locked() {
   const int axis = homing_.command().axis;
   const double* sw = cfg_.has_home_switch[axis] ? &cfg_.home_switch_at[axis] : nullptr;
-  *homed_axis_locked(axis) = homing_.step(cfg_.servo_period_s, sw);
+  *homing_axis_locked(axis) = homing_.step(cfg_.servo_period_s, sw);
   if (homing_.state() == hal::HomingState::done) {
-    *homed_axis_locked(axis) = homing_.command().home_position;
+    *homing_axis_locked(axis) = homing_.command().home_position;
     homed_ = static_cast<std::uint8_t>(homed_ | (1u << axis));
     rebase_locked(home_pos_);
   } else if (!homing_.active()) {

@@ -87,7 +87,7 @@ class MotionBoard {
 
  private:
   bool has_work_locked() const;
-  double* homed_axis_locked(int axis);  // home_pos_.x, home_pos_.y or home_z_
+  double* homing_axis_locked(int axis);  // home_pos_.x, home_pos_.y or home_z_
   void home_tick_locked();
   void end_homing_locked(std::uint16_t fault_bits);
   void rebase_locked(Vec2<double> at);
