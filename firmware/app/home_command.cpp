@@ -14,7 +14,7 @@ CLI::App* add_home_command(CLI::App& app, HomeOptions& o) {
       "home", "Home the axes: the board (Modbus) or the drives (CAN) search their switches; the homed axes and the "
               "position go into the machine state file ([machine] state), where kerf run looks for them");
   h->add_option("--config", o.config, "Machine configuration (TOML)")->type_name("FILE")->required();
-  h->add_option("--axis", o.axes, "An axis to home (x, y or z; repeat for several); default x and y")
+  h->add_option("--axis", o.axes, "An axis to home (x, y or z; repeat for several); default every axis, z first")
       ->check(CLI::IsMember({"x", "y", "z"}));
   return h;
 }
@@ -35,7 +35,8 @@ int home_job(const HomeOptions& opts, const char* who, RunCheck check, LinesOpen
                  cfg.file.c_str());
     return io::kExitUsage;
   }
-  unsigned axes = opts.axes.empty() ? 3u : 0u;
+  // Default: every axis of the machine (home_axes takes z first).
+  unsigned axes = opts.axes.empty() ? (1u << cfg.machine.axes.size()) - 1u : 0u;
   for (const std::string& a : opts.axes) {
     const unsigned bit = a == "x" ? 0u : a == "y" ? 1u : 2u;
     if (bit >= cfg.machine.axes.size()) {
@@ -75,8 +76,12 @@ int home_job(const HomeOptions& opts, const char* who, RunCheck check, LinesOpen
     std::fprintf(stderr, "%s: home: %s\n", who, error.c_str());
     return io::kExitFailure;
   }
-  std::printf("%s home: homed %s; position %.3f %.3f\n", who, job::homed_names(state, 3).c_str(), state.position[0],
-              state.position[1]);
+  if (cfg.machine.axes.size() > 2)
+    std::printf("%s home: homed %s; position %.3f %.3f %.3f\n", who, job::homed_names(state, 3).c_str(),
+                state.position[0], state.position[1], state.position[2]);
+  else
+    std::printf("%s home: homed %s; position %.3f %.3f\n", who, job::homed_names(state, 3).c_str(), state.position[0],
+                state.position[1]);
   return io::kExitOk;
 }
 

@@ -19,12 +19,13 @@ namespace kerf::app {
 
 struct HomeOptions {
   std::string config;
-  std::vector<std::string> axes;  // x y z; empty: x and y
+  std::vector<std::string> axes;  // x y z; empty: every axis of the machine
   // kerf-sim only: the CAN link's simulated drives on the in-process bus
   // (virtual clock) rather than the configured link, with these switches
   // (mm in the power-up frame; NaN: none) and power-up position.
   bool in_process = false;
-  double home_switch[2] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
+  double home_switch[3] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(),
+                           std::numeric_limits<double>::quiet_NaN()};
   std::vector<double> start;  // x y, mm
 };
 

@@ -47,12 +47,13 @@ int main(int argc, char** argv) {
     HomeOptions home_opts;
     CLI::App* home = add_home_command(app, home_opts);
     home->description("kerf home with scripted lines against the bench's simulated board or drives "
-                      "(kerf-board-sim --home-switch-x/-y, kerf-drive-sim), or --in-process");
+                      "(kerf-board-sim --home-switch-x/-y/-z, kerf-drive-sim), or --in-process");
     home->add_flag("--in-process", home_opts.in_process,
                    "The config's CAN drives simulated on the in-process bus (virtual clock) instead of its link");
     home->add_option("--home-switch-x", home_opts.home_switch[0], "--in-process: the x switch, mm in the power-up "
                                                                   "frame (none: the search runs out)");
     home->add_option("--home-switch-y", home_opts.home_switch[1], "--in-process: the y switch, mm");
+    home->add_option("--home-switch-z", home_opts.home_switch[2], "--in-process: the z switch, mm (z powers up at 0)");
     home->add_option("--start", home_opts.start, "--in-process: where the axes power up, mm")
         ->delimiter(',')
         ->expected(2);

@@ -38,7 +38,7 @@ std::unique_ptr<hal::SegmentLink> in_process_drives(const config::Config& cfg, c
                                                     std::string& error) {
   simulated::CanSimOptions o = simulated::can_sim_options(cfg);
   if (opts.start.size() == 2) o.start = {opts.start[0], opts.start[1]};
-  for (int a = 0; a < 2; ++a) {
+  for (int a = 0; a < 3; ++a) {
     o.has_home_switch[a] = !std::isnan(opts.home_switch[a]);
     o.home_switch[a] = o.has_home_switch[a] ? opts.home_switch[a] : 0.0;
   }

@@ -30,7 +30,8 @@ struct Axis {
   bool has_min = false, has_max = false;
   double min = 0, max = 0;
   // Homing (keys home_* on [[machine.axis]]; the board's own switch input).
-  // Speeds mm/min, lengths mm; dir -1: the switch lies towards negative.
+  // Speeds mm/min, lengths mm; dir -1: the switch lies towards negative
+  // (z's default is +1: a torch homes up).
   int home_dir = -1;
   double home_search_speed = 1200, home_latch_speed = 60;
   double home_search_distance = 2000, home_backoff = 2, home_position = 0;

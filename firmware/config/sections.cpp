@@ -43,6 +43,7 @@ void read_axes(TableReader& r, Machine& m) {
     a.positive("counts_per_mm", axis.counts_per_mm);
     // No default here: a wrong scale would cut a wrongly sized part.
     if (!a.has("counts_per_mm")) a.problem("counts_per_mm", "missing (drive counts per mm)");
+    if (i == 2) axis.home_dir = 1;  // a torch homes up, clear of the sheet
     a.integer("home_dir", axis.home_dir, -1, 1);
     if (axis.home_dir == 0) a.problem("home_dir", "expected -1 or 1 (the side the switch is on), got 0");
     a.positive("home_search_speed", axis.home_search_speed);
@@ -51,6 +52,8 @@ void read_axes(TableReader& r, Machine& m) {
     a.non_negative("home_backoff", axis.home_backoff);
     a.number("home_position", axis.home_position);
     a.integer("home_input", axis.home_input, 0, 255);
+    if (i == 2 && a.has("home_input"))  // kerf's GPIO search jogs in XY
+      a.problem("home_input", "a GPIO home switch homes x or y; z homes on the board's or drive's own input");
     if (i == 2) {  // z's own limits
       a.positive("feed", axis.feed);
       a.positive("accel", axis.accel);

@@ -81,7 +81,7 @@ bool CanMasterLink::start(hal::CanBus& bus, const CanLinkOptions& o, bool wall_c
   // Homed since the drives' power-up (kerf run checks it against the state
   // file). A drive without homing mode refuses mode 6 (SDO abort): not homed.
   std::uint8_t homed = 0;
-  for (std::size_t a = 0; a < 2; ++a) {
+  for (std::size_t a = 0; a < o.axes && a < 3; ++a) {  // z too: the third node
     bool h = false;
     const hal::AxisError e = master_->homed_since_power_up(a, h);
     if (e != hal::AxisError::none && e != hal::AxisError::sdo_abort) {

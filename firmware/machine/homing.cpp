@@ -10,6 +10,9 @@ namespace kerf::machine {
 namespace {
 
 const char* const kAxis[3] = {"x", "y", "z"};
+// z first: the torch goes up, clear of the sheet and the clamps, before x
+// and y travel (LinuxCNC's HOME_SEQUENCE with z at 0 on a plasma table).
+constexpr int kHomeOrder[3] = {2, 0, 1};
 
 double now_s() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
@@ -90,7 +93,7 @@ bool home_one(const config::Config& cfg, int a, hal::SegmentLink& link, hal::Gpi
     return false;
   }
   if (log != nullptr)
-    std::fprintf(log, "home: %s homed at %.3f mm\n", kAxis[a], a == 0 ? st.position.x : st.position.y);
+    std::fprintf(log, "home: %s homed at %.3f mm\n", kAxis[a], a == 0 ? st.position.x : a == 1 ? st.position.y : st.z);
   return true;
 }
 
@@ -123,8 +126,9 @@ bool home_axes(const config::Config& cfg, unsigned axes, hal::SegmentLink& link,
   const int n = static_cast<int>(cfg.machine.axes.size());
   const double t_start = now_s();
   bool ok = true;
-  for (int a = 0; a < n && ok; ++a) {
-    if ((axes & (1u << a)) == 0) continue;
+  for (const int a : kHomeOrder) {
+    if (!ok) break;
+    if (a >= n || (axes & (1u << a)) == 0) continue;
     state.homed[a] = false;  // whatever happens now, the old flag no longer holds
     ok = home_one(cfg, a, link, gpio, t_start, st, error, log);
     state.homed[a] = ok;
@@ -139,7 +143,7 @@ bool home_axes(const config::Config& cfg, unsigned axes, hal::SegmentLink& link,
 }
 
 bool check_homed(const config::Config& cfg, const job::MachineState& state, bool assume_homed, std::string& error) {
-  const int n = 2;  // x and y: z on a cutting table is found by probing at each pierce
+  const int n = static_cast<int>(cfg.machine.axes.size());  // every axis, z too when there is one
   if (assume_homed) {
     if (cfg.machine.home_switches) {
       error = cfg.file + ": --assume-homed: the machine has home switches ([machine] home_switches = true): "
@@ -170,7 +174,7 @@ bool check_board_homed(const job::MachineState& state, hal::SegmentLink& link, s
     return false;
   }
   std::string lost;
-  for (int a = 0; a < 2; ++a)
+  for (int a = 0; a < 3; ++a)
     if (state.homed[a] && (st.homed & (1u << a)) == 0) lost += lost.empty() ? kAxis[a] : std::string(" ") + kAxis[a];
   if (lost.empty()) return true;
   error = "the state file says homed, but the board says " + lost +

@@ -19,16 +19,16 @@ namespace kerf::machine {
 // The homing parameters of axis a (0 x, 1 y, 2 z) from the configuration.
 hal::HomeCommand home_command(const config::Machine& m, int axis);
 
-// Homes the axes in `axes` (bit 0 x, bit 1 y, bit 2 z) in that order, x and
-// y first. Marks each homed axis in `state` and records the position. False
+// Homes the axes in `axes` (bit 0 x, bit 1 y, bit 2 z) that the machine
+// has, z first (the torch up, clear of the sheet), then x, then y. Marks each homed axis in `state` and records the position. False
 // with the reason ("x: the switch never tripped within the search distance
 // (2000 mm)", "E-stop", a link error) at the first axis that fails; the
 // axes homed before it stay homed.
 bool home_axes(const config::Config& cfg, unsigned axes, hal::SegmentLink& link, hal::Gpio* gpio,
                job::MachineState& state, std::string& error, std::FILE* log);
 
-// kerf run's rule (before anything moves): every axis homed in the state
-// file, or the machine has no switches and the operator said --assume-homed.
+// kerf run's rule (before anything moves): every axis of the machine (z
+// too, when it has one) homed in the state file, or the machine has no switches and the operator said --assume-homed.
 // False with the reason.
 bool check_homed(const config::Config& cfg, const job::MachineState& state, bool assume_homed, std::string& error);
 

@@ -46,9 +46,9 @@ std::vector<sim::DriveConfig> drive_configs(const CanSimOptions& o) {
     sim::DriveConfig d;
     d.node = machine::can_node_of(o, i);
     const double mm = i == 0 ? o.start.x : i == 1 ? o.start.y : 0.0;
-    const double cpm = i == 1 ? o.counts_per_mm.y : o.counts_per_mm.x;
+    const double cpm = i == 0 ? o.counts_per_mm.x : i == 1 ? o.counts_per_mm.y : o.z_counts_per_mm;
     d.start = static_cast<std::int32_t>(std::lround(mm * cpm));
-    if (i < 2 && o.has_home_switch[i]) {
+    if (i < 3 && o.has_home_switch[i]) {
       d.has_home_switch = true;
       d.home_switch = static_cast<std::int32_t>(std::lround(o.home_switch[i] * cpm));
     }

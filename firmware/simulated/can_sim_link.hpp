@@ -36,10 +36,11 @@ struct CanSimOptions : machine::CanLinkOptions {
   // link cannot be made and the error says which drive. -1: none.
   int refuse_enable_axis = -1;
   std::string candump_path;      // candump -L log of every frame ("": none)
-  // Home switches (x, y), mm in the power-up frame: CiA 402 homing (methods
-  // 17/18) finds them. No switch: homing runs out of its search distance.
-  bool has_home_switch[2] = {false, false};
-  double home_switch[2] = {0.0, 0.0};
+  // Home switches (x, y, z), mm in the power-up frame (z powers up at 0):
+  // CiA 402 homing (methods 17/18) finds them. No switch: homing runs out of
+  // its search distance.
+  bool has_home_switch[3] = {false, false, false};
+  double home_switch[3] = {0.0, 0.0, 0.0};
 };
 
 class CanSimLink : public machine::CanMasterLink {

@@ -57,6 +57,7 @@ hal::BoardStatus MotionBoard::status() const {
   hal::BoardStatus st = hal::status_of(exec_);
   if (homing_.active()) {
     st.position = home_pos_;
+    st.z = home_z_;
     st.state = BoardState::running;
   }
   st.homed = homed_;
@@ -68,10 +69,11 @@ bool MotionBoard::home(const hal::HomeCommand& cmd) {
   std::lock_guard<std::mutex> lock(mu_);
   const BoardState s = exec_.state();
   if (homing_.active() || (s != BoardState::idle && s != BoardState::done) || !exec_.at_rest()) return false;
-  if (cmd.axis < 0 || cmd.axis > 1) return false;  // the simulated board homes x and y
+  if (cmd.axis < 0 || cmd.axis > 2 || (cmd.axis == 2 && !cfg_.z.configured())) return false;
   home_pos_ = exec_.position();
+  home_z_ = exec_.z();
   homed_ = static_cast<std::uint8_t>(homed_ & ~(1u << cmd.axis));
-  homing_.start(cmd, cmd.axis == 0 ? home_pos_.x : home_pos_.y);
+  homing_.start(cmd, *homing_axis_locked(cmd.axis));
   changed_.notify_all();
   return true;
 }
@@ -86,15 +88,19 @@ double MotionBoard::last_latch() const {
 void MotionBoard::rebase_locked(Vec2<double> at) {
   exec_.fault(0);
   exec_.reset(at);
+  if (cfg_.z.configured()) exec_.configure_z(cfg_.z, home_z_);  // z at rest where homing left it
+}
+
+double* MotionBoard::homing_axis_locked(int axis) {
+  return axis == 0 ? &home_pos_.x : axis == 1 ? &home_pos_.y : &home_z_;
 }
 
 void MotionBoard::home_tick_locked() {
   const int axis = homing_.command().axis;
   const double* sw = cfg_.has_home_switch[axis] ? &cfg_.home_switch_at[axis] : nullptr;
-  const double p = homing_.step(cfg_.servo_period_s, sw);
-  (axis == 0 ? home_pos_.x : home_pos_.y) = p;
+  *homing_axis_locked(axis) = homing_.step(cfg_.servo_period_s, sw);
   if (homing_.state() == hal::HomingState::done) {
-    (axis == 0 ? home_pos_.x : home_pos_.y) = homing_.command().home_position;
+    *homing_axis_locked(axis) = homing_.command().home_position;
     homed_ = static_cast<std::uint8_t>(homed_ | (1u << axis));
     rebase_locked(home_pos_);
   } else if (!homing_.active()) {
@@ -123,7 +129,7 @@ void MotionBoard::tick_locked() {
     home_tick_locked();
     ++ticks_;
     if (cfg_.keep_trace)
-      trace_.push_back({static_cast<double>(ticks_) * cfg_.servo_period_s, home_pos_, 0, false, true, exec_.z()});
+      trace_.push_back({static_cast<double>(ticks_) * cfg_.servo_period_s, home_pos_, 0, false, true, home_z_});
     changed_.notify_all();
     return;
   }

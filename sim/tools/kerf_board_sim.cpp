@@ -7,6 +7,7 @@
 //   kerf-board-sim [--port N] [--rtu] [--accel MM_S2] [--vad PERCENT] [--watchdog S]
 //                  [--z-feed MM_MIN --z-accel MM_S2]  (a z axis: z moves run; default none)
 //                  [--start X,Y] [--home-switch-x MM] [--home-switch-y MM]  (homing, command 7)
+//                  [--home-switch-z MM]  (with --z-feed: z homes too)
 #include <CLI/CLI.hpp>
 #include <csignal>
 #include <cstdio>
@@ -36,12 +37,13 @@ int main(int argc, char** argv) {
       ->expected(2);
   app.add_option("--y-limits", y_limits, "Soft limits of y: MIN MAX (mm)")->expected(2);
   std::vector<double> start = {0.0, 0.0};
-  double switch_x = 0, switch_y = 0;
+  double switch_x = 0, switch_y = 0, switch_z = 0;
   app.add_option("--start", start, "Where the axes power up, mm (unhomed: the board's own frame)")
       ->delimiter(',')->expected(2);
   auto* sx = app.add_option("--home-switch-x", switch_x, "The x home switch, mm in the power-up frame (none: "
                                                          "homing x faults at the search distance)");
   auto* sy = app.add_option("--home-switch-y", switch_y, "The y home switch, mm in the power-up frame");
+  auto* sz = app.add_option("--home-switch-z", switch_z, "The z home switch, mm (z powers up at 0; needs --z-feed)");
   CLI11_PARSE(app, argc, argv);
 
   // Block the stop signals before any thread starts, then wait for one.
@@ -67,6 +69,12 @@ int main(int argc, char** argv) {
   bc.home_switch_at[0] = switch_x;
   bc.has_home_switch[1] = sy->count() > 0;
   bc.home_switch_at[1] = switch_y;
+  bc.has_home_switch[2] = sz->count() > 0;
+  bc.home_switch_at[2] = switch_z;
+  if (bc.has_home_switch[2] && !(z_feed > 0)) {
+    std::fprintf(stderr, "kerf-board-sim: --home-switch-z: the board has no z axis (give --z-feed)\n");
+    return 2;
+  }
   if (z_feed > 0) bc.z = {bc.servo_period_s, z_feed / 60.0, z_accel};
   const std::vector<double>* limits[2] = {&x_limits, &y_limits};
   for (int a = 0; a < 2; ++a) {

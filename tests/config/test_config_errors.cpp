@@ -55,6 +55,11 @@ const BadCase kCases[] = {
      TCP "[[machine.axis]]\nname = \"x\"\ncounts_per_mm = 10\n[[machine.axis]]\nname = \"y\"\n"
          "counts_per_mm = 10\n[[machine.axis]]\nname = \"z\"\ncounts_per_mm = 10\nfeed = 0\n",
      "kerf.toml:12: machine.axis[2].feed: must be > 0, got 0"},
+    {"z_gpio_home_switch",
+     TCP "[[machine.axis]]\nname = \"x\"\ncounts_per_mm = 10\n[[machine.axis]]\nname = \"y\"\n"
+         "counts_per_mm = 10\n[[machine.axis]]\nname = \"z\"\ncounts_per_mm = 10\nhome_input = 3\n",
+     "kerf.toml:12: machine.axis[2].home_input: a GPIO home switch homes x or y; z homes on the board's or drive's "
+     "own input"},
     {"feed_on_x",
      TCP "[[machine.axis]]\nname = \"x\"\ncounts_per_mm = 10\nfeed = 100\n[[machine.axis]]\nname = \"y\"\n"
          "counts_per_mm = 10\n",

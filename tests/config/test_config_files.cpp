@@ -108,6 +108,10 @@ TEST(ConfigFiles, ZAxisExampleGivesZLimits) {
   EXPECT_DOUBLE_EQ(z.accel, 500.0);
   EXPECT_DOUBLE_EQ(z.period, 0.001);
   EXPECT_TRUE(interp_settings(c, false).z_axis);
+  // z homes up by default (a torch clears the sheet); x and y towards -.
+  EXPECT_EQ(c.machine.axes[2].home_dir, 1);
+  EXPECT_EQ(c.machine.axes[0].home_dir, -1);
+  EXPECT_EQ(c.machine.axes[1].home_dir, -1);
   // Without z's own keys: the machine's rapid feed and accel; without z: none.
   c.machine.axes[2].feed = c.machine.axes[2].accel = 0;
   EXPECT_DOUBLE_EQ(z_limits(c.machine).feed, c.machine.rapid_feed / 60.0);

@@ -140,11 +140,12 @@ LinkError CspSegmentLink::home(const HomeCommand& h, const std::function<bool()>
     std::snprintf(error_, sizeof error_, "home: dir 0 (here) is for the Modbus board; a drive homes on its own input");
     return LinkError::rejected;
   }
-  if (h.axis < 0 || h.axis > 1 || (st != BoardState::idle && st != BoardState::done) || !exec_->at_rest()) {
+  if (h.axis < 0 || h.axis > 2 || (h.axis == 2 && !has_z()) || (st != BoardState::idle && st != BoardState::done) ||
+      !exec_->at_rest()) {
     std::snprintf(error_, sizeof error_, "home: not allowed now (axis %d)", h.axis);
     return LinkError::rejected;
   }
-  const double cpm = h.axis == 0 ? cfg_.counts_per_mm.x : cfg_.counts_per_mm.y;
+  const double cpm = h.axis == 0 ? cfg_.counts_per_mm.x : h.axis == 1 ? cfg_.counts_per_mm.y : cfg_.z_counts_per_mm;
   DriveHoming d;
   d.method = h.dir < 0 ? canopen::kHomeNegativeSwitch : canopen::kHomePositiveSwitch;
   d.search_speed = static_cast<std::uint32_t>(std::lround(h.search_speed * cpm));
@@ -166,6 +167,7 @@ LinkError CspSegmentLink::home(const HomeCommand& h, const std::function<bool()>
   for (auto& s : sent_) s = {static_cast<std::int32_t>(target_[0]), static_cast<std::int32_t>(target_[1])};
   exec_->fault(0);
   exec_->reset(position_);
+  if (has_z()) exec_->configure_z(cfg_.z, static_cast<double>(axes_.axis(2).actual) / cfg_.z_counts_per_mm);
   if (homing_ != HomingState::done) exec_->fault(e != AxisError::none ? kFaultDrive : r == DriveHomingResult::aborted ? kFaultAbort : kFaultHoming);
   changed_.notify_all();
   if (e != AxisError::none) {

@@ -40,7 +40,7 @@ int main(int argc, char** argv) {
   app.add_option("--lag", lag, "plant: fraction of the error closed per SYNC")->check(CLI::Range(0.01, 1.0));
   std::vector<long> switches;
   app.add_option("--home-switch", switches,
-                 "home switch of each drive in --nodes order, counts (homing mode 6, methods 17/18)")
+                 "home switch of each drive in --nodes order (x, y, then z: the third node), counts (homing mode 6, methods 17/18)")
       ->delimiter(',');
   CLI11_PARSE(app, argc, argv);
 

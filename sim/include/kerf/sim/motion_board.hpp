@@ -40,10 +40,11 @@ struct BoardConfig {
   motion::AxisLimits<double> z{}; // the z axis (period 0: none; z moves are refused)
   double start_z = 0;             // mm
   motion::SoftLimits<double> soft_limits{};  // the executor refuses a segment outside (off: unlimited)
-  // Home switches, in the board's power-up frame (mm); none: homing that
-  // axis never finds a switch. The board powers up unhomed at `start`.
-  double home_switch_at[2] = {0, 0};
-  bool has_home_switch[2] = {false, false};
+  // Home switches of x, y and z, in the board's power-up frame (mm); none:
+  // homing that axis never finds a switch. The board powers up unhomed at
+  // `start` (and `start_z`); z homes only on a board with a z axis.
+  double home_switch_at[3] = {0, 0, 0};
+  bool has_home_switch[3] = {false, false, false};
 };
 
 using Accept = motion::BoardAccept;
@@ -58,7 +59,8 @@ class MotionBoard {
   // Protocol side.
   Accept accept(const hal::SegmentCommand& seg);
   bool command(std::uint16_t code);  // false: unknown code or not allowed now
-  // Command 7: home one axis (x or y) from idle or done; false when not allowed.
+  // Command 7: home one axis (x, y, or z on a board with one) from idle or
+  // done; false when not allowed.
   bool home(const hal::HomeCommand& cmd);
   double last_latch() const;  // the last latch point, in the unhomed frame (tests)
   hal::BoardStatus status() const;
@@ -85,6 +87,7 @@ class MotionBoard {
 
  private:
   bool has_work_locked() const;
+  double* homing_axis_locked(int axis);  // home_pos_.x, home_pos_.y or home_z_
   void home_tick_locked();
   void end_homing_locked(std::uint16_t fault_bits);
   void rebase_locked(Vec2<double> at);
@@ -106,6 +109,7 @@ class MotionBoard {
   bool cancel_waits_ = false;
   HomingCycle homing_;
   Vec2<double> home_pos_{};  // the axes while homing
+  double home_z_ = 0;        // z while homing
   std::uint8_t homed_ = 0;
 };
 

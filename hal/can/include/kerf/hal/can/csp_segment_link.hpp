@@ -84,13 +84,13 @@ class CspSegmentLink final : public SegmentLink {
   LinkError push(const SegmentCommand& seg, BoardStatus& status) override;
   LinkError status(BoardStatus& status) override;
   LinkError command(Command c) override;
-  // CiA 402 homing mode on the axis's drive (AxisLink::home), then the job
-  // starts from the drive's new position.
+  // CiA 402 homing mode on the axis's drive (AxisLink::home; z: the third
+  // node, on a link with z), then the job starts from the drives' new position.
   LinkError home(const HomeCommand& h, const std::function<bool()>& stop) override;
   std::uint64_t resends() const override { return 0; }
   const char* last_error() const override;
   // The axes the drives report homed since their power-up (read at bring-up:
-  // CanOpenMaster::homed_since_power_up), bit 0 x, bit 1 y.
+  // CanOpenMaster::homed_since_power_up), bit 0 x, bit 1 y, bit 2 z.
   void set_homed(std::uint8_t bits);
 
   // One SYNC period (tests drive the virtual clock with it).
