@@ -47,8 +47,9 @@ int open_session(const std::string& file, const char* who, const char* what, Run
     std::fprintf(stderr, "%s: %s: machine.state: %s\n", who, what, error.c_str());
     return io::kExitUsage;
   }
-  // Refused before anything opens: a jog or touch-off needs a known position.
-  if (!job::all_homed(s.state, 2)) {
+  // Refused before anything opens: a jog or touch-off needs a known position,
+  // on every axis (an unhomed z could hold the torch anywhere).
+  if (!job::all_homed(s.state, std::max(2, static_cast<int>(s.cfg.machine.axes.size())))) {
     std::fprintf(stderr, "%s: %s: the machine is not homed: run `kerf home` first\n", who, what);
     return io::kExitFailure;
   }
