@@ -9,7 +9,7 @@
 #include <thread>
 
 #include "kerf/sim/scripted_gpio.hpp"
-#include "link_rig.hpp"
+#include "home_bench.hpp"
 #include "machine/homing.hpp"
 
 namespace kerf::test {
@@ -19,47 +19,21 @@ constexpr double kCount = 0.001;  // one register count, mm
 
 // A board with a z axis powered up at x 40, y 30, z 0; switches at x -2.5,
 // y 1, and (when asked) z 12 mm.
-struct ZHomeRig {
-  std::unique_ptr<sim::MotionBoard> board;
-  std::unique_ptr<sim::BoardServer> server;
-  std::unique_ptr<hal::ModbusSegmentLink> link;
+sim::BoardConfig z_home_config(bool z_switch, bool z_axis) {
+  sim::BoardConfig bc;
+  bc.start = {40.0, 30.0};
+  if (z_axis) bc.z = {0.001, 50.0, 1000.0};
+  bc.has_home_switch[0] = bc.has_home_switch[1] = true;
+  bc.home_switch_at[0] = -2.5;
+  bc.home_switch_at[1] = 1.0;
+  bc.has_home_switch[2] = z_switch;
+  bc.home_switch_at[2] = 12.0;
+  return bc;
+}
 
-  explicit ZHomeRig(Wire wire, bool z_switch = true, bool z_axis = true) {
-    sim::BoardConfig bc;
-    bc.start = {40.0, 30.0};
-    if (z_axis) bc.z = {0.001, 50.0, 1000.0};
-    bc.has_home_switch[0] = bc.has_home_switch[1] = true;
-    bc.home_switch_at[0] = -2.5;
-    bc.home_switch_at[1] = 1.0;
-    bc.has_home_switch[2] = z_switch;
-    bc.home_switch_at[2] = 12.0;
-    board = std::make_unique<sim::MotionBoard>(bc, std::make_unique<sim::EndpointExecutor>());
-    sim::ServerConfig sc;
-    sc.transport = wire == Wire::tcp ? sim::ServerConfig::Transport::tcp : sim::ServerConfig::Transport::rtu;
-    std::string err;
-    server = sim::BoardServer::start(*board, sc, err);
-    if (!server) throw std::runtime_error(err);
-    hal::ModbusConfig lc;
-    lc.transport = wire == Wire::tcp ? hal::ModbusConfig::Transport::tcp : hal::ModbusConfig::Transport::rtu;
-    lc.port = server->port();
-    lc.device = server->device();
-    lc.response_timeout_s = 0.5;
-    link = hal::ModbusSegmentLink::open(lc, err);
-    if (!link) throw std::runtime_error(err);
-  }
-
-  hal::BoardStatus wait_homing_end() {
-    hal::BoardStatus st;
-    for (int i = 0; i < 2000; ++i) {
-      EXPECT_EQ(link->status(st), hal::LinkError::none);
-      if (st.homing != hal::HomingState::search && st.homing != hal::HomingState::backoff &&
-          st.homing != hal::HomingState::latch)
-        return st;
-      std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    }
-    ADD_FAILURE() << "homing never ended";
-    return st;
-  }
+struct ZHomeRig : HomeBench {
+  explicit ZHomeRig(Wire wire, bool z_switch = true, bool z_axis = true)
+      : HomeBench(wire, z_home_config(z_switch, z_axis), std::make_unique<sim::EndpointExecutor>()) {}
 };
 
 hal::HomeCommand z_home() {

@@ -9,7 +9,7 @@
 #include "kerf/hal/modbus/register_map.hpp"
 #include "kerf/sim/motion_executor.hpp"
 #include "kerf/sim/scripted_gpio.hpp"
-#include "link_rig.hpp"
+#include "home_bench.hpp"
 #include "machine/homing.hpp"
 #include "machine/homing_gpio.hpp"
 #include "machine/jog.hpp"
@@ -20,49 +20,29 @@ namespace {
 namespace map = hal::modbus_map;
 constexpr double kCount = 0.001;  // one register count, mm
 
-struct HomeRig {
-  std::unique_ptr<sim::MotionBoard> board;
-  std::unique_ptr<sim::BoardServer> server;
-  std::unique_ptr<hal::ModbusSegmentLink> link;
+// The x switch at -2.5; y has one (at 1) only when asked. interpolate:
+// core/motion's interpolator (ramps, feed) rather than a jump to each end.
+sim::BoardConfig home_config(bool y_switch) {
+  sim::BoardConfig bc;
+  bc.start = {40.0, 30.0};  // wherever the axes powered up
+  bc.has_home_switch[0] = true;
+  bc.home_switch_at[0] = -2.5;
+  bc.has_home_switch[1] = y_switch;
+  bc.home_switch_at[1] = 1.0;
+  return bc;
+}
 
-  // interpolate: core/motion's interpolator (ramps, feed) rather than a jump to each end.
-  explicit HomeRig(Wire wire, bool y_switch = false, bool interpolate = false) {
-    sim::BoardConfig bc;
-    bc.start = {40.0, 30.0};  // wherever the axes powered up
-    bc.has_home_switch[0] = true;
-    bc.home_switch_at[0] = -2.5;  // x switch; y has one only when asked
-    bc.has_home_switch[1] = y_switch;
-    bc.home_switch_at[1] = 1.0;
-    std::string err;
-    std::unique_ptr<sim::SegmentExecutor> exec = std::make_unique<sim::EndpointExecutor>();
-    if (interpolate) exec = sim::make_motion_executor(sim::MotionConfig{}, err);
-    if (!exec) throw std::runtime_error(err);
-    board = std::make_unique<sim::MotionBoard>(bc, std::move(exec));
-    sim::ServerConfig sc;
-    sc.transport = wire == Wire::tcp ? sim::ServerConfig::Transport::tcp : sim::ServerConfig::Transport::rtu;
-    server = sim::BoardServer::start(*board, sc, err);
-    if (!server) throw std::runtime_error(err);
-    hal::ModbusConfig lc;
-    lc.transport = wire == Wire::tcp ? hal::ModbusConfig::Transport::tcp : hal::ModbusConfig::Transport::rtu;
-    lc.port = server->port();
-    lc.device = server->device();
-    lc.response_timeout_s = 0.5;
-    link = hal::ModbusSegmentLink::open(lc, err);
-    if (!link) throw std::runtime_error(err);
-  }
+std::unique_ptr<sim::SegmentExecutor> home_executor(bool interpolate) {
+  std::string err;
+  std::unique_ptr<sim::SegmentExecutor> exec = std::make_unique<sim::EndpointExecutor>();
+  if (interpolate) exec = sim::make_motion_executor(sim::MotionConfig{}, err);
+  if (!exec) throw std::runtime_error(err);
+  return exec;
+}
 
-  hal::BoardStatus wait_homing_end() {
-    hal::BoardStatus st;
-    for (int i = 0; i < 2000; ++i) {
-      EXPECT_EQ(link->status(st), hal::LinkError::none);
-      if (st.homing != hal::HomingState::search && st.homing != hal::HomingState::backoff &&
-          st.homing != hal::HomingState::latch)
-        return st;
-      std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    }
-    ADD_FAILURE() << "homing never ended";
-    return st;
-  }
+struct HomeRig : HomeBench {
+  explicit HomeRig(Wire wire, bool y_switch = false, bool interpolate = false)
+      : HomeBench(wire, home_config(y_switch), home_executor(interpolate)) {}
 };
 
 hal::HomeCommand x_home() {
