@@ -431,6 +431,7 @@ const hal::SegmentCommand* Controller::next_wire() {
   const Pull p = job_.segment(path_next_, c);
   path_ended_ = p == Pull::end;
   if (p == Pull::ready) pulled_ = c;  // until it is sent
+  if (p == Pull::error && stop_request_.empty()) stop_request_ = std::string("job: ") + job_.error();  // a fault next cycle
   return pulled_;
 }
 

@@ -39,8 +39,9 @@ struct SegmentPlace {
 };
 
 // segment()'s answer: here it is, not yet (a stream's producer is behind:
-// ask again next cycle), or the open path has no segment i.
-enum class Pull : std::uint8_t { ready, later, end };
+// ask again next cycle), the open path has no segment i, or the source
+// failed (error() says why: a bad line met while streaming; a fault).
+enum class Pull : std::uint8_t { ready, later, end, error };
 
 class JobSource {
  public:
@@ -67,6 +68,8 @@ class JobSource {
   // or after the last); null past the last. Available: every action before
   // the open path, and the outputs (M62..M68) before it, for a restart's replay.
   virtual const JobAction* action(std::size_t a) = 0;
+  // After Pull::error: "FILE:LINE: reason".
+  virtual const char* error() const { return ""; }
 };
 
 // The source over a whole Job in memory (not owned; it must outlive the source).
