@@ -11,6 +11,7 @@
 #include <fstream>
 #include <string>
 
+#include "control/point_job_pass.hpp"
 #include "control/ring_job_source.hpp"
 #include "simulated/sim_machine.hpp"
 #include "simulated/sim_plant.hpp"
@@ -89,15 +90,19 @@ TEST(RingJobSource, TheFirstSegmentRunsBeforeTheFileIsReadAndTheCutIsTheWholeJob
   const std::size_t n = job.paths[0].segments.size();
   ASSERT_GT(n, control::JobRing::kCapacity + 64) << "the ring must fill";
 
+  control::JobSummary summary;
+  std::string error;
+  ASSERT_TRUE(control::first_pass(file, setup(), summary, error)) << error;
+  EXPECT_EQ(summary.segments, n);
+
   control::WholeJobSource whole(job);
   Vec2<double> whole_end{};
   const simulated::SimMachineResult a = run(whole, [&](const sim::TraceSample& s) { whole_end = s.pos; });
 
   static control::JobRing ring;
   control::PointFileProducer producer;
-  std::string error;
   ASSERT_TRUE(producer.start(file, setup(), ring, error)) << error;
-  control::RingJobSource streamed(ring, {job.id(), n}, producer.error());
+  control::RingJobSource streamed(ring, summary, producer.error());
   std::uint64_t read_at_first = 0;
   Vec2<double> streamed_end{};
   const simulated::SimMachineResult b = run(streamed, [&](const sim::TraceSample& s) {
@@ -120,6 +125,24 @@ TEST(RingJobSource, TheFirstSegmentRunsBeforeTheFileIsReadAndTheCutIsTheWholeJob
   EXPECT_EQ(streamed.popped(), n);
   EXPECT_EQ(streamed_end, whole_end);
   EXPECT_LT(distance(streamed_end, job.paths[0].segments.back().end), 1e-3);
+}
+
+// The first pass: the id follows the file's bytes and the fit's settings; a
+// bad line is refused before anything moves.
+TEST(RingJobSource, TheFirstPassIdentifiesTheJobAndRefusesABadLine) {
+  control::JobSummary a, b, c, bad;
+  std::string error;
+  ASSERT_TRUE(control::first_pass(zigzag_file(), setup(), a, error)) << error;
+  ASSERT_TRUE(control::first_pass(zigzag_file("more.txt", "700 0\n"), setup(), b, error)) << error;
+  control::JobStreamSetup finer = setup();
+  finer.tol = 0.005;
+  ASSERT_TRUE(control::first_pass(zigzag_file(), finer, c, error)) << error;
+  EXPECT_GE(b.segments, a.segments);
+  EXPECT_NE(a.id.hash, b.id.hash);
+  EXPECT_NE(a.id.hash, c.id.hash);
+  const std::string file = zigzag_file("bad.txt", "1.0 oops\n");
+  EXPECT_FALSE(control::first_pass(file, setup(), bad, error));
+  EXPECT_EQ(error.rfind(file + ":" + std::to_string(kPoints + 1) + ":", 0), 0u) << error;
 }
 
 // A bad line met while cutting (after the first pass would have refused it,
