@@ -70,18 +70,21 @@ control::Job whole_job(const std::string& file) {
   return job;
 }
 
-simulated::SimMachineResult run(control::JobSource& source, const std::function<void(const sim::TraceSample&)>& sink) {
+simulated::SimMachineResult run(control::JobSource& source, const std::function<void(const sim::TraceSample&)>& sink,
+                                control::Journal* journal = nullptr, const control::ResumePoint& from = {},
+                                std::vector<simulated::BoardFault> faults = {}) {
   FakeGpio gpio;
   control::ControllerConfig cfg;
   cfg.pierce_delay_s = 0.05;
   cfg.rapid_feed_mm_s = 400.0;
   simulated::SimMachineConfig m;
   m.trace_sink = sink;
+  m.faults = std::move(faults);
   std::string error;
   std::unique_ptr<simulated::SimPlant> plant = simulated::make_modbus_plant(m, cfg.link_watchdog_s, error);
   EXPECT_TRUE(plant != nullptr) << error;
   if (!plant) return {};
-  return simulated::run_sim_machine(source, cfg, m, *plant, gpio, nullptr, {});
+  return simulated::run_sim_machine(source, cfg, m, *plant, gpio, journal, from);
 }
 
 TEST(RingJobSource, TheFirstSegmentRunsBeforeTheFileIsReadAndTheCutIsTheWholeJobs) {
@@ -125,6 +128,54 @@ TEST(RingJobSource, TheFirstSegmentRunsBeforeTheFileIsReadAndTheCutIsTheWholeJob
   EXPECT_EQ(streamed.popped(), n);
   EXPECT_EQ(streamed_end, whole_end);
   EXPECT_LT(distance(streamed_end, job.paths[0].segments.back().end), 1e-3);
+}
+
+// A streamed run stopped by a drive fault, then resumed from its journal with
+// a new producer: the source skips to the journal's segment; each segment is cut once.
+TEST(RingJobSource, AStreamedRunResumesFromTheJournalsSegment) {
+  const std::string file = zigzag_file();
+  control::JobSummary summary;
+  std::string error;
+  ASSERT_TRUE(control::first_pass(file, setup(), summary, error)) << error;
+  const std::string path = std::filesystem::path(file).parent_path() / "journal";
+  std::unique_ptr<control::Journal> journal = control::Journal::create(path, summary.id, error);
+  ASSERT_TRUE(journal) << error;
+  std::size_t first_run = 0;
+  {
+    static control::JobRing ring;
+    control::PointFileProducer producer;
+    ASSERT_TRUE(producer.start(file, setup(), ring, error)) << error;
+    control::RingJobSource streamed(ring, summary, producer.error());
+    const simulated::SimMachineResult r =
+        run(streamed, [](const sim::TraceSample&) {}, journal.get(), {},
+            {{simulated::BoardFaultKind::drive_fault, 70.0, 0.0}});
+    ASSERT_EQ(r.setup_error, "");
+    ASSERT_EQ(r.run.state, control::State::fault) << r.run.reason;
+    first_run = r.executed.size();
+  }  // the producer stops with its source
+  ASSERT_GT(first_run, control::RingJobSource::kHistory) << "the resume skips past the first ring";
+  ASSERT_LT(first_run, summary.segments);
+  journal.reset();
+  std::unique_ptr<control::Journal> again = control::Journal::resume(path, summary.id, error);
+  ASSERT_TRUE(again) << error;
+  static control::JobRing ring2;
+  control::PointFileProducer producer;
+  ASSERT_TRUE(producer.start(file, setup(), ring2, error)) << error;
+  control::RingJobSource streamed(ring2, summary, producer.error());
+  const control::ResumePoint rp = control::resume_point(streamed, again->state());
+  EXPECT_EQ(rp.first, static_cast<std::size_t>(again->state().last_completed + 1));
+  const simulated::SimMachineResult r2 = run(streamed, [](const sim::TraceSample&) {}, again.get(), rp);
+  producer.join();
+  ASSERT_EQ(r2.setup_error, "");
+  EXPECT_EQ(r2.run.state, control::State::done) << r2.run.reason;
+  EXPECT_EQ(again->state().executed_total, summary.segments);
+  EXPECT_EQ(again->state().duplicates, 0u);
+  EXPECT_TRUE(again->state().finished);
+  // Another file's id is refused.
+  control::JobSummary other;
+  ASSERT_TRUE(control::first_pass(zigzag_file("other.txt", "700 0\n"), setup(), other, error)) << error;
+  again.reset();
+  EXPECT_FALSE(control::Journal::resume(path, other.id, error));
 }
 
 // The first pass: the id follows the file's bytes and the fit's settings; a
