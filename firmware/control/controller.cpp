@@ -126,6 +126,7 @@ void Controller::start(const ResumePoint& from) {
   first_actions_ = at.index == 0 && distance(pierce_at_, head_->start) < kSamePoint;
   if (!actions_.replay_outputs(first_actions_ ? path_ : path_ + 1) && stop_request_.empty())
     stop_request_ = actions_.error();  // a fault in the first cycle, before anything moves
+  if (*job_.error() != '\0' && stop_request_.empty()) stop_request_ = std::string("job: ") + job_.error();  // locate() failed
   report_.actions.reserve(path_count_ + 8);
 }
 

@@ -13,11 +13,12 @@ RingJobSource::RingJobSource(JobRing& ring, const JobSummary& summary, const std
 }
 
 Pull RingJobSource::pop() {
-  if (ended_) return Pull::end;
   if (failed_) return Pull::error;
+  if (ended_) return Pull::end;
   StreamItem item;
   if (!ring_.try_pop(item)) return Pull::later;  // the end and error items come before the close
   if (item.kind == StreamItem::Kind::end) {
+    if (popped_ != summary_.segments) return short_stream();
     ended_ = true;
     return Pull::end;
   }
@@ -32,6 +33,14 @@ Pull RingJobSource::pop() {
   return Pull::ready;
 }
 
+// Not the job the first pass counted: the file changed under the run.
+Pull RingJobSource::short_stream() {
+  failed_ = true;
+  error_ = "the stream ended after " + std::to_string(popped_) + " segments, the first pass counted " +
+           std::to_string(summary_.segments) + " (the file changed since?)";
+  return Pull::error;
+}
+
 SegmentPlace RingJobSource::locate(std::size_t k) {
   KERF_ASSERT(k < summary_.segments && k + kHistory >= popped_ && "a segment still in the history");
   // A full ring first (or the whole file): the cut then never waits for the
@@ -44,7 +53,10 @@ SegmentPlace RingJobSource::locate(std::size_t k) {
     else if (p != Pull::ready) break;
   }
   SegmentPlace s;
-  if (popped_ <= k) return s;  // the stream ended early or failed: segment() says so
+  if (popped_ <= k) {  // the stream ended early or failed: segment() says so, a fault before anything moves
+    if (!failed_) short_stream();
+    return s;
+  }
   s.index = k;
   s.segment = kept(k).cmd;
   s.start = kept(k).from;

@@ -1,7 +1,8 @@
 // A one-path point job as the producer thread streams it (control/job_stream.hpp),
 // read by the controller as a JobSource (control/job_source.hpp): segment()
 // pops the producer's ring and never waits (an empty ring that is still open
-// is `later`). What must be known before anything moves, the journal's id
+// is `later`). A stream that ends before the first pass's count (the file
+// changed under the run) is an error, a fault, never a short "done". What must be known before anything moves, the journal's id
 // and the segment count, comes from a first pass over the file (JobSummary).
 // Memory: the ring, and the last kHistory segments, so that a restart after
 // a reset can locate() the segment it resumes in (it lies within the board's
@@ -42,6 +43,7 @@ class RingJobSource final : public JobSource {
 
  private:
   Pull pop();  // one more segment into the history
+  Pull short_stream();
   const StreamedSegment& kept(std::size_t k) const { return history_[k % kHistory]; }
 
   JobRing& ring_;

@@ -216,5 +216,22 @@ TEST(RingJobSource, ABadLineMetWhileCuttingIsAFaultWithTheTorchOff) {
   EXPECT_FALSE(torch_last);
 }
 
+// A file that shrank after the first pass: a fault, never a short "done".
+TEST(RingJobSource, AStreamShorterThanTheFirstPassIsAFault) {
+  const std::string file = zigzag_file("short.txt");
+  control::JobSummary summary;
+  std::string error;
+  ASSERT_TRUE(control::first_pass(file, setup(), summary, error)) << error;
+  summary.segments += 10;  // as if the file had lost its last lines since
+  static control::JobRing ring;
+  control::PointFileProducer producer;
+  ASSERT_TRUE(producer.start(file, setup(), ring, error)) << error;
+  control::RingJobSource streamed(ring, summary, producer.error());
+  const simulated::SimMachineResult r = run(streamed, [](const sim::TraceSample&) {});
+  producer.join();
+  EXPECT_EQ(r.run.state, control::State::fault);
+  EXPECT_NE(r.run.reason.find("the first pass counted"), std::string::npos) << r.run.reason;
+}
+
 }  // namespace
 }  // namespace kerf::test
