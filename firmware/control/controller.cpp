@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "control/format_text.hpp"
+#include "kerf/core/assert.hpp"
 
 namespace kerf::control {
 
@@ -48,15 +49,22 @@ std::string board_fault_text(std::uint16_t bits) {
 
 }  // namespace
 
-Controller::Controller(const Job& job, const ControllerConfig& cfg, hal::SegmentLink& link,
-                       hal::Gpio& gpio, Journal* journal)
+Controller::Controller(JobSource& job, const ControllerConfig& cfg, hal::SegmentLink& link, hal::Gpio& gpio,
+                       Journal* journal)
     : job_(job), cfg_(cfg), link_(link), gpio_(gpio), journal_(journal),
       actions_(job, cfg.outputs, cfg.operator_delay_s), latch_(cfg.reset_at_start), ferror_(cfg.ferror) {}
+
+Controller::Controller(const Job& job, const ControllerConfig& cfg, hal::SegmentLink& link, hal::Gpio& gpio,
+                       Journal* journal)
+    : owned_(std::make_unique<WholeJobSource>(job)), job_(*owned_), cfg_(cfg), link_(link), gpio_(gpio),
+      journal_(journal), actions_(*owned_, cfg.outputs, cfg.operator_delay_s), latch_(cfg.reset_at_start),
+      ferror_(cfg.ferror) {}
 
 Controller::~Controller() = default;  // the writer's destructor writes what is queued
 
 void Controller::start(const ResumePoint& from) {
   const std::size_t n = job_.segment_count();
+  path_count_ = job_.path_count();
   // The writer thread from the first start on (a restart after a reset keeps it).
   const bool journal_done = journal_ != nullptr && writer_ == nullptr && journal_->state().finished;
   if (journal_ && !cfg_.journal_inline && !writer_) writer_ = std::make_unique<JournalWriter>(*journal_, cfg_.journal_queue);
@@ -68,17 +76,12 @@ void Controller::start(const ResumePoint& from) {
   finished_ = false;
   have_status_ = false;
   has_tail_ = false;
-  // The longest block the cycle queues: a path (+ a resumed segment's split,
-  // resume_segment.hpp), or the moves before a path and its travel, or the moves after it.
-  std::size_t longest = 0;
-  for (const CutPath& p : job_.paths)
-    longest = std::max({longest, p.segments.size() + 2, p.before.size() + 1, p.after.size()});
+  // The longest queue_ holds: the moves before a path and its travel, the
+  // moves after it, or a resumed segment's rest (resume_segment.hpp). A
+  // path's segments are not queued: pump() takes them from the source.
   queue_.clear();
-  queue_.reserve(longest);
-  job_of_wire_.clear();
-  std::size_t moves = 0;  // wire segments that are not job segments: travels, z moves
-  for (const CutPath& p : job_.paths) moves += p.before.size() + 1 + p.after.size();
-  job_of_wire_.reserve(n + moves + 2);  // + a resumed segment's split
+  queue_.reserve(job_.max_moves() + 2);
+  job_of_wire_.assign(kWireWindow, -1);
   next_seg_ = from.first;
   pierce_at_ = from.from;
   state_ = State::ready;
@@ -93,12 +96,13 @@ void Controller::start(const ResumePoint& from) {
   // end it was cut whole; record it and start at the next one.
   resumed_.clear();
   queue_extra_ = 0;
-  const Vec2<double> seg_start = job_.segment_start(next_seg_);
-  if (distance(from.from, seg_start) > kSamePoint) {
-    resumed_ = resume_segment(job_.segment(next_seg_), seg_start, from.from);
+  opening_ = false;
+  SegmentPlace at = job_.locate(next_seg_);
+  if (distance(from.from, at.start) > kSamePoint) {
+    resumed_ = resume_segment(at.segment, at.start, from.from);
     pierce_at_ = resumed_.from;
   }
-  if (resumed_.whole || distance(from.from, job_.segment(next_seg_).end) < kSamePoint) {
+  if (resumed_.whole || distance(from.from, at.segment.end) < kSamePoint) {
     resumed_.clear();
     if (journal_) journal_completed(static_cast<std::uint32_t>(next_seg_));
     report_.last_completed = static_cast<std::int64_t>(next_seg_);
@@ -110,34 +114,20 @@ void Controller::start(const ResumePoint& from) {
       if (journal_) journal_finished();
       return;
     }
-    pierce_at_ = job_.segment_start(next_seg_);
+    at = job_.locate(next_seg_);
+    pierce_at_ = at.start;
   }
-  std::size_t i = 0;
-  path_ = job_.path_of(next_seg_, i);
+  path_ = at.path;
+  head_ = job_.open(path_);  // locate() made it available
+  KERF_ASSERT(head_ != nullptr && "a located path opens");
   // Resumed: the outputs the program set before this path are set again;
   // its dwells, pauses and waits are not run again. The actions just
   // before the path run only when nothing of it was cut (control/README.md).
-  first_actions_ = i == 0 && distance(pierce_at_, job_.paths[path_].start) < kSamePoint;
+  first_actions_ = at.index == 0 && distance(pierce_at_, head_->start) < kSamePoint;
   if (!actions_.replay_outputs(first_actions_ ? path_ : path_ + 1) && stop_request_.empty())
     stop_request_ = actions_.error();  // a fault in the first cycle, before anything moves
-  report_.actions.reserve(job_.paths.size() + 8);
-}
-
-// job_of_wire_: the job segment k of each wire segment; -1 a rapid; -2 - k
-// the first part of k's rest split in two on resume (it does not complete k).
-std::int64_t Controller::job_segment_of(std::uint32_t seq) const {
-  if (seq <= base_ || seq > next_seq_) return -1;
-  const std::int64_t v = job_of_wire_[seq - base_ - 1];
-  return v < -1 ? -v - 2 : v;
-}
-
-bool Controller::completes_job_segment(std::uint32_t seq) const {
-  return seq > base_ && seq <= next_seq_ && job_of_wire_[seq - base_ - 1] >= 0;
-}
-
-std::int64_t Controller::wire_job(std::size_t i) const {
-  const auto k = static_cast<std::int64_t>(next_seg_ + (i > queue_extra_ ? i - queue_extra_ : 0));
-  return i < queue_extra_ ? -k - 2 : k;
+  if (*job_.error() != '\0' && stop_request_.empty()) stop_request_ = std::string("job: ") + job_.error();  // locate() failed
+  report_.actions.reserve(path_count_ + 8);
 }
 
 void Controller::cycle(double now_s) {
@@ -323,7 +313,7 @@ void Controller::begin_travel(Vec2<double> to) {
   // (rounded to counts): a path that starts where the last one ended needs
   // no travel, and a travel a fraction of a count long would be empty on the board.
   Vec2<double> at = has_tail_ ? tail_ : st_.position;
-  if (path_ < job_.paths.size()) queue_moves(job_.paths[path_].before, at);
+  if (path_ < path_count_) queue_moves(*head_->before, at);
   if (distance(at, to) > kSamePoint) {
     hal::SegmentCommand c;
     c.kind = SegmentKind::line;
@@ -350,7 +340,7 @@ void Controller::queue_moves(const std::vector<hal::SegmentCommand>& moves, Vec2
 }
 
 void Controller::begin_pierce(double now_s) {
-  if (!job_.paths[path_].torch) {  // a dry-run path: no torch, no pierce
+  if (!head_->torch) {  // a dry-run path: no torch, no pierce
     state_ = State::cutting;
     if (!resume_after_pierce_) {
       begin_cut();
@@ -370,8 +360,7 @@ void Controller::begin_pierce(double now_s) {
 void Controller::begin_cut() {
   block_ = Block::cut;
   queue_.clear();
-  std::size_t i = 0;
-  const std::size_t p = job_.path_of(next_seg_, i);
+  std::size_t i = next_seg_ - head_->first_segment;
   queue_extra_ = 0;
   if (resumed_.count > 0) {  // the first segment's rest, from the resume point
     for (int k = 0; k < resumed_.count; ++k) queue_.push_back(resumed_.segments[k]);
@@ -379,19 +368,22 @@ void Controller::begin_cut() {
     resumed_.clear();
     ++i;
   }
-  for (; i < job_.paths[p].segments.size(); ++i) queue_.push_back(job_.paths[p].segments[i]);
+  path_next_ = i;
+  path_ended_ = false;
+  pulled_ = nullptr;
   sent_ = 0;
   started_ = finish_sent_ = false;
   state_ = State::cutting;
 }
 
 bool Controller::pump() {
-  if (!started_ && !queue_.empty()) {
-    if (!link_ok(link_.command(hal::Command::start))) return false;
-    started_ = true;
-  }
-  while (sent_ < queue_.size() && st_.credit > 0) {
-    hal::SegmentCommand c = queue_[sent_];
+  const hal::SegmentCommand* next = nullptr;
+  while (st_.credit > 0 && next_seq_ < seen_executed_ + kWireWindow && (next = next_wire()) != nullptr) {
+    if (!started_) {  // the block's first segment
+      if (!link_ok(link_.command(hal::Command::start))) return false;
+      started_ = true;
+    }
+    hal::SegmentCommand c = *next;
     c.seq = next_seq_ + 1;
     hal::BoardStatus s;
     if (!link_ok(link_.push(c, s))) return false;  // the same number goes again next cycle
@@ -400,11 +392,16 @@ bool Controller::pump() {
     has_tail_ = true;
     ++next_seq_;
     if (c.z_move) ++report_.z_moves;
-    job_of_wire_.push_back(block_ == Block::cut ? wire_job(sent_) : -1);
+    job_of_wire_[next_seq_ % kWireWindow] = block_ == Block::cut ? wire_job(sent_) : -1;
     block_last_seq_ = next_seq_;
+    if (sent_ >= queue_.size()) {
+      ++path_next_;
+      pulled_ = nullptr;
+    }
     ++sent_;
   }
-  if (sent_ == queue_.size() && !queue_.empty() && !finish_sent_) {
+  if (block_ == Block::cut && !path_ended_ && sent_ >= queue_.size()) next_wire();  // learns the path's end
+  if (block_sent() && sent_ > 0 && !finish_sent_) {
     if (!link_ok(link_.command(hal::Command::finish))) return false;
     finish_sent_ = true;
   }
@@ -412,17 +409,17 @@ bool Controller::pump() {
 }
 
 bool Controller::block_done() const {
-  if (queue_.empty()) return true;
+  if (sent_ == 0 && block_sent()) return true;  // nothing to move
   return finish_sent_ && st_.state == hal::BoardState::done && st_.last_executed >= block_last_seq_;
 }
 
 void Controller::path_finished(double now_s) {
   set_torch(false, now_s);
-  next_seg_ += queue_.size() - queue_extra_;
+  next_seg_ += sent_ - queue_extra_;
   queue_extra_ = 0;
-  const std::vector<hal::SegmentCommand>& after = job_.paths[path_].after;
+  const std::vector<hal::SegmentCommand>& after = *head_->after;  // valid until the next open()
   ++path_;
-  if (path_ < job_.paths.size()) pierce_at_ = job_.paths[path_].start;
+  head_ = nullptr;
   if (!after.empty()) {  // z axis: the retract and what else follows the path, then its actions
     block_ = Block::rapid;
     queue_.clear();
@@ -467,6 +464,10 @@ void Controller::run_state(double now_s) {
       else begin_travel(pierce_at_);
       return;
     case State::action: {
+      if (opening_) {
+        run_actions_or_travel(now_s);
+        return;
+      }
       const bool done = actions_.step(now_s, start_pressed);
       if (!actions_.error().empty()) stop(State::fault, actions_.error(), now_s);  // an output or input failed
       else if (done) actions_done(now_s);

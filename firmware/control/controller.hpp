@@ -1,4 +1,5 @@
-// The machine controller: runs a Job on a motion board (hal::SegmentLink)
+// The machine controller: runs a job (a JobSource: control/job_source.hpp,
+// read path by path and segment by segment, never whole) on a motion board (hal::SegmentLink)
 // with the torch and the safety inputs on hal::Gpio, one cycle at a time.
 //
 //   Idle -> Ready -> Travel -> Piercing -> Cutting <-> FeedHold ... -> Done
@@ -42,6 +43,7 @@
 
 #include "control/job.hpp"
 #include "control/job_actions.hpp"
+#include "control/job_source.hpp"
 #include "control/following_error.hpp"
 #include "control/journal.hpp"
 #include "control/journal_writer.hpp"
@@ -113,10 +115,15 @@ struct RunReport {
 
 class Controller {
  public:
+  // The job as it streams (not owned; it must outlive the controller).
+  Controller(JobSource& job, const ControllerConfig& cfg, hal::SegmentLink& link, hal::Gpio& gpio,
+             Journal* journal);
+  // A job held whole (through a WholeJobSource the controller owns).
   Controller(const Job& job, const ControllerConfig& cfg, hal::SegmentLink& link, hal::Gpio& gpio,
              Journal* journal);
 
-  // Prepares a run from `from` (ResumePoint{} for a new job). Allocates.
+  // Prepares a run from `from` (ResumePoint{} for a new job). Allocates
+  // (a bounded amount: nothing grows with the job's length).
   void start(const ResumePoint& from);
   // One cycle at controller time now_s (monotonic; simulated in the simulator).
   void cycle(double now_s);
@@ -141,10 +148,13 @@ class Controller {
   bool torch() const { return torch_; }
   bool link_down() const { return link_down_; }
   const RunReport& report() const { return report_; }
-  // The job segment a board sequence number carries; -1 for a rapid or unknown.
+  // The job segment a board sequence number carries; -1 for a rapid or unknown
+  // (and for one more than kWireWindow numbers behind the last sent).
   std::int64_t job_segment_of(std::uint32_t seq) const;
   // False for a rapid and for the first part of a resumed segment split in two.
   bool completes_job_segment(std::uint32_t seq) const;
+  // Wire segments sent and not yet executed, at most (the board's queue is far shorter).
+  static constexpr std::uint32_t kWireWindow = 1u << 14;
 
  private:
   enum class Block : std::uint8_t { none, rapid, cut };
@@ -158,7 +168,12 @@ class Controller {
   void begin_pierce(double now_s);
   void begin_cut();
   bool pump();  // sends what the board has room for; false on a link error
-  std::int64_t wire_job(std::size_t queue_index) const;  // job_of_wire_'s entry for queue_[i]
+  // The block's next wire segment: queue_'s, then (a cut) the open path's; null: none now.
+  const hal::SegmentCommand* next_wire();
+  bool block_sent() const { return sent_ >= queue_.size() && (block_ != Block::cut || path_ended_); }
+  std::int64_t wire_job(std::size_t block_index) const;  // job_of_wire_'s entry for the block's i-th
+  bool wire_known(std::uint32_t seq) const { return seq > base_ && seq <= next_seq_ && next_seq_ - seq < kWireWindow; }
+  bool open_path();  // head_ for path_ (false: the source has it not yet)
   bool block_done() const;
   void record_completions();
   void record_cut_to();     // while the torch is on: how far the cut has come
@@ -187,7 +202,10 @@ class Controller {
   void restart_after_reset();
   bool following_error_fault(double now_s);
 
-  const Job& job_;
+  std::unique_ptr<JobSource> owned_;  // the whole-job constructor's
+  JobSource& job_;
+  const PathHead* head_ = nullptr;  // the open path (path_)
+  std::size_t path_count_ = 0;
   ControllerConfig cfg_;
   hal::SegmentLink& link_;
   hal::Gpio& gpio_;
@@ -216,11 +234,16 @@ class Controller {
 
   // Board sequence numbers: base_ + 1 is the first this run sends.
   std::uint32_t base_ = 0, next_seq_ = 0, seen_executed_ = 0;
-  std::vector<std::int64_t> job_of_wire_;  // by seq - base_ - 1
+  std::vector<std::int64_t> job_of_wire_;  // by seq % kWireWindow (wire_known)
 
-  // The move being streamed.
+  // The move being streamed: queue_ (a travel's moves, a resumed segment's
+  // rest), then for a cut the open path's segments from path_next_ on.
   Block block_ = Block::none;
   std::vector<hal::SegmentCommand> queue_;
+  std::size_t path_next_ = 0;  // the next segment of the open path to send
+  bool path_ended_ = false;    // the source said the open path has no more
+  const hal::SegmentCommand* pulled_ = nullptr;  // path_next_, from the source, not yet sent
+  bool opening_ = false;       // waiting for the source's next path (State::action)
   std::size_t sent_ = 0;
   bool started_ = false, finish_sent_ = false;
   std::uint32_t block_last_seq_ = 0;

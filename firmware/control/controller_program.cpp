@@ -4,7 +4,22 @@
 
 namespace kerf::control {
 
+bool Controller::open_path() {
+  if (path_ >= path_count_ || head_ != nullptr) return true;  // past the last, or open (start())
+  head_ = job_.open(path_);
+  if (head_ == nullptr) return false;
+  pierce_at_ = head_->start;
+  return true;
+}
+
 void Controller::run_actions_or_travel(double now_s) {
+  // The next path from the source; a stream's producer may not have it yet:
+  // wait at rest (State::action, opening_) and ask again each cycle.
+  opening_ = !open_path();
+  if (opening_) {
+    state_ = State::action;
+    return;
+  }
   actions_.begin(path_, now_s);
   if (actions_.pending()) {
     state_ = State::action;
@@ -15,12 +30,12 @@ void Controller::run_actions_or_travel(double now_s) {
 
 void Controller::actions_done(double now_s) {
   report_.actions = actions_.log();
-  if (path_ < job_.paths.size()) begin_travel(pierce_at_);
+  if (path_ < path_count_) begin_travel(pierce_at_);
   else finish_job(now_s);
 }
 
 double Controller::pierce_delay() const {
-  const double d = path_ < job_.paths.size() ? job_.paths[path_].pierce_delay_s : -1.0;
+  const double d = path_ < path_count_ ? head_->pierce_delay_s : -1.0;
   return d >= 0.0 ? d : cfg_.pierce_delay_s;
 }
 

@@ -41,9 +41,9 @@ bool ActionRunner::input(int index, double now_s) {
 }
 
 void ActionRunner::begin(std::size_t path, double now_s) {
-  while (next_ < job_.actions.size() && job_.actions[next_].before_path < path) ++next_;
+  for (const JobAction* a = job_.action(next_); a != nullptr && a->before_path < path; a = job_.action(++next_)) {}
   end_ = next_;
-  while (end_ < job_.actions.size() && job_.actions[end_].before_path == path) ++end_;
+  for (const JobAction* a = job_.action(end_); a != nullptr && a->before_path == path; a = job_.action(++end_)) {}
   waiting_ = false;
   started_ = now_s;
 }
@@ -54,16 +54,15 @@ bool ActionRunner::replay_outputs(std::size_t path) {
   next_ = 0;
   error_.clear();
   bool ok = true;
-  for (; next_ < job_.actions.size() && job_.actions[next_].before_path < path; ++next_) {
-    const JobAction& a = job_.actions[next_];
-    if (a.kind == job::CanonKind::digital_out) ok = set_digital(a.index, a.value != 0) && ok;
-    if (a.kind == job::CanonKind::analog_out) ok = set_analog(a.index, a.value) && ok;
+  for (const JobAction* a = job_.action(next_); a != nullptr && a->before_path < path; a = job_.action(++next_)) {
+    if (a->kind == job::CanonKind::digital_out) ok = set_digital(a->index, a->value != 0) && ok;
+    if (a->kind == job::CanonKind::analog_out) ok = set_analog(a->index, a->value) && ok;
   }
   return ok;
 }
 
 void ActionRunner::done(double now_s, const std::string& what) {
-  const JobAction& a = job_.actions[next_];
+  const JobAction& a = *job_.action(next_);
   ActionEvent e;
   e.t_s = started_;
   e.duration_s = now_s - started_;
@@ -72,17 +71,18 @@ void ActionRunner::done(double now_s, const std::string& what) {
   e.what = what;
   e.at = a.at;
   log_.push_back(e);
-  waiting_ = false;
+  waiting_ = paused_ = false;
   ++next_;
 }
 
 bool ActionRunner::step(double now_s, bool cycle_start_pressed) {
   while (next_ < end_) {
-    const JobAction& a = job_.actions[next_];
+    const JobAction& a = *job_.action(next_);
     if (!waiting_) {
       started_ = now_s;
       if (start(a, now_s)) continue;
       waiting_ = true;
+      paused_ = a.kind == job::CanonKind::pause;
       if (a.kind == job::CanonKind::wait_input) last_input_ = input(a.index, now_s);
       cycle_start_pressed = false;  // a press before the pause does not end it
     }

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "control/job.hpp"
+#include "control/job_source.hpp"
 #include "kerf/hal/gpio.hpp"
 
 namespace kerf::control {
@@ -81,7 +82,7 @@ class ActionRunner {
  public:
   // operator_delay_s >= 0: a simulated operator presses cycle-start that
   // long after a pause starts; < 0: the real button.
-  ActionRunner(const Job& job, Outputs* outputs, double operator_delay_s)
+  ActionRunner(JobSource& job, Outputs* outputs, double operator_delay_s)
       : job_(job), outputs_(outputs), operator_delay_s_(operator_delay_s) {}
 
   // The actions before paths[path] (path == size: after the last) are next.
@@ -91,7 +92,7 @@ class ActionRunner {
   // False when an output could not be set (error()).
   bool replay_outputs(std::size_t path);
   bool pending() const { return next_ < end_; }
-  bool paused() const { return waiting_ && job_.actions[next_].kind == job::CanonKind::pause; }
+  bool paused() const { return waiting_ && paused_; }
   // One cycle: runs what can run now; true once every pending action is done.
   bool step(double now_s, bool cycle_start_pressed);
   const std::vector<ActionEvent>& log() const { return log_; }
@@ -107,11 +108,11 @@ class ActionRunner {
   bool poll(const JobAction& a, double now_s, bool cycle_start_pressed);
   void done(double now_s, const std::string& what);
 
-  const Job& job_;
+  JobSource& job_;
   Outputs* outputs_;
   double operator_delay_s_;
   std::size_t next_ = 0, end_ = 0;
-  bool waiting_ = false, last_input_ = false;
+  bool waiting_ = false, last_input_ = false, paused_ = false;
   double started_ = 0;
   std::vector<ActionEvent> log_;
   std::string error_;

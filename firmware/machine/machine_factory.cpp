@@ -96,6 +96,12 @@ std::unique_ptr<control::Controller> make_controller(const control::Job& job, co
   return std::make_unique<control::Controller>(job, ccfg, link, gpio, journal);
 }
 
+std::unique_ptr<control::Controller> make_controller(control::JobSource& job, const control::ControllerConfig& ccfg,
+                                                     hal::SegmentLink& link, hal::Gpio& gpio,
+                                                     control::Journal* journal) {
+  return std::make_unique<control::Controller>(job, ccfg, link, gpio, journal);
+}
+
 std::unique_ptr<control::Controller> make_controller(const control::Job& job, const config::Config& cfg,
                                                      hal::SegmentLink& link, hal::Gpio& gpio,
                                                      control::Journal* journal) {

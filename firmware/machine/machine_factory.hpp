@@ -34,6 +34,10 @@ std::unique_ptr<hal::Gpio> open_lines(const config::Config& cfg, std::string& er
 std::unique_ptr<control::Controller> make_controller(const control::Job& job, const control::ControllerConfig& ccfg,
                                                      hal::SegmentLink& link, hal::Gpio& gpio,
                                                      control::Journal* journal);
+// The job as it streams (control/job_source.hpp; not owned).
+std::unique_ptr<control::Controller> make_controller(control::JobSource& job, const control::ControllerConfig& ccfg,
+                                                     hal::SegmentLink& link, hal::Gpio& gpio,
+                                                     control::Journal* journal);
 std::unique_ptr<control::Controller> make_controller(const control::Job& job, const config::Config& cfg,
                                                      hal::SegmentLink& link, hal::Gpio& gpio,
                                                      control::Journal* journal);

@@ -45,6 +45,13 @@ SimMachineConfig sim_machine_config(const config::Config& cfg) {
 SimMachineResult run_sim_machine(const control::Job& job, const control::ControllerConfig& ccfg,
                                  const SimMachineConfig& mcfg, SimPlant& plant, hal::Gpio& gpio,
                                  control::Journal* journal, const control::ResumePoint& from) {
+  control::WholeJobSource source(job);
+  return run_sim_machine(source, ccfg, mcfg, plant, gpio, journal, from);
+}
+
+SimMachineResult run_sim_machine(control::JobSource& job, const control::ControllerConfig& ccfg,
+                                 const SimMachineConfig& mcfg, SimPlant& plant, hal::Gpio& gpio,
+                                 control::Journal* journal, const control::ResumePoint& from) {
   SimMachineResult res;
   using clock = std::chrono::steady_clock;
   const auto wall0 = clock::now();

@@ -97,5 +97,9 @@ SimMachineResult run_sim_machine(const control::Job& job, const control::Control
 SimMachineResult run_sim_machine(const control::Job& job, const control::ControllerConfig& ccfg,
                                  const SimMachineConfig& mcfg, SimPlant& plant, hal::Gpio& gpio,
                                  control::Journal* journal, const control::ResumePoint& from);
+// The same with the job as it streams (control/job_source.hpp).
+SimMachineResult run_sim_machine(control::JobSource& job, const control::ControllerConfig& ccfg,
+                                 const SimMachineConfig& mcfg, SimPlant& plant, hal::Gpio& gpio,
+                                 control::Journal* journal, const control::ResumePoint& from);
 
 }  // namespace kerf::simulated

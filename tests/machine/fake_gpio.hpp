@@ -39,7 +39,7 @@ class FakeGpio final : public hal::Gpio {
     return true;
   }
   bool set_watchdog(bool level) override {
-    if (level != watchdog_) watchdog_changes.push_back(now_);
+    if (level != watchdog_ && record_watchdog) watchdog_changes.push_back(now_);
     watchdog_ = level;
     return true;
   }
@@ -94,6 +94,7 @@ class FakeGpio final : public hal::Gpio {
   bool arc_lost = false;
   std::vector<Change> changes;
   std::vector<double> watchdog_changes;  // read times of each watchdog edge
+  bool record_watchdog = true;           // false: long runs (an edge every cycle)
   bool thc_lock = false;
   std::vector<Change> thc_lock_changes;  // every edge of the thc_lock output
 
