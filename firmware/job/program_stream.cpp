@@ -1,0 +1,44 @@
+#include "job/program_stream.hpp"
+
+#include <utility>
+
+namespace kerf::job {
+
+WholeProgramStream::WholeProgramStream(GcodeProgram program) : program_(std::move(program)) {
+  summary_.points.file = program_.points.file;
+  summary_.interp = program_.interp;
+  summary_.dry_run = program_.dry_run;
+  summary_.z_moves = program_.z_moves;
+  summary_.final_z = program_.final_z;
+}
+
+ProgramStream::Next WholeProgramStream::next(ProgramPiece& path, ProgramAction& action) {
+  const std::vector<std::size_t>& begins = program_.points.path_begin;
+  if (action_ < program_.actions.size() && program_.actions[action_].before_path <= path_) {
+    action = program_.actions[action_++];
+    return Next::action;
+  }
+  if (path_ >= begins.size()) return Next::end;
+  const auto b = static_cast<std::ptrdiff_t>(begins[path_]);
+  const auto e = static_cast<std::ptrdiff_t>(path_ + 1 < begins.size() ? begins[path_ + 1] : program_.points.points.size());
+  const io::PointFile& in = program_.points;
+  path.path = program_.paths[path_];
+  path.points.assign(in.points.begin() + b, in.points.begin() + e);
+  path.lines.assign(in.point_lines.begin() + b, in.point_lines.begin() + e);
+  path.feed.clear();
+  for (auto k = b; k < e; ++k)
+    path.feed.push_back(static_cast<std::size_t>(k) < program_.point_feed.size() ? program_.point_feed[static_cast<std::size_t>(k)] : 0.0);
+  ++path_;
+  return Next::path;
+}
+
+// Whole-file reading for now; a window reading replaces it for the files it can run.
+bool open_program_stream(const std::string& file, const InterpSettings& settings, const MachineState& state,
+                         std::unique_ptr<ProgramStream>& out, std::string& error) {
+  GcodeProgram program;
+  if (!read_gcode_program(file, settings, state, program, error)) return false;
+  out = std::make_unique<WholeProgramStream>(std::move(program));
+  return true;
+}
+
+}  // namespace kerf::job
