@@ -285,7 +285,7 @@ class BandPair {
   // boundary clearly outside the range (by 1e-12 of a pseudo-angle, far
   // above the division's rounding) is not computed: the min or max would
   // keep the range's end as it is, bit for bit.
-  static void cut(PsiRange<S>& r, Vec2<S> w) {
+  __attribute__((always_inline)) static void cut(PsiRange<S>& r, Vec2<S> w) {
     if (w.x > S(0)) {
       if (clearly_above(r.hi, {-w.y, w.x})) return;
       r.hi = min_of(r.hi, pseudo({-w.y, w.x}));
