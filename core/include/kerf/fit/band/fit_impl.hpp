@@ -45,23 +45,22 @@ struct Oracle {
     return off < kMarkMask ? off + 1 : 0;
   }
 
-  bool quick_fail(std::uint32_t i, std::uint32_t j, std::uint32_t m, int orient) const {
+  // Does the pair fail at its marked cell alone (mark m, 0: none)?
+  static bool quick_fail(const BandPair<S>& pair, std::uint32_t i, std::uint32_t j, std::uint32_t m) {
     if (m == 0 || i + m - 1 >= j) return false;
-    const BandPair<S> pair(*region, i, j, orient);
     PsiRange<S> range;
     return !(pair.ends(range) && pair.cell(i + m - 1, range));
   }
 
+  // Each orientation in the preferred order: its marked cell first, then the
+  // whole test, on one BandPair (its frame costs a square root).
   bool operator()(std::uint32_t i, std::uint32_t j, std::uint32_t& hint) const {
     if (closes_on_itself(region->point(i), region->point(j))) return false;
     const int first = (hint & kPreferCw) != 0 ? 1 : 0;  // 0: counter-clockwise
-    bool quick[2];
-    for (int o = 0; o < 2; ++o) quick[o] = quick_fail(i, j, mark(hint, o), o == 0 ? 1 : -1);
-    if (quick[0] && quick[1]) return false;
     for (int t = 0; t < 2; ++t) {
       const int o = t == 0 ? first : 1 - first;
-      if (quick[o]) continue;
       const BandPair<S> pair(*region, i, j, o == 0 ? 1 : -1);
+      if (quick_fail(pair, i, j, mark(hint, o))) continue;
       PsiRange<S> range;
       std::uint32_t cell = i;
       if (pair.run(range, cell, binding[o])) {

@@ -109,11 +109,12 @@ class BandPair {
       // the cells are convex; at a sharp turn with unequal widths they are
       // not, and the disc alone let a short arc "cross" a gate on its far
       // circle (found by tests/fuzz/fuzz_fit_band).
-      if (offset(r_.gate_end(k + 1, orient_)) > S(0) && offset(r_.gate_end(k + 1, -orient_)) > S(0)) {
+      const Vec2<S> gate = r_.gate_end(k + 1, orient_);
+      if (offset(gate) > S(0) && offset(r_.gate_end(k + 1, -orient_)) > S(0)) {
         range.lo = S(2);
         return false;
       }
-      inside(range, r_.gate_end(k + 1, orient_));
+      inside(range, gate);
     }
     return !range.empty();
   }
@@ -192,6 +193,27 @@ class BandPair {
 
  private:
   static S pseudo(Vec2<S> d) { return S(1) - d.x / (Scalar<S>::abs(d.x) + d.y); }
+  // Is pseudo(d) (d.y > 0) at least q + 1e-12, or at most q - 1e-12,
+  // without the division? pseudo(d) = 1 - d.x / den, den = |d.x| + d.y > 0,
+  // and the rounding of both sides is below 1e-15. False in fixed point.
+  static bool clearly_above(S q, Vec2<S> d) {
+    if constexpr (!band_detail::kFloating<S>) {
+      (void)q;
+      (void)d;
+      return false;
+    } else {
+      return d.x <= (S(1) - q - S(1e-12)) * (Scalar<S>::abs(d.x) + d.y);
+    }
+  }
+  static bool clearly_below(S q, Vec2<S> d) {
+    if constexpr (!band_detail::kFloating<S>) {
+      (void)q;
+      (void)d;
+      return false;
+    } else {
+      return d.x >= (S(1) - q + S(1e-12)) * (Scalar<S>::abs(d.x) + d.y);
+    }
+  }
 
   // Does no point of the slot's chain snap to a or b, with any reach the
   // test uses (rounding's, or a segment's end reach)? Snapping a point
@@ -259,11 +281,16 @@ class BandPair {
     }
   }
 
-  // Intersects the range with the half-plane d.w >= 0.
-  static void cut(PsiRange<S>& r, Vec2<S> w) {
+  // Intersects the range with the half-plane d.w >= 0. In floating point a
+  // boundary clearly outside the range (by 1e-12 of a pseudo-angle, far
+  // above the division's rounding) is not computed: the min or max would
+  // keep the range's end as it is, bit for bit.
+  __attribute__((always_inline)) static void cut(PsiRange<S>& r, Vec2<S> w) {
     if (w.x > S(0)) {
+      if (clearly_above(r.hi, {-w.y, w.x})) return;
       r.hi = min_of(r.hi, pseudo({-w.y, w.x}));
     } else if (w.x < S(0)) {
+      if (clearly_below(r.lo, {w.y, -w.x})) return;
       r.lo = max_of(r.lo, pseudo({w.y, -w.x}));
     } else if (w.y < S(0)) {
       r.hi = min_of(r.hi, S(0));

@@ -100,7 +100,7 @@ class BandRegion {
   std::uint32_t size() const { return n_; }
   const Vec2<S>& point(std::uint32_t k) const { return p_[k]; }
   const BandVertex<S>& vertex(std::uint32_t k) const { return v_[k]; }
-  Vec2<S> gate_end(std::uint32_t k, int side) const {
+  __attribute__((always_inline)) Vec2<S> gate_end(std::uint32_t k, int side) const {
     const BandVertex<S>& v = v_[k];
     return side > 0 ? p_[k] + v.b * v.gate_left : p_[k] - v.b * v.gate_right;
   }

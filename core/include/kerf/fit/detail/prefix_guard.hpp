@@ -19,6 +19,7 @@
 #pragma once
 
 #include <cstdint>
+#include <type_traits>  // freestanding
 
 #include "kerf/geom/vec2.hpp"
 
@@ -35,6 +36,13 @@ bool circle_through_near_three(Vec2<S> origin, const Vec2<S> pts[3], S eps) {
     if (!(q.norm2() > S(9) * eps * eps)) return true;
     z[k] = q * (S(1) / s);
     e[k] = eps / s;
+  }
+  if constexpr (std::is_floating_point_v<S>) {
+    // Quick yes: the line through z[0] and z[2] meets disc 1 (no root).
+    // (A yes is always safe here: the guard only drops starts.)
+    const Vec2<S> dz = z[2] - z[0];
+    const S cr = dz.cross(z[1] - z[0]);
+    if (cr * cr <= e[1] * e[1] * dz.norm2()) return true;
   }
   // Constraint c: |beta . w[c]| <= lim[c]. If the allowed directions of all
   // three meet, the first direction of their intersection is an end point of
