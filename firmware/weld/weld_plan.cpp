@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <utility>
 
 #include "job/fit_job.hpp"
 #include "kerf/geom/segment.hpp"
@@ -12,10 +13,19 @@ namespace kerf::weld::detail {
 
 namespace {
 
-std::string format_number(double v, int decimals) {
+// v printed with `decimals` digits, trailing zeros (and a bare point) cut,
+// "-0" as "0". `exact`, if given, is set when the text reads back as a
+// double that prints as the same text (at most 15 digits, DBL_DIG): the
+// caller may then reuse the text instead of printing the read value again.
+std::string format_number(double v, int decimals, bool* exact = nullptr) {
   char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  std::string s = buf;
+  const int len = std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  std::string s(buf, len > 0 ? static_cast<std::size_t>(len) : 0);
+  if (exact != nullptr) {
+    const std::size_t point = s.find('.');
+    const std::size_t whole = (point == std::string::npos ? s.size() : point) - (s[0] == '-' ? 1 : 0);
+    *exact = whole + static_cast<std::size_t>(decimals) <= 15;
+  }
   if (s.find('.') != std::string::npos) {
     while (s.back() == '0') s.pop_back();
     if (s.back() == '.') s.pop_back();
@@ -24,16 +34,30 @@ std::string format_number(double v, int decimals) {
   return s;
 }
 
-double rounded(double v, int decimals) { return std::strtod(format_number(v, decimals).c_str(), nullptr); }
+// v rounded to `decimals` as the output writes it, and its text
+// (format_number of the rounded value, printed once when that is exact).
+struct Rounded {
+  double value;
+  std::string text;
+};
+Rounded round_number(double v, int decimals) {
+  bool exact = false;
+  std::string text = format_number(v, decimals, &exact);
+  const double value = std::strtod(text.c_str(), nullptr);
+  if (!exact) text = format_number(value, decimals);
+  return {value, std::move(text)};
+}
 
 // max(dev, distance from q to the polyline pts[a..b] + widen), exactly. The
 // scan starts at segment `near` (the last sample's nearest: the samples walk
 // along the polyline) and goes outwards; it stops once q is within dev, where
 // the rest of the minimum cannot change the maximum. `near` receives q's
-// nearest segment when the scan went through.
+// nearest segment when the scan went through; `witness` the distance from q
+// to some point of the polyline (at most the result minus widen).
 double raise_to_polyline(const std::vector<P>& pts, std::size_t a, std::size_t b, P q, double widen,
-                         double dev, std::size_t& near) {
+                         double dev, std::size_t& near, double& witness) {
   double best = distance(pts[a], q);
+  witness = best;
   if (best + widen <= dev) return dev;
   const std::size_t from = std::clamp(near, a, b - 1);
   auto within = [&](std::size_t k) {  // true once q is known to be within dev
@@ -48,8 +72,12 @@ double raise_to_polyline(const std::vector<P>& pts, std::size_t a, std::size_t b
     const bool up = from + step < b;
     const bool down = step > 0 && from >= a + step;
     if (!up && !down) break;
-    if ((up && within(from + step)) || (down && within(from - step))) return dev;
+    if ((up && within(from + step)) || (down && within(from - step))) {
+      witness = best;
+      return dev;
+    }
   }
+  witness = best;
   return std::max(dev, best + widen);
 }
 
@@ -58,17 +86,17 @@ double raise_to_polyline(const std::vector<P>& pts, std::size_t a, std::size_t b
 Written write_piece(const Segment<double>& s, P from, const std::vector<P>& pts, std::size_t a,
                     std::size_t b, int decimals, double tol) {
   Written w;
-  w.end = {rounded(s.end.x, decimals), rounded(s.end.y, decimals)};
+  const Rounded ex = round_number(s.end.x, decimals), ey = round_number(s.end.y, decimals);
+  w.end = {ex.value, ey.value};
   const bool arc = s.is_arc();
   P c{};
   if (arc) {
-    const P off{rounded(s.centre.x - from.x, decimals), rounded(s.centre.y - from.y, decimals)};
+    const Rounded ox = round_number(s.centre.x - from.x, decimals), oy = round_number(s.centre.y - from.y, decimals);
+    const P off{ox.value, oy.value};
     c = from + off;
-    w.text = (s.dir < 0 ? "G2 X" : "G3 X") + format_number(w.end.x, decimals) + " Y" +
-             format_number(w.end.y, decimals) + " I" + format_number(off.x, decimals) + " J" +
-             format_number(off.y, decimals);
+    w.text = (s.dir < 0 ? "G2 X" : "G3 X") + ex.text + " Y" + ey.text + " I" + ox.text + " J" + oy.text;
   } else {
-    w.text = "G1 X" + format_number(w.end.x, decimals) + " Y" + format_number(w.end.y, decimals);
+    w.text = "G1 X" + ex.text + " Y" + ey.text;
   }
   const Segment<double> drawn = arc ? Segment<double>::arc(from, w.end, c, s.dir) : Segment<double>::line(from, w.end);
   const double widen = arc ? std::fabs((from - c).norm() - (w.end - c).norm()) : 0.0;
@@ -87,7 +115,24 @@ Written write_piece(const Segment<double>& s, P from, const std::vector<P>& pts,
   }
   const std::size_t n = std::clamp<std::size_t>(static_cast<std::size_t>(std::ceil(4 * length / tol)), 8, 512);
   std::size_t near = a;
+  // Consecutive samples lie at most `step` apart (a chord of the arc is
+  // shorter than its arc), so a sample within `witness` of a point of the
+  // polyline keeps the next m samples within witness + m step of it: while
+  // that stays clearly below dev - widen they cannot raise dev, and are not
+  // computed. `margin` is far above the rounding of q and of the distances
+  // (a few ulps of the coordinates): the result is the same, bit for bit.
+  const double step = length / static_cast<double>(n);
+  const double size = std::fabs(from.x) + std::fabs(from.y) + std::fabs(w.end.x) + std::fabs(w.end.y) +
+                      std::fabs(c.x) + std::fabs(c.y) + r + length + 1;
+  const double margin = 1e-6 * tol + 1e-12 * size;
+  double witness = 0;
+  std::size_t since = 0;  // samples skipped since the witness
   for (std::size_t k = 1; k < n; ++k) {
+    if (k > 1 && witness + static_cast<double>(since + 1) * step * (1 + 1e-9) + widen + margin <= dev) {
+      ++since;
+      continue;
+    }
+    since = 0;
     const double t = static_cast<double>(k) / static_cast<double>(n);
     P q;
     if (arc) {
@@ -96,7 +141,7 @@ Written write_piece(const Segment<double>& s, P from, const std::vector<P>& pts,
     } else {
       q = from + (w.end - from) * t;
     }
-    dev = raise_to_polyline(pts, a, b, q, widen, dev, near);
+    dev = raise_to_polyline(pts, a, b, q, widen, dev, near, witness);
   }
   w.deviation = dev;
   return w;
