@@ -67,6 +67,9 @@ struct BandVertex {
   // The outer corner's chords: 2^split[0] before the gate (cell k-1),
   // 2^split[1] after it (cell k).
   std::uint8_t split[2] = {0, 0};
+  // (build) Cell k was found convex and neither vertex k nor k + 1 has
+  // changed since: its check would say the same again.
+  bool convex = false;
 };
 
 // A chain of R between two gates has at most this many points.

@@ -32,6 +32,8 @@ template <class S>
 void BandRegion<S>::set_vertex(std::uint32_t k, S left, S right) {
   using M = Scalar<S>;
   BandVertex<S>& v = v_[k];
+  v.convex = false;  // cells k - 1 and k change with vertex k
+  if (k > 0) v_[k - 1].convex = false;
   v.left = left;
   v.right = right;
   v.turn = 0;
@@ -297,8 +299,15 @@ Status BandRegion<S>::build(const BandWidth<S>* widths, S scale) {
   for (int pass = 0; pass < 100; ++pass) {
     bool changed = false;
     for (std::uint32_t k = 0; k + 1 < n_; ++k) {
+      // A cell is a function of its two vertices: one found convex is
+      // checked again only once one of them has changed (most of the
+      // build's time went to checking the same cells pass after pass).
+      if (v_[k].convex) continue;
       int bad = 0;
-      if (cell_convex(k, bad)) continue;
+      if (cell_convex(k, bad)) {
+        v_[k].convex = true;
+        continue;
+      }
       changed = true;
       for (std::uint32_t q = k; q <= k + 1; ++q) {
         BandVertex<S>& v = v_[q];
