@@ -27,9 +27,17 @@
 // ratio, and whether the two outputs are the same bytes (exit 1 if not).
 // The reader is not timed.
 //
+// With --arcwelder PATH, last, "side by side": per file, ArcWelder
+// (FormerLurker/ArcWelderLib's console program, at that path) and the built
+// `kerf weld --threads 1`, run alternately as child processes at the same
+// largest deviation, best wall time of max(--repeat, 11) runs each, and
+// kerf's time over ArcWelder's. ArcWelder's resolution is the band's whole
+// width (it allows +-resolution/2), so it runs with -r=2*TOL. Without the
+// option (CI has no ArcWelder) nothing of it runs.
+//
 // usage: kerf_bench_weld [--criterion band|vertex|both] [--tol MM] [--no-split] [--jitter F]
 //                        [--tie-break R] [--no-greedy] [--repeat N] [--dump DIR]
-//                        [--kerf PATH | --no-process] [--no-threads] [FILE...]
+//                        [--kerf PATH | --no-process] [--no-threads] [--arcwelder PATH] [FILE...]
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/resource.h>
@@ -216,6 +224,52 @@ bool whole_process(const std::string& kerf, const std::string& path, std::size_t
   return true;
 }
 
+// The "side by side" figures (see the top of this file); false when either
+// program failed.
+bool side_by_side(const std::string& kerf, const std::string& arcwelder, const std::vector<std::string>& files,
+                  double tol, const std::string& criterion, int repeat) {
+  const std::string tmp = std::filesystem::temp_directory_path().string() + "/kerf_bench_weld." +
+                          std::to_string(::getpid());
+  char tol_text[32], resolution[48];
+  std::snprintf(tol_text, sizeof tol_text, "%.10g", tol);
+  std::snprintf(resolution, sizeof resolution, "-r=%.10g", 2 * tol);
+  const int runs = std::max(repeat, 11);
+  std::printf("\nside by side: %s -p=NONE -l=ERROR %s IN OUT and kerf weld --threads 1 --tol %s --criterion %s "
+              "IN OUT\n(the same largest deviation, %s mm), alternately, best wall time of %d runs each\n",
+              arcwelder.c_str(), resolution, tol_text, criterion.c_str(), tol_text, runs);
+  std::printf("%-46s %7s %13s %9s %12s\n", "file", "lines", "arcwelder ms", "kerf ms", "kerf / aw");
+  bool ok = true;
+  for (const std::string& path : files) {
+    std::ifstream in(path, std::ios::binary);
+    std::size_t lines = 0;
+    for (std::string line; std::getline(in, line);) ++lines;
+    double best[2] = {1e300, 1e300};
+    for (int r = 0; r < runs && ok; ++r) {
+      double cpu = 0, wall = 0;
+      ok = run_child({arcwelder, "-p=NONE", "-l=ERROR", resolution, path, tmp + ".aw.gcode"}, cpu, wall);
+      if (!ok) {
+        std::fprintf(stderr, "kerf_bench_weld: %s failed on %s\n", arcwelder.c_str(), path.c_str());
+        break;
+      }
+      best[0] = std::min(best[0], wall);
+      ok = run_child({kerf, "weld", "--threads", "1", "--tol", tol_text, "--criterion", criterion, path,
+                      tmp + ".kerf.nc"}, cpu, wall);
+      if (!ok) {
+        std::fprintf(stderr, "kerf_bench_weld: %s weld failed on %s\n", kerf.c_str(), path.c_str());
+        break;
+      }
+      best[1] = std::min(best[1], wall);
+    }
+    if (!ok) break;
+    std::printf("%-46s %7zu %13.2f %9.2f %11.2fx\n", path.substr(path.find_last_of('/') + 1).c_str(), lines,
+                1e3 * best[0], 1e3 * best[1], best[1] / best[0]);
+    std::fflush(stdout);
+  }
+  std::filesystem::remove(tmp + ".aw.gcode");
+  std::filesystem::remove(tmp + ".kerf.nc");
+  return ok;
+}
+
 // One line of the "threads" figures (see the top of this file); false when
 // a weld failed or the two outputs differ.
 bool threads_figure(const kerf::job::GcodeFile& g, kerf::weld::WeldOptions o, int repeat) {
@@ -254,8 +308,10 @@ int main(int argc, char** argv) {
   std::string dump;  // a directory to write each output to
   bool with_greedy = true;
   int repeat = 3;
-  std::string kerf = KERF_BIN;  // empty: no whole-process figure
+  std::string kerf = KERF_BIN;
+  bool with_process = true;  // the whole-process figures
   bool with_threads = true;
+  std::string arcwelder;  // empty: no side-by-side figures
   std::vector<std::string> files;
   for (int k = 1; k < argc; ++k) {
     if (std::strcmp(argv[k], "--tol") == 0 && k + 1 < argc) tol = std::atof(argv[++k]);
@@ -268,8 +324,9 @@ int main(int argc, char** argv) {
     else if (std::strcmp(argv[k], "--dump") == 0 && k + 1 < argc) dump = argv[++k];
     else if (std::strcmp(argv[k], "--no-greedy") == 0) with_greedy = false;
     else if (std::strcmp(argv[k], "--kerf") == 0 && k + 1 < argc) kerf = argv[++k];
-    else if (std::strcmp(argv[k], "--no-process") == 0) kerf.clear();
+    else if (std::strcmp(argv[k], "--no-process") == 0) with_process = false;
     else if (std::strcmp(argv[k], "--no-threads") == 0) with_threads = false;
+    else if (std::strcmp(argv[k], "--arcwelder") == 0 && k + 1 < argc) arcwelder = argv[++k];
     else if (std::strcmp(argv[k], "--repeat") == 0 && k + 1 < argc) repeat = std::max(1, std::atoi(argv[++k]));
     else files.emplace_back(argv[k]);
   }
@@ -354,7 +411,7 @@ int main(int argc, char** argv) {
       std::fflush(stdout);
     }
   }
-  if (!kerf.empty() && !largest.empty() &&
+  if (with_process && !largest.empty() &&
       (!whole_process(kerf, largest, largest_lines, tol, criteria.front(), repeat, "1", false) ||
        !whole_process(kerf, longest, longest_lines, tol, criteria.front(), repeat, "0", true)))
     return 1;
@@ -379,6 +436,9 @@ int main(int argc, char** argv) {
         if (!threads_figure(g, o, repeat)) return 1;
       }
     }
+  }
+  if (!arcwelder.empty()) {
+    if (!side_by_side(kerf, arcwelder, files, tol, criteria.front(), repeat)) return 1;
   }
   return 0;
 }
