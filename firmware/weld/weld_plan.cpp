@@ -52,12 +52,14 @@ Rounded round_number(double v, int decimals) {
 // scan starts at segment `near` (the last sample's nearest: the samples walk
 // along the polyline) and goes outwards; it stops once q is within dev, where
 // the rest of the minimum cannot change the maximum. `near` receives q's
-// nearest segment when the scan went through; `witness` the distance from q
-// to some point of the polyline (at most the result minus widen).
+// nearest segment when the scan went through. `witness` receives the
+// distance from q to segment `seg` of the polyline (pts[seg]..pts[seg + 1];
+// the point pts[a] when seg is b), at most the result minus widen.
 double raise_to_polyline(const std::vector<P>& pts, std::size_t a, std::size_t b, P q, double widen,
-                         double dev, std::size_t& near, double& witness) {
+                         double dev, std::size_t& near, double& witness, std::size_t& seg) {
   double best = distance(pts[a], q);
   witness = best;
+  seg = b;
   if (best + widen <= dev) return dev;
   const std::size_t from = std::clamp(near, a, b - 1);
   auto within = [&](std::size_t k) {  // true once q is known to be within dev
@@ -65,6 +67,7 @@ double raise_to_polyline(const std::vector<P>& pts, std::size_t a, std::size_t b
     if (d < best) {
       best = d;
       near = k;
+      seg = k;
     }
     return best + widen <= dev;
   };
@@ -115,33 +118,51 @@ Written write_piece(const Segment<double>& s, P from, const std::vector<P>& pts,
   }
   const std::size_t n = std::clamp<std::size_t>(static_cast<std::size_t>(std::ceil(4 * length / tol)), 8, 512);
   std::size_t near = a;
-  // Consecutive samples lie at most `step` apart (a chord of the arc is
-  // shorter than its arc), so a sample within `witness` of a point of the
-  // polyline keeps the next m samples within witness + m step of it: while
-  // that stays clearly below dev - widen they cannot raise dev, and are not
-  // computed. `margin` is far above the rounding of q and of the distances
-  // (a few ulps of the coordinates): the result is the same, bit for bit.
+  auto sample = [&](std::size_t k) {
+    const double t = static_cast<double>(k) / static_cast<double>(n);
+    if (!arc) return from + (w.end - from) * t;
+    const double ang = a0 + (s.dir > 0 ? 1 : -1) * sweep * t;
+    return P{c.x + r * std::cos(ang), c.y + r * std::sin(ang)};
+  };
+  // Samples that cannot raise dev are not computed; the result is the same,
+  // bit for bit: `margin` is far above the rounding of a sample and of a
+  // distance (a few ulps of the coordinates). A sample within `witness` of
+  // segment `seg` of the polyline:
+  //  - on a line, the distance of the samples to that segment is convex
+  //    along the line, so every sample up to the last one within
+  //    dev - margin of the segment (found by galloping) is within it too;
+  //  - on an arc, consecutive samples lie at most `step` apart (a chord is
+  //    shorter than its arc), so the next m are within witness + m step.
   const double step = length / static_cast<double>(n);
   const double size = std::fabs(from.x) + std::fabs(from.y) + std::fabs(w.end.x) + std::fabs(w.end.y) +
                       std::fabs(c.x) + std::fabs(c.y) + r + length + 1;
   const double margin = 1e-6 * tol + 1e-12 * size;
   double witness = 0;
+  std::size_t seg = b;
   std::size_t since = 0;  // samples skipped since the witness
   for (std::size_t k = 1; k < n; ++k) {
-    if (k > 1 && witness + static_cast<double>(since + 1) * step * (1 + 1e-9) + widen + margin <= dev) {
+    if (k > 1 && arc && witness + static_cast<double>(since + 1) * step * (1 + 1e-9) + widen + margin <= dev) {
       ++since;
       continue;
     }
     since = 0;
-    const double t = static_cast<double>(k) / static_cast<double>(n);
-    P q;
-    if (arc) {
-      const double ang = a0 + (s.dir > 0 ? 1 : -1) * sweep * t;
-      q = {c.x + r * std::cos(ang), c.y + r * std::sin(ang)};
-    } else {
-      q = from + (w.end - from) * t;
+    dev = raise_to_polyline(pts, a, b, sample(k), widen, dev, near, witness, seg);
+    if (arc || witness + margin > dev) continue;
+    auto fine = [&](std::size_t m) {
+      const P q = sample(m);
+      const double d = seg == b ? distance(pts[a], q) : distance_to_line_segment(pts[seg], pts[seg + 1], q);
+      return d + margin <= dev;
+    };
+    std::size_t lo = k, hi = k + 1;  // lo fine; hi not, or n
+    while (hi < n && fine(hi)) {
+      lo = hi;
+      hi = std::min(n, k + 2 * (hi - k));
     }
-    dev = raise_to_polyline(pts, a, b, q, widen, dev, near, witness);
+    while (hi - lo > 1) {
+      const std::size_t mid = lo + (hi - lo) / 2;
+      (fine(mid) ? lo : hi) = mid;
+    }
+    k = lo;  // samples k + 1 .. lo cannot raise dev
   }
   w.deviation = dev;
   return w;
