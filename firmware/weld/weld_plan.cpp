@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <utility>
 
-#include "job/fit_job.hpp"
+#include "weld/fit_memo.hpp"
 #include "kerf/geom/segment.hpp"
 
 namespace kerf::weld::detail {
@@ -265,9 +265,7 @@ struct Planner {
     const std::vector<P> part(r.simple.begin() + static_cast<std::ptrdiff_t>(begin),
                               r.simple.begin() + static_cast<std::ptrdiff_t>(end) + 1);
     std::vector<fit::Piece<double>> pieces;
-    Status status = Status::ok;
-    if (!job::fit_job(part, {}, r.fit_tol - r.moved, opts.criterion, pieces, error, status, job::Numeric::floating, tie_break))
-      return false;
+    if (!fit_memo(part, r.fit_tol - r.moved, opts.criterion, tie_break, pieces, error)) return false;
     for (fit::Piece<double>& pc : pieces) {
       pc.first = static_cast<std::uint32_t>(r.kept_index[pc.first + begin]);
       pc.last = static_cast<std::uint32_t>(r.kept_index[pc.last + begin]);
@@ -330,9 +328,8 @@ struct Planner {
       if (depth == 0) {
         const std::vector<P> part(pts.begin() + pc.first, pts.begin() + pc.last + 1);
         std::vector<fit::Piece<double>> again;
-        Status status = Status::ok;
         // A finer tie-break than the first fit: rare, and its pieces then hug the input.
-        if (!job::fit_job(part, {}, fit_tol / 2, job::Criterion::band, again, error, status, job::Numeric::floating, 1e-3)) return false;
+        if (!fit_memo(part, fit_tol / 2, job::Criterion::band, 1e-3, again, error)) return false;
         for (fit::Piece<double>& p : again) {
           p.first += pc.first;
           p.last += pc.first;
