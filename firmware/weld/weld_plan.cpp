@@ -126,32 +126,35 @@ Written write_piece(const Segment<double>& s, P from, const std::vector<P>& pts,
   };
   // Samples that cannot raise dev are not computed; the result is the same,
   // bit for bit: `margin` is far above the rounding of a sample and of a
-  // distance (a few ulps of the coordinates). A sample within `witness` of
-  // segment `seg` of the polyline:
-  //  - on a line, the distance of the samples to that segment is convex
-  //    along the line, so every sample up to the last one within
-  //    dev - margin of the segment (found by galloping) is within it too;
-  //  - on an arc, consecutive samples lie at most `step` apart (a chord is
-  //    shorter than its arc), so the next m are within witness + m step.
-  const double step = length / static_cast<double>(n);
+  // distance (a few ulps of the coordinates). Sample k lies within `witness`
+  // of segment `seg` of the polyline. Its distance to the segment is convex
+  // along the chord from sample k to sample m, and the piece between them
+  // lies within the chord's sagitta of it (at most r a^2 / 8 for an angle
+  // a, 0 on a line): while the larger of the two ends' distances plus that
+  // stays below dev - widen - margin, no sample between can raise dev. The
+  // last such m is found by galloping and bisection.
   const double size = std::fabs(from.x) + std::fabs(from.y) + std::fabs(w.end.x) + std::fabs(w.end.y) +
                       std::fabs(c.x) + std::fabs(c.y) + r + length + 1;
   const double margin = 1e-6 * tol + 1e-12 * size;
   double witness = 0;
   std::size_t seg = b;
-  std::size_t since = 0;  // samples skipped since the witness
+  std::size_t cached = 0;  // a sample computed by the gallop, 0: none
+  P cached_q{};
   for (std::size_t k = 1; k < n; ++k) {
-    if (k > 1 && arc && witness + static_cast<double>(since + 1) * step * (1 + 1e-9) + widen + margin <= dev) {
-      ++since;
-      continue;
-    }
-    since = 0;
-    dev = raise_to_polyline(pts, a, b, sample(k), widen, dev, near, witness, seg);
-    if (arc || witness + margin > dev) continue;
+    const P q = k == cached ? cached_q : sample(k);
+    dev = raise_to_polyline(pts, a, b, q, widen, dev, near, witness, seg);
+    if (witness + widen + margin > dev) continue;
     auto fine = [&](std::size_t m) {
-      const P q = sample(m);
-      const double d = seg == b ? distance(pts[a], q) : distance_to_line_segment(pts[seg], pts[seg + 1], q);
-      return d + margin <= dev;
+      const double angle = sweep * static_cast<double>(m - k) / static_cast<double>(n);
+      if (arc && angle > 1) return false;
+      const double sagitta = arc ? r * angle * angle / 8 * (1 + 1e-9) : 0.0;
+      const P qm = sample(m);
+      if (m == k + 1) {
+        cached = m;
+        cached_q = qm;
+      }
+      const double d = seg == b ? distance(pts[a], qm) : distance_to_line_segment(pts[seg], pts[seg + 1], qm);
+      return std::max(witness, d) + sagitta + widen + margin <= dev;
     };
     std::size_t lo = k, hi = k + 1;  // lo fine; hi not, or n
     while (hi < n && fine(hi)) {
