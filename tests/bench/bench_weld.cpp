@@ -30,7 +30,8 @@
 // With --arcwelder PATH, last, "side by side": per file, ArcWelder
 // (FormerLurker/ArcWelderLib's console program, at that path) and the built
 // `kerf weld --threads 1`, run alternately as child processes at the same
-// largest deviation, best wall time of max(--repeat, 11) runs each, and
+// largest deviation, best wall time and best CPU time (user + system, from
+// wait4: steadier on a shared machine) of max(--repeat, 11) runs each, and
 // kerf's time over ArcWelder's. ArcWelder's resolution is the band's whole
 // width (it allows +-resolution/2), so it runs with -r=2*TOL. Without the
 // option (CI has no ArcWelder) nothing of it runs.
@@ -235,15 +236,16 @@ bool side_by_side(const std::string& kerf, const std::string& arcwelder, const s
   std::snprintf(resolution, sizeof resolution, "-r=%.10g", 2 * tol);
   const int runs = std::max(repeat, 11);
   std::printf("\nside by side: %s -p=NONE -l=ERROR %s IN OUT and kerf weld --threads 1 --tol %s --criterion %s "
-              "IN OUT\n(the same largest deviation, %s mm), alternately, best wall time of %d runs each\n",
+              "IN OUT\n(the same largest deviation, %s mm), alternately, best wall and CPU time of %d runs each\n",
               arcwelder.c_str(), resolution, tol_text, criterion.c_str(), tol_text, runs);
-  std::printf("%-46s %7s %13s %9s %12s\n", "file", "lines", "arcwelder ms", "kerf ms", "kerf / aw");
+  std::printf("%-46s %7s %13s %9s %10s %14s %10s %10s\n", "file", "lines", "arcwelder ms", "kerf ms", "kerf / aw",
+              "arcwelder cpu", "kerf cpu", "kerf / aw");
   bool ok = true;
   for (const std::string& path : files) {
     std::ifstream in(path, std::ios::binary);
     std::size_t lines = 0;
     for (std::string line; std::getline(in, line);) ++lines;
-    double best[2] = {1e300, 1e300};
+    double best[2] = {1e300, 1e300}, best_cpu[2] = {1e300, 1e300};
     for (int r = 0; r < runs && ok; ++r) {
       double cpu = 0, wall = 0;
       ok = run_child({arcwelder, "-p=NONE", "-l=ERROR", resolution, path, tmp + ".aw.gcode"}, cpu, wall);
@@ -252,6 +254,7 @@ bool side_by_side(const std::string& kerf, const std::string& arcwelder, const s
         break;
       }
       best[0] = std::min(best[0], wall);
+      best_cpu[0] = std::min(best_cpu[0], cpu);
       ok = run_child({kerf, "weld", "--threads", "1", "--tol", tol_text, "--criterion", criterion, path,
                       tmp + ".kerf.nc"}, cpu, wall);
       if (!ok) {
@@ -259,10 +262,12 @@ bool side_by_side(const std::string& kerf, const std::string& arcwelder, const s
         break;
       }
       best[1] = std::min(best[1], wall);
+      best_cpu[1] = std::min(best_cpu[1], cpu);
     }
     if (!ok) break;
-    std::printf("%-46s %7zu %13.2f %9.2f %11.2fx\n", path.substr(path.find_last_of('/') + 1).c_str(), lines,
-                1e3 * best[0], 1e3 * best[1], best[1] / best[0]);
+    std::printf("%-46s %7zu %13.2f %9.2f %9.2fx %14.2f %10.2f %9.2fx\n", path.substr(path.find_last_of('/') + 1).c_str(),
+                lines, 1e3 * best[0], 1e3 * best[1], best[1] / best[0], 1e3 * best_cpu[0], 1e3 * best_cpu[1],
+                best_cpu[1] / best_cpu[0]);
     std::fflush(stdout);
   }
   std::filesystem::remove(tmp + ".aw.gcode");
