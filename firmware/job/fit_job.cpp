@@ -124,10 +124,11 @@ bool fit_once(const std::vector<Vec2<double>>& pts, const std::vector<double>& t
 // refused for it.
 bool fit_split(const std::vector<Vec2<double>>& pts, const std::vector<double>& tols, double tol,
                Criterion criterion, std::vector<fit::Piece<double>>& out, std::string& error,
-               Status& status, Numeric numeric, double tie_break, int depth) {
+               Status& status, Numeric numeric, double tie_break, int depth, bool* split) {
   if (fit_once(pts, tols, tol, criterion, out, error, status, numeric, tie_break)) return true;
   const bool own_check = error.rfind("internal error:", 0) == 0;
   if (!own_check || depth >= 24 || pts.size() < 4 || (!tols.empty() && tols.size() != pts.size())) return false;
+  if (split != nullptr) *split = true;
   const std::size_t m = pts.size() / 2;
   const auto half = [&](std::size_t from, std::size_t to, auto& v) {
     return std::vector<std::decay_t<decltype(v[0])>>(v.begin() + static_cast<std::ptrdiff_t>(from),
@@ -137,8 +138,8 @@ bool fit_split(const std::vector<Vec2<double>>& pts, const std::vector<double>& 
   const std::vector<double> ta = tols.empty() ? tols : half(0, m + 1, tols);
   const std::vector<double> tb = tols.empty() ? tols : half(m, tols.size(), tols);
   std::vector<fit::Piece<double>> first, second;
-  if (!fit_split(a, ta, tol, criterion, first, error, status, numeric, tie_break, depth + 1) ||
-      !fit_split(b, tb, tol, criterion, second, error, status, numeric, tie_break, depth + 1))
+  if (!fit_split(a, ta, tol, criterion, first, error, status, numeric, tie_break, depth + 1, split) ||
+      !fit_split(b, tb, tol, criterion, second, error, status, numeric, tie_break, depth + 1, split))
     return false;
   out = std::move(first);
   for (fit::Piece<double> p : second) {
@@ -153,8 +154,9 @@ bool fit_split(const std::vector<Vec2<double>>& pts, const std::vector<double>& 
 
 bool fit_job(const std::vector<Vec2<double>>& pts, const std::vector<double>& tols, double tol,
              Criterion criterion, std::vector<fit::Piece<double>>& out,
-             std::string& error, Status& status, Numeric numeric, double tie_break) {
-  return fit_split(pts, tols, tol, criterion, out, error, status, numeric, tie_break, 0);
+             std::string& error, Status& status, Numeric numeric, double tie_break, bool* split) {
+  if (split != nullptr) *split = false;
+  return fit_split(pts, tols, tol, criterion, out, error, status, numeric, tie_break, 0, split);
 }
 
 }  // namespace kerf::job

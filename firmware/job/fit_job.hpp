@@ -34,10 +34,12 @@ bool read_job(const std::string& file, Criterion criterion, io::PointFile& out,
 // `numeric`. On failure returns false
 // with `error` (no "kerf: " prefix) and `status` set. tie_break > 0 sets the
 // double vertex and band fitters' tie-break precision (fit/fit.hpp; >= 1
-// skips it); 0 keeps their own.
+// skips it); 0 keeps their own. `split`, if given, is set when the fit failed
+// its own check and was fitted again in halves (then the pieces may be more
+// than the fewest).
 bool fit_job(const std::vector<Vec2<double>>& pts, const std::vector<double>& tols, double tol,
              Criterion criterion, std::vector<fit::Piece<double>>& out,
              std::string& error, Status& status, Numeric numeric = Numeric::floating,
-             double tie_break = 0);
+             double tie_break = 0, bool* split = nullptr);
 
 }  // namespace kerf::job

@@ -20,6 +20,7 @@ struct Entry {
   job::Criterion criterion = job::Criterion::band;
   double tie_break = 0;
   std::vector<fit::Piece<double>> pieces;
+  bool split = false;
   std::uint64_t used = 0;  // for evicting the least recently used
 };
 
@@ -37,18 +38,20 @@ bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; 
 }  // namespace
 
 bool fit_memo(const std::vector<Vec2<double>>& pts, double tol, job::Criterion criterion, double tie_break,
-              std::vector<fit::Piece<double>>& out, std::string& error) {
+              std::vector<fit::Piece<double>>& out, std::string& error, bool& split) {
   thread_local Memo memo;
   for (Entry& e : memo.entries) {
     if (e.criterion == criterion && same_bits(e.tol, tol) && same_bits(e.tie_break, tie_break) &&
         same_bits(e.pts, pts)) {
       e.used = ++memo.clock;
       out = e.pieces;
+      split = e.split;
       return true;
     }
   }
   Status status = Status::ok;
-  if (!job::fit_job(pts, {}, tol, criterion, out, error, status, job::Numeric::floating, tie_break)) return false;
+  if (!job::fit_job(pts, {}, tol, criterion, out, error, status, job::Numeric::floating, tie_break, &split))
+    return false;
   if (pts.size() > kMaxPoints) return true;
   Entry* slot = nullptr;
   if (memo.entries.size() < kEntries) {
@@ -63,6 +66,7 @@ bool fit_memo(const std::vector<Vec2<double>>& pts, double tol, job::Criterion c
   slot->criterion = criterion;
   slot->tie_break = tie_break;
   slot->pieces = out;
+  slot->split = split;
   slot->used = ++memo.clock;
   return true;
 }

@@ -16,8 +16,8 @@
 namespace kerf::weld::detail {
 
 // job::fit_job(pts, {}, tol, criterion, out, error, status, floating,
-// tie_break), from the memo when it has it.
+// tie_break, &split), from the memo when it has it.
 bool fit_memo(const std::vector<Vec2<double>>& pts, double tol, job::Criterion criterion, double tie_break,
-              std::vector<fit::Piece<double>>& out, std::string& error);
+              std::vector<fit::Piece<double>>& out, std::string& error, bool& split);
 
 }  // namespace kerf::weld::detail

@@ -179,6 +179,7 @@ Written write_piece(const Segment<double>& s, P from, const std::vector<P>& pts,
 std::vector<P> without_jitter(const std::vector<P>& pts, double e, std::vector<std::size_t>& kept_index,
                               double& moved) {
   kept_index.clear();
+  kept_index.reserve(pts.size());
   kept_index.push_back(0);
   moved = 0;
   std::size_t a = 0;
@@ -215,6 +216,7 @@ struct Planner {
   std::size_t trouble = 0;
   std::size_t kept = 0;
   bool closed_part = false;  // the part being planned ends where it starts
+  bool split = false;        // its fit failed its own check and was made in halves (job::fit_job)
 
   // Plans part j of r with the machine at `from` at its start. With the band
   // criterion the part is fitted first without the fitters' tie-break (each
@@ -243,10 +245,17 @@ struct Planner {
     std::vector<Planned>& first = out.pieces;
     P first_from = from;
     if (!fit_part(r, begin, k, two_pass ? 1.0 : fine, first_from, first)) return false;
+    const bool first_split = split;
     std::size_t first_kept = kept;
     // Without trouble each piece is one move (a kept single segment with
     // no repeated points between): no plan of the same count has fewer.
-    if (two_pass && (trouble > 0 || moves_of(first, r.from_index) > first.size())) {
+    // A first fit of single segments only, not split in halves for its own
+    // check, had the fewest pieces with every segment its own piece: so
+    // has every fit of that count, the tie-break's too, and its plan would
+    // be this one (kept input lines): it is not made.
+    bool singles = !first_split;
+    for (const Planned& pl : first) singles = singles && pl.keep && pl.piece.last - pl.piece.first < 2;
+    if (two_pass && !singles && (trouble > 0 || moves_of(first, r.from_index) > first.size())) {
       std::vector<Planned> again;
       P again_from = from;
       if (!fit_part(r, begin, k, fine, again_from, again)) return false;
@@ -268,7 +277,7 @@ struct Planner {
     const std::vector<P> part(r.simple.begin() + static_cast<std::ptrdiff_t>(begin),
                               r.simple.begin() + static_cast<std::ptrdiff_t>(end) + 1);
     std::vector<fit::Piece<double>> pieces;
-    if (!fit_memo(part, r.fit_tol - r.moved, opts.criterion, tie_break, pieces, error)) return false;
+    if (!fit_memo(part, r.fit_tol - r.moved, opts.criterion, tie_break, pieces, error, split)) return false;
     for (fit::Piece<double>& pc : pieces) {
       pc.first = static_cast<std::uint32_t>(r.kept_index[pc.first + begin]);
       pc.last = static_cast<std::uint32_t>(r.kept_index[pc.last + begin]);
@@ -332,7 +341,8 @@ struct Planner {
         const std::vector<P> part(pts.begin() + pc.first, pts.begin() + pc.last + 1);
         std::vector<fit::Piece<double>> again;
         // A finer tie-break than the first fit: rare, and its pieces then hug the input.
-        if (!fit_memo(part, fit_tol / 2, job::Criterion::band, 1e-3, again, error)) return false;
+        bool again_split = false;
+        if (!fit_memo(part, fit_tol / 2, job::Criterion::band, 1e-3, again, error, again_split)) return false;
         for (fit::Piece<double>& p : again) {
           p.first += pc.first;
           p.last += pc.first;
@@ -354,6 +364,10 @@ struct Planner {
 void prepare(const job::GPolyline& pl, const WeldOptions& opts, int decimals, Run& r) {
   r.unit = pl.inches ? 25.4 : 1.0;
   r.tol = opts.tol_mm / r.unit;
+  // One allocation each (most polylines are short: growing them by
+  // doubling was most of a small file's allocations).
+  r.pts.reserve(pl.points.size());
+  r.from_index.reserve(pl.points.size());
   for (std::size_t k = 0; k < pl.points.size(); ++k) {
     if (!r.pts.empty() && r.pts.back() == pl.points[k]) continue;
     r.pts.push_back(pl.points[k]);
@@ -369,6 +383,7 @@ void prepare(const job::GPolyline& pl, const WeldOptions& opts, int decimals, Ru
   // is then measured against all the input points (resolve).
   r.simple = without_jitter(r.pts, r.tol * opts.jitter, r.kept_index, r.moved);
   const std::vector<P>& simple = r.simple;
+  r.cuts.reserve(8);
   r.cuts.push_back(0);
   for (std::size_t k = 1; k <= simple.size() - 1; ++k) {
     const bool last = k == simple.size() - 1;
