@@ -8,6 +8,9 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <thread>
+
+#include <sys/stat.h>
 #include <fstream>
 #include <memory>
 #include <string>
@@ -210,6 +213,25 @@ TEST(ProgramWindow, LineEndsAreTheWholeFilesInEveryPart) {
     for (const std::size_t part : {std::size_t{1}, std::size_t{5}, std::size_t{64}})
       expect_same(f, InterpSettings{}, MachineState{}, part);
   }
+}
+
+// A named pipe cannot be read twice (the scan, then the window): it is read whole.
+TEST(ProgramWindow, APipeIsReadWhole) {
+  const std::string text = "G0 X0 Y0\nM3\nG1 X10 F600\nG1 Y10\nM5\nM2\n";
+  const std::string plain = write_file("kerf_window_plain.ngc", text);
+  const std::string fifo = ::testing::TempDir() + "kerf_window_fifo.ngc";
+  std::remove(fifo.c_str());
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  std::thread writer([&] { std::ofstream(fifo, std::ios::binary) << text; });
+  const Reading p = read(fifo, InterpSettings{}, MachineState{}, false, 64);
+  writer.join();
+  std::remove(fifo.c_str());
+  ASSERT_TRUE(p.opened) << p.error;
+  EXPECT_FALSE(p.window);
+  const Reading w = read(plain, InterpSettings{}, MachineState{}, false, 64);
+  EXPECT_TRUE(w.window);
+  EXPECT_EQ(p.d.items, w.d.items);
+  EXPECT_EQ(p.d.paths, 1u);
 }
 
 }  // namespace
