@@ -91,16 +91,18 @@ TEST(ProgramWindow, EveryCorpusFileGivesWhatTheWholeReadingGives) {
   std::size_t files = 0, windowed = 0;
   for (const char* dir : {"data/gcode", "data/print", "fuzz/corpus/gcode", "cli/bad_input", "cli/cases"})
     for (const fs::path& f : files_in(tests / dir)) {
+      // Every line boundary a part boundary; the large files (up to 1.1 MB) once so.
       const bool small = fs::file_size(f) < 100000;
-      for (const std::size_t part : {std::size_t{64}, std::size_t{1} << 20}) {
-        InterpSettings plain;
-        const bool w = expect_same(f.string(), kerf_test::interp_case_settings(), MachineState{}, part);
-        expect_same(f.string(), plain, MachineState{}, part);
-        plain.z_axis = true;
-        if (small) expect_same(f.string(), plain, MachineState{}, part);
-        if (part == 64) files += 1, windowed += w;
-      }
-      if (small) expect_same(f.string(), kerf_test::interp_case_settings(), MachineState{}, 1);
+      const InterpSettings cases = kerf_test::interp_case_settings();
+      InterpSettings plain, z_axis;
+      z_axis.z_axis = true;
+      windowed += expect_same(f.string(), cases, MachineState{}, 64);
+      ++files;
+      expect_same(f.string(), cases, MachineState{}, std::size_t{1} << 20);
+      expect_same(f.string(), plain, MachineState{}, small ? 64 : 4096);
+      if (!small) continue;
+      expect_same(f.string(), z_axis, MachineState{}, 64);
+      expect_same(f.string(), cases, MachineState{}, 1);
     }
   std::printf("%zu files, %zu read in a window (the rest have O-words)\n", files, windowed);
   EXPECT_GE(files, 60u);
