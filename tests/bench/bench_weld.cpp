@@ -33,8 +33,11 @@
 // largest deviation, best wall time and best CPU time (user + system, from
 // wait4: steadier on a shared machine) of max(--repeat, 11) runs each, and
 // kerf's time over ArcWelder's. ArcWelder's resolution is the band's whole
-// width (it allows +-resolution/2), so it runs with -r=2*TOL. Without the
-// option (CI has no ArcWelder) nothing of it runs.
+// width (it allows +-resolution/2), so it runs with -r=2*TOL, and with -y
+// (travel arcs): without it ArcWelder welds only moves that extrude (E), so a
+// cutting file with no E word is copied through unwelded. The lines each
+// wrote are printed, to show that both welded. Without the option (CI has no
+// ArcWelder) nothing of it runs.
 //
 // usage: kerf_bench_weld [--criterion band|vertex|both] [--tol MM] [--no-split] [--jitter F]
 //                        [--tie-break R] [--no-greedy] [--repeat N] [--dump DIR]
@@ -225,6 +228,13 @@ bool whole_process(const std::string& kerf, const std::string& path, std::size_t
   return true;
 }
 
+std::size_t count_lines(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::size_t lines = 0;
+  for (std::string line; std::getline(in, line);) ++lines;
+  return lines;
+}
+
 // The "side by side" figures (see the top of this file); false when either
 // program failed.
 bool side_by_side(const std::string& kerf, const std::string& arcwelder, const std::vector<std::string>& files,
@@ -235,20 +245,18 @@ bool side_by_side(const std::string& kerf, const std::string& arcwelder, const s
   std::snprintf(tol_text, sizeof tol_text, "%.10g", tol);
   std::snprintf(resolution, sizeof resolution, "-r=%.10g", 2 * tol);
   const int runs = std::max(repeat, 11);
-  std::printf("\nside by side: %s -p=NONE -l=ERROR %s IN OUT and kerf weld --threads 1 --tol %s --criterion %s "
+  std::printf("\nside by side: %s -p=NONE -l=ERROR -y %s IN OUT and kerf weld --threads 1 --tol %s --criterion %s "
               "IN OUT\n(the same largest deviation, %s mm), alternately, best wall and CPU time of %d runs each\n",
               arcwelder.c_str(), resolution, tol_text, criterion.c_str(), tol_text, runs);
-  std::printf("%-46s %7s %13s %9s %10s %14s %10s %10s\n", "file", "lines", "arcwelder ms", "kerf ms", "kerf / aw",
-              "arcwelder cpu", "kerf cpu", "kerf / aw");
+  std::printf("%-46s %7s %13s %9s %10s %14s %10s %10s %9s %9s\n", "file", "lines", "arcwelder ms", "kerf ms",
+              "kerf / aw", "arcwelder cpu", "kerf cpu", "kerf / aw", "aw out", "kerf out");
   bool ok = true;
   for (const std::string& path : files) {
-    std::ifstream in(path, std::ios::binary);
-    std::size_t lines = 0;
-    for (std::string line; std::getline(in, line);) ++lines;
+    const std::size_t lines = count_lines(path);
     double best[2] = {1e300, 1e300}, best_cpu[2] = {1e300, 1e300};
     for (int r = 0; r < runs && ok; ++r) {
       double cpu = 0, wall = 0;
-      ok = run_child({arcwelder, "-p=NONE", "-l=ERROR", resolution, path, tmp + ".aw.gcode"}, cpu, wall);
+      ok = run_child({arcwelder, "-p=NONE", "-l=ERROR", "-y", resolution, path, tmp + ".aw.gcode"}, cpu, wall);
       if (!ok) {
         std::fprintf(stderr, "kerf_bench_weld: %s failed on %s\n", arcwelder.c_str(), path.c_str());
         break;
@@ -265,9 +273,10 @@ bool side_by_side(const std::string& kerf, const std::string& arcwelder, const s
       best_cpu[1] = std::min(best_cpu[1], cpu);
     }
     if (!ok) break;
-    std::printf("%-46s %7zu %13.2f %9.2f %9.2fx %14.2f %10.2f %9.2fx\n", path.substr(path.find_last_of('/') + 1).c_str(),
-                lines, 1e3 * best[0], 1e3 * best[1], best[1] / best[0], 1e3 * best_cpu[0], 1e3 * best_cpu[1],
-                best_cpu[1] / best_cpu[0]);
+    std::printf("%-46s %7zu %13.2f %9.2f %9.2fx %14.2f %10.2f %9.2fx %9zu %9zu\n",
+                path.substr(path.find_last_of('/') + 1).c_str(), lines, 1e3 * best[0], 1e3 * best[1],
+                best[1] / best[0], 1e3 * best_cpu[0], 1e3 * best_cpu[1], best_cpu[1] / best_cpu[0],
+                count_lines(tmp + ".aw.gcode"), count_lines(tmp + ".kerf.nc"));
     std::fflush(stdout);
   }
   std::filesystem::remove(tmp + ".aw.gcode");
