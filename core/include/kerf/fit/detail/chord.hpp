@@ -101,6 +101,7 @@ struct PieceFit {
   bool line = true;
   Vec2<S> direction{S(1), S(0)};  // unit (cos phi, sin phi); (1, 0) is the line
   S error{};                      // the largest distance of an inner point
+  int dir = 0;  // the arc's E (+1 CCW, -1 CW) when the rule chose it; 0: make_segment's rule
 };
 
 // True when a and b are too close for their chord to define a pencil of
@@ -119,10 +120,13 @@ bool closes_on_itself(Vec2<S> a, Vec2<S> b) {
 // farthest from the chord. If every inner point is within tol of the chord
 // (or there is none), it is the minor arc, which bulges away from the centre.
 // Bulging to the right of a->b means turning counter-clockwise: E = +1.
+// `dir`, when not 0, is the E that the rule chose (the vertex criterion's
+// exact arc test knows which of the circle's two arcs passes the points).
 template <class S>
 Segment<S> make_segment(const Chord<S>& chord, const Vec2<S>* inner, unsigned count, bool line,
-                        Vec2<S> centre, S tol) {
+                        Vec2<S> centre, S tol, int dir = 0) {
   if (line) return Segment<S>::line(chord.a, chord.b);
+  if (dir != 0) return Segment<S>::arc(chord.a, chord.b, centre, dir);
   S far = S(0);
   for (unsigned k = 0; k < count; ++k) {
     const S o = chord.offset(inner[k]);

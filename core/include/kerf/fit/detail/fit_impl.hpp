@@ -165,7 +165,7 @@ Result<Fit<S>> build(Span<const Vec2<S>> original, Scaled<S> sc, S eps, std::uin
     const PieceFit<S> f = choose_piece(p, i, j, eps, method, set);
     const Chord<S> chord(p[i], p[j]);
     const Vec2<S> centre = f.line ? Vec2<S>{} : chord.centre(f.direction);
-    Segment<S> seg = make_segment(chord, p + i + 1, j - i - 1, f.line, centre, eps);
+    Segment<S> seg = make_segment(chord, p + i + 1, j - i - 1, f.line, centre, eps, f.dir);
     seg.start = original[i];
     seg.end = original[j];
     seg.centre = seg.centre * unscale;
