@@ -8,7 +8,8 @@
 //              (to within rounding) has no such circle (d_k is infinite) and
 //              is left out of the mean; if every inner point is, the piece
 //              is the line.
-// A rule's piece is feasible when its largest inner distance is <= eps.
+// A rule's piece is feasible when its largest inner distance is <= eps, the
+// distance to the arc (the better of the circle's two; fit/detail/chord.hpp).
 // Distances are measured in the chord frame (fit/detail/chord.hpp), which stays
 // exact for the enormous radii of nearly straight runs.
 #pragma once
@@ -23,15 +24,28 @@ enum class EsgiRule : std::uint8_t { max, mean };
 
 namespace detail {
 
-// Largest distance from the inner points to the circle of direction d,
+// Largest distance from the inner points to the arc on the circle of
+// direction d (the better of its two arcs; for the line, the segment),
 // stopping early once it exceeds `stop`.
 template <class S>
-S inner_error(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, const Chord<S>& chord, Vec2<S> d,
-              S stop) {
-  S worst = S(0);
-  for (std::uint32_t k = i + 1; k < j && !(worst > stop); ++k)
-    worst = max_of(worst, chord.distance(d, pts[k]));
-  return worst;
+struct ArcError {
+  S error;
+  int dir;
+};
+
+template <class S>
+ArcError<S> inner_error(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, const Chord<S>& chord,
+                        Vec2<S> d, S stop) {
+  ArcError<S> best{Scalar<S>::infinity(), 1};
+  for (int e = 1; e >= -1; e -= 2) {
+    if (e < 0 && !(d.y > S(0))) break;  // the line: only the segment (E = +1 at phi = 0)
+    const S limit = min_of(stop, best.error);
+    S worst = S(0);
+    for (std::uint32_t k = i + 1; k < j && !(worst > limit); ++k)
+      worst = max_of(worst, arc_distance(chord, d, e, pts[k]));
+    if (worst < best.error || e > 0) best = {worst, e};
+  }
+  return best;
 }
 
 template <class S>
@@ -42,8 +56,8 @@ PieceFit<S> esgi_max(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, const
   for (std::uint32_t k = i + 1; k < j && !(best.error <= good_enough); ++k) {
     const Vec2<S> d = chord.direction_through(pts[k]);
     if (d.norm2() == S(0)) continue;  // p_k repeats an end point: no circle
-    const S e = inner_error(pts, i, j, chord, d, min_of(best.error, stop));
-    if (e < best.error) best = {!(d.y > S(0)), d, e};
+    const ArcError<S> e = inner_error(pts, i, j, chord, d, min_of(best.error, stop));
+    if (e.error < best.error) best = {!(d.y > S(0)), d, e.error, e.dir};
   }
   return best;
 }
@@ -71,7 +85,9 @@ PieceFit<S> esgi_mean(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, cons
     arc.direction = d * (S(1) / d.norm());
     arc.line = !(arc.direction.y > S(0));
   }
-  arc.error = inner_error(pts, i, j, chord, arc.direction, stop);
+  const ArcError<S> e = inner_error(pts, i, j, chord, arc.direction, stop);
+  arc.error = e.error;
+  arc.dir = e.dir;
   return arc;
 }
 

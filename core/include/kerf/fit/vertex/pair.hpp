@@ -83,43 +83,6 @@ Status constrain(AngleSet<S>& set, const Chord<S>& chord, Vec2<S> p, S eps) {
   return set.intersect(parts, n);
 }
 
-// The arc's wedge (the angle at the centre that the arc spans). Of the two
-// arcs from a to b on the circle of direction d = (cos phi, sin phi), the one
-// of E = +1 bulges to the right of a -> b (counter-clockwise, half-sweep phi)
-// and the one of E = -1 to the left (clockwise, half-sweep pi - phi). With
-// p = mid + x u + y n (u along a -> b), p lies in the wedge of the arc of E iff
-//   E ((h - |x|) cos phi - y sin phi) >= 0,
-// a half-plane in (cos phi, sin phi). Why: p is on the arc's side of the ray
-// from the centre through a iff (h + x) cos phi - y sin phi >= 0 (the cross
-// product (a - c) x (p - c) times sin(phi) / h), through b iff (h - x) cos phi
-// - y sin phi >= 0; a minor arc's wedge (cos phi >= 0) is both, a major one's
-// either, and in both cases the one that binds is the end on p's side of the
-// bisector. At phi = 0 the arc of E = +1 is the segment ab (|x| <= h); the
-// arc of E = -1 there is the rest of the line. A point within eps of a or b
-// is within eps of every arc from a to b: it is exempt.
-template <class S>
-struct Wedge {
-  S c;      // p is in the wedge iff c cos(phi) + s sin(phi) >= 0
-  S s;
-  bool exempt;
-  S end2;   // the squared distance to the nearer end, on local terms
-  S k;      // the local scale (Chord::local)
-};
-
-template <class S>
-Wedge<S> wedge_of(const Chord<S>& chord, Vec2<S> p, S eps, int e) {
-  const typename Chord<S>::Local l = chord.local(p, eps);
-  const Vec2<S> u{chord.n.y, -chord.n.x};
-  const S x = Scalar<S>::abs(l.v.dot(u));
-  const S y = l.v.dot(chord.n);
-  const S gap = x - l.h;
-  const S ee = eps * l.k;
-  const S end2 = gap * gap + y * y;
-  const S c = e > 0 ? l.h - x : x - l.h;
-  const S s = e > 0 ? -y : y;
-  return {c, s, !(end2 > ee * ee), end2, l.k};
-}
-
 // Narrows `set` to the circles whose arc of E = e has p in its wedge (or p
 // within eps of an end).
 template <class S>
@@ -246,16 +209,6 @@ Vec2<S> vertex_pair_witness(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j
   }
   if (dir != nullptr) *dir = e;
   return d;
-}
-
-// Distance of p to the arc of E = e on the circle of direction d (for d =
-// (1, 0) and e = +1: the segment): to the circle inside the arc's wedge, else
-// to the nearer end.
-template <class S>
-S arc_distance(const Chord<S>& chord, Vec2<S> d, int e, Vec2<S> p) {
-  const Wedge<S> w = wedge_of(chord, p, S(0), e);
-  if (w.exempt || !(w.c * d.x + w.s * d.y < S(0))) return chord.distance(d, p);
-  return Scalar<S>::sqrt(w.end2) / w.k;
 }
 
 // Largest distance of the inner points to that arc.
