@@ -38,8 +38,7 @@ double wrap(double a) {
 
 // Does the arc follow its points in order? Walking the points from start to
 // end, each step turns about the centre (in the arc's direction; a step back
-// of up to 90 degrees counts as backwards unless it fits in the sweep as a
-// step forward) and the total must be the arc's
+// of up to 90 degrees counts as backwards) and the total must be the arc's
 // sweep, never running past it or back before the start by more than the tol
 // allows. A point path that winds round more than once, or the other way,
 // cannot be one arc even when every point is near its circle. Skipped for
@@ -55,9 +54,7 @@ bool follows_in_order(Span<const Vec2<double>> pts, const fit::Piece<double>& pc
   for (std::uint32_t i = pc.first + 1; i <= pc.last; ++i) {
     const double a = angle(pts[i]);
     double step = wrap(s.dir * (a - prev));
-    // A small step backwards, unless the step forward stays within the sweep:
-    // a major arc may pass its points in a few long steps.
-    if (step > 1.5 * 3.141592653589793 && walked + step > sweep + slack) step -= kTwoPi;
+    if (step > 1.5 * 3.141592653589793) step -= kTwoPi;  // a small step backwards
     walked += step;
     prev = a;
     if (walked < -slack || walked > sweep + slack) return false;

@@ -46,6 +46,16 @@ class PairTest {
       const double d = std::abs(x) <= f_.h ? std::abs(p.b) : end_distance(p);
       if (!(d <= lim_)) return false;
     }
+    // Steps longer than 2 lim go forward along it.
+    double px = f_.ax, py = f_.ay;
+    for (std::size_t k = 0; k <= inner_.size(); ++k) {
+      const double qx = k < inner_.size() ? inner_[k].px : f_.bx;
+      const double qy = k < inner_.size() ? inner_[k].py : f_.by;
+      const double ex = qx - px, ey = qy - py, len = std::hypot(ex, ey);
+      if (len > 2 * lim_ && ex * f_.ny - ey * f_.nx < -1e-9 * len) return false;
+      px = qx;
+      py = qy;
+    }
     return true;
   }
 
@@ -55,6 +65,8 @@ class PairTest {
 
   // Every inner point within lim of the arc of direction dir (+1 CCW) around
   // the centre at offset t: inside its sweep (plain angles), or near an end.
+  // Every step between consecutive points (the ends included) longer than
+  // 2 lim turns forward about the centre, by less than half a turn.
   bool arc_ok(double t, int dir) const {
     const double cx = f_.mx + t * f_.nx, cy = f_.my + t * f_.ny;
     const double a0 = std::atan2(f_.ay - cy, f_.ax - cx);
@@ -63,7 +75,33 @@ class PairTest {
       if (wrap(dir * (std::atan2(p.py - cy, p.px - cx) - a0)) <= sweep) continue;
       if (!(end_distance(p) <= lim_)) return false;
     }
+    double px = f_.ax, py = f_.ay;
+    for (std::size_t k = 0; k <= inner_.size(); ++k) {
+      const double qx = k < inner_.size() ? inner_[k].px : f_.bx;
+      const double qy = k < inner_.size() ? inner_[k].py : f_.by;
+      const double ex = qx - px, ey = qy - py, len = std::hypot(ex, ey);
+      const double ux = px - cx, uy = py - cy;
+      if (len > 2 * lim_ && dir * (ux * ey - uy * ex) < -1e-9 * len * std::hypot(ux, uy)) return false;
+      px = qx;
+      py = qy;
+    }
     return true;
+  }
+
+  // The centres from which the step from p to q points along the centre's
+  // ray from p (the step constraint's edges): (p - c) x (q - p) = 0.
+  void step_roots(std::vector<double>& out) const {
+    double px = f_.ax, py = f_.ay;
+    for (std::size_t k = 0; k <= inner_.size(); ++k) {
+      const double qx = k < inner_.size() ? inner_[k].px : f_.bx;
+      const double qy = k < inner_.size() ? inner_[k].py : f_.by;
+      const double ex = qx - px, ey = qy - py;
+      const double vx = px - f_.mx, vy = py - f_.my;
+      const double ne = f_.nx * ey - f_.ny * ex;
+      if (ne != 0) out.push_back((vx * ey - vy * ex) / ne);
+      px = qx;
+      py = qy;
+    }
   }
 
   static double wrap(double a) {
@@ -214,6 +252,7 @@ TwinCircle twin_pair(const std::vector<VPoint>& pts, std::size_t i, std::size_t 
     if (h + x != 0) cand.push_back(h * p.b / (h + x));
     if (h - x != 0) cand.push_back(h * p.b / (h - x));
   }
+  test.step_roots(cand);
   for (double t : cand)
     if (accept(t)) return res;
 

@@ -142,6 +142,20 @@ S arc_distance(const Chord<S>& chord, Vec2<S> d, int e, Vec2<S> p) {
   return Scalar<S>::sqrt(w.end2) / w.k;
 }
 
+// Does the step from p to q turn forward about the centre of direction d,
+// for the arc of E = e (fit/vertex/pair.hpp, constrain_step)? Steps of at
+// most 2 eps are exempt.
+template <class S>
+bool steps_forward(const Chord<S>& chord, Vec2<S> p, Vec2<S> q, S eps, int e, Vec2<S> d) {
+  const S k = min_of(chord.local(p, eps).k, chord.local(q, eps).k);
+  const Vec2<S> step = (q - p) * k;
+  const S ee = eps * k;
+  if (!(step.norm2() > S(4) * ee * ee)) return true;
+  const S c = -(chord.h * k) * chord.n.cross(step);
+  const S s = ((p - chord.mid) * k).cross(step);
+  return !(S(e) * (c * d.x + s * d.y) < S(0));
+}
+
 // The circle (or line) chosen for one piece, as every fitting rule reports it.
 template <class S>
 struct PieceFit {

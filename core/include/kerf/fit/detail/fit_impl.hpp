@@ -31,7 +31,7 @@ struct Oracle {
       return ok;
     }
     const EsgiRule rule = method == Method::esgi_max ? EsgiRule::max : EsgiRule::mean;
-    return !(esgi_arc(rule, pts, i, j, eps, eps).error > eps);
+    return !(esgi_arc(rule, pts, i, j, eps, eps, eps).error > eps);
   }
   bool alive(std::uint32_t i, std::uint32_t j) const { return prefix_guard(pts, i, j, eps); }
 };
@@ -140,7 +140,7 @@ PieceFit<S> choose_piece(const Vec2<S>* p, std::uint32_t i, std::uint32_t j, S e
                         AngleSet<S>& set) {
   if (method == Method::optimal) return best_vertex_pair(p, i, j, eps, set);
   const EsgiRule rule = method == Method::esgi_max ? EsgiRule::max : EsgiRule::mean;
-  return esgi_arc(rule, p, i, j, Scalar<S>::infinity(), S(-1));
+  return esgi_arc(rule, p, i, j, Scalar<S>::infinity(), S(-1), eps);
 }
 
 // Runs the search at eps within `pieces` and writes the path's pieces, in

@@ -83,28 +83,58 @@ Status constrain(AngleSet<S>& set, const Chord<S>& chord, Vec2<S> p, S eps) {
   return set.intersect(parts, n);
 }
 
+// Narrows `set` to the directions d with c d.x + s d.y >= 0 (sin(phi) >= 0):
+// one interval of phi, from the line up to the edge or from the edge on.
+template <class S>
+Status intersect_half_plane(AngleSet<S>& set, S c, S s) {
+  if (c == S(0)) {
+    if (!(s < S(0))) return Status::ok;
+    const Interval<S> ends[2] = {{S(0), S(0)}, {S(2), S(2)}};  // only sin(phi) = 0
+    return set.intersect(ends, 2);
+  }
+  const S q = pseudo_angle(Vec2<S>{s, -c});  // where the half-plane's edge meets phi
+  const Interval<S> part = c > S(0) ? Interval<S>{S(0), q} : Interval<S>{q, S(2)};
+  return set.intersect(&part, 1);
+}
+
 // Narrows `set` to the circles whose arc of E = e has p in its wedge (or p
 // within eps of an end).
 template <class S>
 Status constrain_wedge(AngleSet<S>& set, const Chord<S>& chord, Vec2<S> p, S eps, int e) {
   const Wedge<S> w = wedge_of(chord, p, eps, e);
   if (w.exempt) return Status::ok;
-  if (w.c == S(0)) {
-    if (!(w.s < S(0))) return Status::ok;
-    const Interval<S> ends[2] = {{S(0), S(0)}, {S(2), S(2)}};  // only sin(phi) = 0
-    return set.intersect(ends, 2);
-  }
-  const S q = pseudo_angle(Vec2<S>{w.s, -w.c});  // where the half-plane's edge meets phi
-  const Interval<S> part = w.c > S(0) ? Interval<S>{S(0), q} : Interval<S>{q, S(2)};
-  return set.intersect(&part, 1);
+  return intersect_half_plane(set, w.c, w.s);
+}
+
+// The step from p to the next point q must turn forward about the centre,
+// by less than half a turn: E (p - c) x (q - p) >= 0, with c = mid + n h
+// cot(phi), times sin(phi): E (cross(v, q - p) sin(phi) - h cross(n, q - p)
+// cos(phi)) >= 0, v = p - mid. Points within eps of the arc may step back
+// when the step is at most 2 eps (both can be near one point of the arc), so
+// such a step is exempt. Without it an arc that runs the other way round a
+// path that winds (or a major arc that a path's first step skips round) has
+// every point within eps and still does not follow them.
+template <class S>
+Status constrain_step(AngleSet<S>& set, const Chord<S>& chord, Vec2<S> p, Vec2<S> q, S eps, int e) {
+  const S k = min_of(chord.local(p, eps).k, chord.local(q, eps).k);
+  const Vec2<S> v = (p - chord.mid) * k;
+  const Vec2<S> step = (q - p) * k;
+  const S ee = eps * k;
+  if (!(step.norm2() > S(4) * ee * ee)) return Status::ok;
+  const S c = -(chord.h * k) * chord.n.cross(step);
+  const S s = v.cross(step);
+  return e > 0 ? intersect_half_plane(set, c, s) : intersect_half_plane(set, -c, -s);
 }
 
 namespace detail {
 
+// Point `at` (an inner point) near the arc, and its step from the point
+// before it in order.
 template <class S>
-bool narrow(AngleSet<S>& set, const Chord<S>& chord, Vec2<S> p, S eps, int e) {
-  return constrain(set, chord, p, eps) == Status::ok && !set.empty() &&
-         constrain_wedge(set, chord, p, eps, e) == Status::ok && !set.empty();
+bool narrow(AngleSet<S>& set, const Chord<S>& chord, const Vec2<S>* pts, std::uint32_t at, S eps, int e) {
+  return constrain(set, chord, pts[at], eps) == Status::ok && !set.empty() &&
+         constrain_wedge(set, chord, pts[at], eps, e) == Status::ok && !set.empty() &&
+         constrain_step(set, chord, pts[at - 1], pts[at], eps, e) == Status::ok && !set.empty();
 }
 
 // The circles whose arc of E = e passes within eps of every inner point;
@@ -113,7 +143,7 @@ template <class S>
 bool vertex_arc_set(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, S eps, AngleSet<S>& set,
                     const Chord<S>& chord, int e, std::uint32_t first, std::uint32_t& failed) {
   set.reset();
-  if (first > i && first < j && !narrow(set, chord, pts[first], eps, e)) {
+  if (first > i && first < j && !narrow(set, chord, pts, first, eps, e)) {
     failed = first;
     return false;
   }
@@ -127,11 +157,16 @@ bool vertex_arc_set(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, S eps,
     const std::uint32_t stride = step == top ? top : 2 * step;
     for (std::uint32_t k = start; k < m; k += stride) {
       const std::uint32_t at = i + 1 + (k + m / 2) % m;
-      if (!narrow(set, chord, pts[at], eps, e)) {
+      if (!narrow(set, chord, pts, at, eps, e)) {
         failed = at;
         return false;
       }
     }
+  }
+  // The last step, to p_j.
+  if (constrain_step(set, chord, pts[j - 1], pts[j], eps, e) != Status::ok || set.empty()) {
+    failed = j - 1;
+    return false;
   }
   return true;
 }
@@ -186,7 +221,7 @@ bool vertex_pair_set(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, S eps
 // A cheap sufficient test: the circle through p_i, the middle point and p_j
 // (the line if they are collinear), checked with the annulus rule in the
 // chord frame, which stays exact for huge radii, and its arc through the
-// middle point with the wedge. Returns its direction, or (0, 0) when it does
+// middle point with the wedge and the steps. Returns its direction, or (0, 0) when it does
 // not fit; `dir` receives the arc's E (+1 for the line: the segment).
 template <class S>
 Vec2<S> vertex_pair_witness(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j, S eps,
@@ -207,6 +242,8 @@ Vec2<S> vertex_pair_witness(const Vec2<S>* pts, std::uint32_t i, std::uint32_t j
     const Wedge<S> w = wedge_of(chord, pts[k], eps, e);
     if (!w.exempt && w.c * d.x + w.s * d.y < S(0)) return {};
   }
+  for (std::uint32_t k = i; k < j; ++k)
+    if (!steps_forward(chord, pts[k], pts[k + 1], eps, e, d)) return {};
   if (dir != nullptr) *dir = e;
   return d;
 }
