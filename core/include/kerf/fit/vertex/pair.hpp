@@ -16,6 +16,11 @@
 // The annulus equals the true condition |d - r| <= eps whenever r >= eps. A
 // circle with r < eps also accepts points with d <= eps - r near its centre;
 // that needs h < eps (r >= h) and is added explicitly, so the test is exact.
+//
+// That is the circle. The piece is one of its two arcs, so each point must
+// also lie in that arc's wedge or within eps of an end (constrain_wedge), and
+// the arc must run the points in order (constrain_step): one half-plane in
+// (cos phi, sin phi) each, for each arc in turn.
 #pragma once
 
 #include <cstdint>
