@@ -238,6 +238,11 @@ Result<Fit<S>> fit_min_count(Span<const Vec2<S>> pts, S tol, Method method, Work
   const Result<S> best = detail::bisect_tol(sc.pts, count.value(), method, ws, tol * sc.factor, tie_break, true);
   if (!best.ok()) return best.status();
   Result<Fit<S>> fit = detail::build(pts, sc, best.value(), count.value(), method, ws, out);
+  // At the tie-break's tol the verdicts sit on their boundary, where rounding
+  // (kerf::Fixed far from the origin) may undo the count the bisection saw:
+  // then the fit at tol itself, whose count was just found.
+  if (!fit.ok() && fit.status() == Status::infeasible)
+    fit = detail::build(pts, sc, tol * sc.factor, count.value(), method, ws, out);
   if (fit.ok()) fit.value().tol = tol;
   return fit;
 }
