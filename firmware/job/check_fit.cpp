@@ -36,38 +36,30 @@ double wrap(double a) {
   return a < 0.0 ? a + kTwoPi : a;
 }
 
-// Does the arc follow its points in order? Each point has a place along the
-// arc, its angle from the start in the arc's direction (a point within tol of
-// the start or the end may also sit there), known to within the angle that
-// tol subtends. Walking the points from start to end, the place reached may
-// only move forward: it is the largest lower bound so far, and it must not
-// pass a point's upper bound (a path that winds round more than once, or the
-// other way, or steps back more than tol allows, fails). Unlike counting
-// steps, a major arc's single long step is forward. Skipped for radii within
-// the tol, where any order is within tol of the arc.
+// Does the arc follow its points in order? Walking the points from start to
+// end, each step turns about the centre (in the arc's direction; a step back
+// of up to 90 degrees counts as backwards) and the total must be the arc's
+// sweep, never running past it or back before the start by more than the tol
+// allows. A point path that winds round more than once, or the other way,
+// cannot be one arc even when every point is near its circle. Skipped for
+// radii within the tol, where any order is within tol of the arc.
 bool follows_in_order(Span<const Vec2<double>> pts, const fit::Piece<double>& pc, double tol) {
   const Segment<double>& s = pc.segment;
   const double r = s.radius();
   if (!(r > tol)) return true;
   const double slack = 2.0 * tol / r;
   auto angle = [&](Vec2<double> p) { return std::atan2(p.y - s.centre.y, p.x - s.centre.x); };
-  const double start = angle(s.start);
-  const double sweep = s.start == s.end ? kTwoPi : wrap(s.dir * (angle(s.end) - start));
-  double reached = -slack;
+  const double sweep = s.start == s.end ? kTwoPi : wrap(s.dir * (angle(s.end) - angle(s.start)));
+  double walked = 0.0, prev = angle(s.start);
   for (std::uint32_t i = pc.first + 1; i <= pc.last; ++i) {
-    const Vec2<double> p = pts[i];
-    double place = i == pc.last ? sweep : wrap(s.dir * (angle(p) - start));
-    const bool near_start = std::hypot(p.x - s.start.x, p.y - s.start.y) <= tol;
-    const bool near_end = std::hypot(p.x - s.end.x, p.y - s.end.y) <= tol;
-    if (near_start && place > sweep + slack) place -= kTwoPi;  // just before the start
-    double lo = place - slack, hi = place + slack;
-    if (near_start) lo = std::fmin(lo, -slack);
-    if (near_end) hi = std::fmax(hi, sweep + slack);
-    if (hi > sweep + slack && !near_end) hi = sweep + slack;
-    reached = std::fmax(reached, lo);
-    if (reached > hi) return false;
+    const double a = angle(pts[i]);
+    double step = wrap(s.dir * (a - prev));
+    if (step > 1.5 * 3.141592653589793) step -= kTwoPi;  // a small step backwards
+    walked += step;
+    prev = a;
+    if (walked < -slack || walked > sweep + slack) return false;
   }
-  return true;
+  return std::fabs(walked - sweep) <= slack;
 }
 
 }  // namespace

@@ -4,7 +4,7 @@
 // measured here independently of the fitter, with the vertex criterion's
 // distance (to the piece's full circle, or its line), plus that an arc
 // passes its points in order (not round the circle more than once, nor
-// backwards). A failure is a bug or
+// backwards: the fitters test the circle, not the order). A failure is a bug or
 // a numeric breakdown in the fitter, and no output must be written.
 #pragma once
 

@@ -65,9 +65,8 @@ class PairTest {
 
   // Every inner point within lim of the arc of direction dir (+1 CCW) around
   // the centre at offset t: inside its sweep (plain angles), or near an end.
-  // And the arc runs them in order: along it (the angle from p_i in its
-  // direction) each point comes no earlier than the one before, unless the
-  // step is at most 2 lim or one of its points is within lim of an end.
+  // Every step between consecutive points (the ends included) longer than
+  // 2 lim turns forward about the centre, by less than half a turn.
   bool arc_ok(double t, int dir) const {
     const double cx = f_.mx + t * f_.nx, cy = f_.my + t * f_.ny;
     const double a0 = std::atan2(f_.ay - cy, f_.ax - cx);
@@ -80,19 +79,13 @@ class PairTest {
     for (std::size_t k = 0; k <= inner_.size(); ++k) {
       const double qx = k < inner_.size() ? inner_[k].px : f_.bx;
       const double qy = k < inner_.size() ? inner_[k].py : f_.by;
-      const double len = std::hypot(qx - px, qy - py);
-      const bool exempt = len <= 2 * lim_ || near_end(px, py) || near_end(qx, qy);
-      const double pos_p = wrap(dir * (std::atan2(py - cy, px - cx) - a0));
-      const double pos_q = wrap(dir * (std::atan2(qy - cy, qx - cx) - a0));
-      if (!exempt && pos_q < pos_p - 1e-9) return false;
+      const double ex = qx - px, ey = qy - py, len = std::hypot(ex, ey);
+      const double ux = px - cx, uy = py - cy;
+      if (len > 2 * lim_ && dir * (ux * ey - uy * ex) < -1e-9 * len * std::hypot(ux, uy)) return false;
       px = qx;
       py = qy;
     }
     return true;
-  }
-
-  bool near_end(double x, double y) const {
-    return std::min(std::hypot(x - f_.ax, y - f_.ay), std::hypot(x - f_.bx, y - f_.by)) <= lim_;
   }
 
   // The centres from which the step from p to q points along the centre's

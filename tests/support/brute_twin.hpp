@@ -15,10 +15,10 @@
 // it is near the arc itself, not only its circle (inside the arc's sweep, or
 // within tol of an end): that adds, per point, the two t at which it lies on
 // the ray from the centre through p_i or p_j, t = h y / (h +- x) (x along the
-// chord, y across it, from the midpoint). And the arc must run the points in
-// order (each step longer than 2 tol, away from the ends, goes forward along
-// it): one more t per step, where the step points along the centre's ray. The
-// twin tests every root, the line,
+// chord, y across it, from the midpoint). And each step between consecutive
+// points longer than 2 tol must turn forward about the centre (by less than
+// half a turn): one more t per step, where the step points along the centre's
+// ray. The twin tests every root, the line,
 // t = 0 and t = +-sqrt(tol^2 - h^2), and as a second net `samples` values
 // t = h cot(phi) for phi uniform in (0, pi). A candidate is accepted when
 // every inner point passes the true test to tol (1 + 1e-9) plus 1e-12 of the

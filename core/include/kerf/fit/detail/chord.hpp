@@ -142,64 +142,18 @@ S arc_distance(const Chord<S>& chord, Vec2<S> d, int e, Vec2<S> p) {
   return Scalar<S>::sqrt(w.end2) / w.k;
 }
 
-// The order of a step. The arc must run the points in order: for
-// consecutive points p and q, p lies between a and q along the arc (its angle
-// from a, in the arc's direction, is at most q's). With P: p within half a
-// turn after a, Q: q within half a turn after a, X: q within half a turn
-// after p, each the sign of E (u - c) x (w - c), a half-plane in (cos phi,
-// sin phi),
-//   E (cross(v_u, v_w) sin(phi) - h cross(n, w - u) cos(phi)) >= 0,
-// the order is (Q and P and X) or (not Q and (P or X)): q's sub-arc from a is
-// minor, or major. A step of at most 2 eps, or one with an end within eps of
-// a or b, is exempt (points within eps of the arc may step back that far).
+// Does the step from p to q turn forward about the centre of direction d,
+// for the arc of E = e (fit/vertex/pair.hpp, constrain_step)? Steps of at
+// most 2 eps are exempt.
 template <class S>
-struct HalfPlane {
-  S c;
-  S s;
-  bool holds(Vec2<S> d) const { return !(c * d.x + s * d.y < S(0)); }
-};
-
-template <class S>
-struct StepOrder {
-  bool exempt;
-  HalfPlane<S> after_a;    // P
-  HalfPlane<S> q_after_a;  // Q
-  HalfPlane<S> after_p;    // X
-  bool holds(Vec2<S> d) const {
-    if (exempt) return true;
-    const bool pp = after_a.holds(d), xx = after_p.holds(d);
-    return q_after_a.holds(d) ? (pp && xx) : (pp || xx);
-  }
-};
-
-template <class S>
-HalfPlane<S> turn_plane(const Chord<S>& chord, Vec2<S> u, Vec2<S> w, S k, int e) {
-  const Vec2<S> vu = (u - chord.mid) * k;
-  const Vec2<S> vw = (w - chord.mid) * k;
-  const S c = -(chord.h * k) * chord.n.cross(vw - vu);
-  const S s = vu.cross(vw);
-  return e > 0 ? HalfPlane<S>{c, s} : HalfPlane<S>{-c, -s};
-}
-
-template <class S>
-StepOrder<S> step_order(const Chord<S>& chord, Vec2<S> p, Vec2<S> q, S eps, int e) {
+bool steps_forward(const Chord<S>& chord, Vec2<S> p, Vec2<S> q, S eps, int e, Vec2<S> d) {
   const S k = min_of(chord.local(p, eps).k, chord.local(q, eps).k);
   const Vec2<S> step = (q - p) * k;
   const S ee = eps * k;
-  StepOrder<S> o{};
-  o.exempt = !(step.norm2() > S(4) * ee * ee) || wedge_of(chord, p, eps, 1).exempt ||
-             wedge_of(chord, q, eps, 1).exempt;
-  if (o.exempt) return o;
-  o.after_a = turn_plane(chord, chord.a, p, k, e);
-  o.q_after_a = turn_plane(chord, chord.a, q, k, e);
-  o.after_p = turn_plane(chord, p, q, k, e);
-  return o;
-}
-
-// Does the arc of E = e on the circle of direction d run p then q in order?
-template <class S>
-bool steps_forward(const Chord<S>& chord, Vec2<S> p, Vec2<S> q, S eps, int e, Vec2<S> d) {
-  return step_order(chord, p, q, eps, e).holds(d);
+  if (!(step.norm2() > S(4) * ee * ee)) return true;
+  const S c = -(chord.h * k) * chord.n.cross(step);
+  const S s = ((p - chord.mid) * k).cross(step);
+  return !(S(e) * (c * d.x + s * d.y) < S(0));
 }
 
 // The circle (or line) chosen for one piece, as every fitting rule reports it.

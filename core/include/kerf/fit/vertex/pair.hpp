@@ -111,39 +111,24 @@ Status constrain_wedge(AngleSet<S>& set, const Chord<S>& chord, Vec2<S> p, S eps
   return intersect_half_plane(set, w.c, w.s);
 }
 
-// Narrows `set` to the arcs of E = e that run p then q in order
-// (fit/detail/chord.hpp, step_order): three half-planes, combined, so the
-// set is evaluated on the stretches between their edges.
+// The step from p to the next point q must turn forward about the centre,
+// by less than half a turn: E (p - c) x (q - p) >= 0, with c = mid + n h
+// cot(phi), times sin(phi): E (cross(v, q - p) sin(phi) - h cross(n, q - p)
+// cos(phi)) >= 0, v = p - mid. Points within eps of the arc may step back
+// when the step is at most 2 eps (both can be near one point of the arc), so
+// such a step is exempt. Without it an arc that runs the other way round a
+// path that winds (or a major arc that a path's first step skips round) has
+// every point within eps and still does not follow them.
 template <class S>
 Status constrain_step(AngleSet<S>& set, const Chord<S>& chord, Vec2<S> p, Vec2<S> q, S eps, int e) {
-  const StepOrder<S> o = step_order(chord, p, q, eps, e);
-  if (o.exempt) return Status::ok;
-  const HalfPlane<S> planes[3] = {o.after_a, o.q_after_a, o.after_p};
-  S at[5];  // the breakpoints: where each half-plane's edge meets phi, and the ends
-  std::size_t m = 0;
-  at[m++] = S(0);
-  at[m++] = S(2);
-  for (const HalfPlane<S>& h : planes)
-    if (!(h.c == S(0) && h.s == S(0))) at[m++] = pseudo_angle(Vec2<S>{h.s, -h.c});
-  for (std::size_t x = 1; x < m; ++x)
-    for (std::size_t y = x; y > 0 && at[y] < at[y - 1]; --y) {
-      const S t = at[y];
-      at[y] = at[y - 1];
-      at[y - 1] = t;
-    }
-  // Each breakpoint, and each open stretch between two, is in or out whole.
-  Interval<S> parts[10];
-  std::size_t n = 0;
-  auto add = [&](S lo, S hi) {
-    if (n > 0 && !(parts[n - 1].hi < lo)) parts[n - 1].hi = max_of(parts[n - 1].hi, hi);
-    else parts[n++] = {lo, hi};
-  };
-  for (std::size_t x = 0; x < m; ++x) {
-    if (o.holds(direction_of(at[x]))) add(at[x], at[x]);
-    if (x + 1 < m && at[x] < at[x + 1] && o.holds(direction_of((at[x] + at[x + 1]) / S(2))))
-      add(at[x], at[x + 1]);
-  }
-  return set.intersect(parts, n);
+  const S k = min_of(chord.local(p, eps).k, chord.local(q, eps).k);
+  const Vec2<S> v = (p - chord.mid) * k;
+  const Vec2<S> step = (q - p) * k;
+  const S ee = eps * k;
+  if (!(step.norm2() > S(4) * ee * ee)) return Status::ok;
+  const S c = -(chord.h * k) * chord.n.cross(step);
+  const S s = v.cross(step);
+  return e > 0 ? intersect_half_plane(set, c, s) : intersect_half_plane(set, -c, -s);
 }
 
 namespace detail {
