@@ -4,6 +4,7 @@
 #include "job/check_fit.hpp"
 #include "job/fit_fixed.hpp"
 
+#include <atomic>
 #include <cstdio>
 #include <type_traits>
 #include <utility>
@@ -116,9 +117,11 @@ bool fit_once(const std::vector<Vec2<double>>& pts, const std::vector<double>& t
   return true;
 }
 
-// A fit that fails its own check (the fitter's known blind spot: a path that
-// goes round the same circle twice passes every point's band with one arc)
-// is fitted again as two halves that share the middle point. Each half is
+std::atomic<std::size_t> splits{0};
+
+// A fit that fails its own check (a fitter bug: the band fitters' known
+// blind spot is a path that goes round the same circle twice, which passes
+// every point's band with one arc; counted by fit_job_splits) is fitted again as two halves that share the middle point. Each half is
 // within tol, so the whole is; only the piece count may exceed the minimum,
 // and only where the one-piece answer was wrong. A correct program is never
 // refused for it.
@@ -129,6 +132,7 @@ bool fit_split(const std::vector<Vec2<double>>& pts, const std::vector<double>& 
   const bool own_check = error.rfind("internal error:", 0) == 0;
   if (!own_check || depth >= 24 || pts.size() < 4 || (!tols.empty() && tols.size() != pts.size())) return false;
   if (split != nullptr) *split = true;
+  splits.fetch_add(1, std::memory_order_relaxed);
   const std::size_t m = pts.size() / 2;
   const auto half = [&](std::size_t from, std::size_t to, auto& v) {
     return std::vector<std::decay_t<decltype(v[0])>>(v.begin() + static_cast<std::ptrdiff_t>(from),
@@ -151,6 +155,8 @@ bool fit_split(const std::vector<Vec2<double>>& pts, const std::vector<double>& 
 }
 
 }  // namespace
+
+std::size_t fit_job_splits() { return splits.load(std::memory_order_relaxed); }
 
 bool fit_job(const std::vector<Vec2<double>>& pts, const std::vector<double>& tols, double tol,
              Criterion criterion, std::vector<fit::Piece<double>>& out,

@@ -5,6 +5,7 @@
 // band of --tol, on estimated tangents; job/biarc_job.hpp).
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -41,5 +42,10 @@ bool fit_job(const std::vector<Vec2<double>>& pts, const std::vector<double>& to
              Criterion criterion, std::vector<fit::Piece<double>>& out,
              std::string& error, Status& status, Numeric numeric = Numeric::floating,
              double tie_break = 0, bool* split = nullptr);
+
+// How many times fit_job has fitted a path again as two halves because its
+// fit failed its own check (its safety net; 0 on a sound fitter), since the
+// program started. For the tests.
+std::size_t fit_job_splits();
 
 }  // namespace kerf::job

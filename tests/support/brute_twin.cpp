@@ -11,12 +11,14 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 
 struct Inner {
+  double px, py;  // p
   double vx, vy;  // p - mid
   double a;       // |p - mid|^2 - h^2
   double b;       // (p - mid) . n
 };
 
 struct Frame {
+  double ax, ay, bx, by;  // the ends
   double mx, my;  // chord midpoint
   double nx, ny;  // unit left normal of p_i -> p_j
   double h;       // half chord
@@ -30,22 +32,85 @@ class PairTest {
     const VPoint& q = pts[j];
     const double dx = q.x - p.x, dy = q.y - p.y;
     const double len = std::hypot(dx, dy);
-    f_ = {(p.x + q.x) / 2, (p.y + q.y) / 2, -dy / len, dx / len, len / 2};
+    f_ = {p.x, p.y, q.x, q.y, (p.x + q.x) / 2, (p.y + q.y) / 2, -dy / len, dx / len, len / 2};
     for (std::size_t k = i + 1; k < j; ++k) {
       const double vx = pts[k].x - f_.mx, vy = pts[k].y - f_.my;
-      inner_.push_back({vx, vy, vx * vx + vy * vy - f_.h * f_.h, vx * f_.nx + vy * f_.ny});
+      inner_.push_back({pts[k].x, pts[k].y, vx, vy, vx * vx + vy * vy - f_.h * f_.h, vx * f_.nx + vy * f_.ny});
     }
+  }
+
+  // Every inner point within lim of the segment.
+  bool segment_ok() const {
+    for (const Inner& p : inner_) {
+      const double x = p.vx * f_.ny - p.vy * f_.nx;  // along the chord
+      const double d = std::abs(x) <= f_.h ? std::abs(p.b) : end_distance(p);
+      if (!(d <= lim_)) return false;
+    }
+    // Steps longer than 2 lim go forward along it.
+    double px = f_.ax, py = f_.ay;
+    for (std::size_t k = 0; k <= inner_.size(); ++k) {
+      const double qx = k < inner_.size() ? inner_[k].px : f_.bx;
+      const double qy = k < inner_.size() ? inner_[k].py : f_.by;
+      const double ex = qx - px, ey = qy - py, len = std::hypot(ex, ey);
+      if (len > 2 * lim_ && ex * f_.ny - ey * f_.nx < -1e-9 * len) return false;
+      px = qx;
+      py = qy;
+    }
+    return true;
+  }
+
+  double end_distance(const Inner& p) const {
+    return std::min(std::hypot(p.px - f_.ax, p.py - f_.ay), std::hypot(p.px - f_.bx, p.py - f_.by));
+  }
+
+  // Every inner point within lim of the arc of direction dir (+1 CCW) around
+  // the centre at offset t: inside its sweep (plain angles), or near an end.
+  // Every step between consecutive points (the ends included) longer than
+  // 2 lim turns forward about the centre, by less than half a turn.
+  bool arc_ok(double t, int dir) const {
+    const double cx = f_.mx + t * f_.nx, cy = f_.my + t * f_.ny;
+    const double a0 = std::atan2(f_.ay - cy, f_.ax - cx);
+    const double sweep = wrap(dir * (std::atan2(f_.by - cy, f_.bx - cx) - a0));
+    for (const Inner& p : inner_) {
+      if (wrap(dir * (std::atan2(p.py - cy, p.px - cx) - a0)) <= sweep) continue;
+      if (!(end_distance(p) <= lim_)) return false;
+    }
+    double px = f_.ax, py = f_.ay;
+    for (std::size_t k = 0; k <= inner_.size(); ++k) {
+      const double qx = k < inner_.size() ? inner_[k].px : f_.bx;
+      const double qy = k < inner_.size() ? inner_[k].py : f_.by;
+      const double ex = qx - px, ey = qy - py, len = std::hypot(ex, ey);
+      const double ux = px - cx, uy = py - cy;
+      if (len > 2 * lim_ && dir * (ux * ey - uy * ex) < -1e-9 * len * std::hypot(ux, uy)) return false;
+      px = qx;
+      py = qy;
+    }
+    return true;
+  }
+
+  // The centres from which the step from p to q points along the centre's
+  // ray from p (the step constraint's edges): (p - c) x (q - p) = 0.
+  void step_roots(std::vector<double>& out) const {
+    double px = f_.ax, py = f_.ay;
+    for (std::size_t k = 0; k <= inner_.size(); ++k) {
+      const double qx = k < inner_.size() ? inner_[k].px : f_.bx;
+      const double qy = k < inner_.size() ? inner_[k].py : f_.by;
+      const double ex = qx - px, ey = qy - py;
+      const double vx = px - f_.mx, vy = py - f_.my;
+      const double ne = f_.nx * ey - f_.ny * ex;
+      if (ne != 0) out.push_back((vx * ey - vy * ex) / ne);
+      px = qx;
+      py = qy;
+    }
+  }
+
+  static double wrap(double a) {
+    a = std::fmod(a, 2 * kPi);
+    return a < 0 ? a + 2 * kPi : a;
   }
 
   const Frame& frame() const { return f_; }
   const std::vector<Inner>& inner() const { return inner_; }
-
-  // Every inner point within lim of the line through the end points.
-  bool line_ok() const {
-    for (const Inner& p : inner_)
-      if (!(std::abs(p.b) <= lim_)) return false;
-    return true;
-  }
 
   // A quick filter for the dense net, with the circle given by t and r: the
   // same test squared, |p - c|^2 - r^2 = A - 2 t B against (r +- lim)^2, with
@@ -147,7 +212,7 @@ TwinCircle twin_pair(const std::vector<VPoint>& pts, std::size_t i, std::size_t 
 
   const double lim = tol * (1 + 1e-9) + 1e-12 * scale_of(pts);
   PairTest test(pts, i, j, lim);
-  if (test.line_ok()) {
+  if (test.segment_ok()) {
     res.feasible = true;
     res.line = true;
     return res;
@@ -155,9 +220,14 @@ TwinCircle twin_pair(const std::vector<VPoint>& pts, std::size_t i, std::size_t 
   const double h = test.frame().h;
   auto accept = [&](double t) {
     if (!test.circle_ok(t)) return false;
-    res.feasible = true;
-    res.t = t;
-    return true;
+    for (const int dir : {1, -1}) {
+      if (!test.arc_ok(t, dir)) continue;
+      res.feasible = true;
+      res.t = t;
+      res.dir = dir;
+      return true;
+    }
+    return false;
   };
 
   // The exact candidates: the end points of every point's allowed set.
@@ -177,7 +247,12 @@ TwinCircle twin_pair(const std::vector<VPoint>& pts, std::size_t i, std::size_t 
     const double c0 = d * d / 4 - tol * tol * h * h;
     const double disc = tol * tol * (d * d + 4 * h * h * c2);
     roots(c2, c1, c0, disc, cand);
+    // The centres from which p lies on the ray through p_i or through p_j.
+    const double x = p.vx * test.frame().ny - p.vy * test.frame().nx;
+    if (h + x != 0) cand.push_back(h * p.b / (h + x));
+    if (h - x != 0) cand.push_back(h * p.b / (h - x));
   }
+  test.step_roots(cand);
   for (double t : cand)
     if (accept(t)) return res;
 
@@ -239,16 +314,7 @@ std::vector<VPiece> twin_pieces(const std::vector<VPoint>& pts, const std::vecto
     p.arc = true;
     p.cx = (p.sx + p.ex) / 2 + c.t * nx;
     p.cy = (p.sy + p.ey) / 2 + c.t * ny;
-    double far = 0;  // signed offset of the inner point farthest from the chord
-    for (std::size_t q = i + 1; q < j; ++q) {
-      const double o = (pts[q].x - p.sx) * nx + (pts[q].y - p.sy) * ny;
-      if (std::abs(o) > std::abs(far)) far = o;
-    }
-    int bulge_left;  // the arc's side of the chord
-    if (std::abs(far) > tol || c.t == 0) bulge_left = far > 0 ? 1 : -1;
-    else bulge_left = c.t > 0 ? -1 : 1;  // the minor arc, away from the centre
-    // Bulging to the left of start -> end means turning clockwise.
-    p.dir = bulge_left > 0 ? -1 : 1;
+    p.dir = c.dir;
     out.push_back(p);
   }
   return out;

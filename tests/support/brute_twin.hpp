@@ -11,7 +11,14 @@
 // B = (p - mid).n, (A - tol^2 - 2 t B)^2 = 4 tol^2 (h^2 + t^2): a quadratic
 // in t. The feasible set of the pair is the intersection over the inner
 // points, so if it is not empty it contains one of those roots (or it
-// reaches t -> +-infinity, the line). The twin tests every root, the line,
+// reaches t -> +-infinity, the line). A point counts as near the piece when
+// it is near the arc itself, not only its circle (inside the arc's sweep, or
+// within tol of an end): that adds, per point, the two t at which it lies on
+// the ray from the centre through p_i or p_j, t = h y / (h +- x) (x along the
+// chord, y across it, from the midpoint). And each step between consecutive
+// points longer than 2 tol must turn forward about the centre (by less than
+// half a turn): one more t per step, where the step points along the centre's
+// ray. The twin tests every root, the line,
 // t = 0 and t = +-sqrt(tol^2 - h^2), and as a second net `samples` values
 // t = h cot(phi) for phi uniform in (0, pi). A candidate is accepted when
 // every inner point passes the true test to tol (1 + 1e-9) plus 1e-12 of the
@@ -29,6 +36,7 @@ struct TwinCircle {
   bool feasible = false;
   bool line = false;  // accepted as the line through p_i and p_j
   double t = 0;       // else the accepted centre's offset along the bisector
+  int dir = 0;        // and the E of the arc that passes (+1 CCW, -1 CW)
 };
 
 // Is the piece p_i -> p_j (i < j) feasible at tol? Also says which circle passed.
@@ -43,8 +51,7 @@ struct TwinResult {
 TwinResult twin_min_count(const std::vector<VPoint>& pts, double tol, int samples = 2048);
 
 // The twin's own pieces along a path (each pair feasible at tol), as verifier
-// pieces: lines, or arcs around the accepted centre, running through the
-// inner points (E from the side of the inner point farthest from the chord).
+// pieces: lines, or arcs around the accepted centre, in the accepted direction.
 std::vector<VPiece> twin_pieces(const std::vector<VPoint>& pts, const std::vector<std::size_t>& path,
                                 double tol, int samples = 2048);
 

@@ -57,17 +57,34 @@ double scale_of(const std::vector<VPoint>& pts) {
   return d > 0 ? d : 1.0;
 }
 
+double arc_distance(const VPoint& p, const VPiece& pc) {
+  const double to_start = std::hypot(p.x - pc.sx, p.y - pc.sy);
+  const double to_end = std::hypot(p.x - pc.ex, p.y - pc.ey);
+  const double ends = std::min(to_start, to_end);
+  if (!pc.arc) {
+    const double dx = pc.ex - pc.sx, dy = pc.ey - pc.sy;
+    const double t = ((p.x - pc.sx) * dx + (p.y - pc.sy) * dy) / (dx * dx + dy * dy);
+    if (t < 0 || t > 1) return ends;
+    return std::abs(line_offset(p.x, p.y, pc.sx, pc.sy, pc.ex, pc.ey));
+  }
+  const double a0 = std::atan2(pc.sy - pc.cy, pc.sx - pc.cx);
+  const double a1 = std::atan2(pc.ey - pc.cy, pc.ex - pc.cx);
+  const double ap = std::atan2(p.y - pc.cy, p.x - pc.cx);
+  const double sweep = pc.dir > 0 ? wrap_2pi(a1 - a0) : wrap_2pi(a0 - a1);
+  const double pos = pc.dir > 0 ? wrap_2pi(ap - a0) : wrap_2pi(a0 - ap);
+  const double circle = std::abs(circle_offset(p.x, p.y, pc.sx, pc.sy, pc.cx, pc.cy));
+  return pos <= sweep ? circle : std::max(circle, ends);
+}
+
 double piece_error(const std::vector<VPoint>& pts, const VPiece& pc) {
   double worst = 0;
-  for (std::size_t k = pc.first + 1; k < pc.last && k < pts.size(); ++k) {
-    const double d = pc.arc ? circle_offset(pts[k].x, pts[k].y, pc.sx, pc.sy, pc.cx, pc.cy)
-                            : line_offset(pts[k].x, pts[k].y, pc.sx, pc.sy, pc.ex, pc.ey);
-    worst = std::max(worst, std::abs(d));
-  }
+  for (std::size_t k = pc.first + 1; k < pc.last && k < pts.size(); ++k)
+    worst = std::max(worst, arc_distance(pts[k], pc));
   return worst;
 }
 
-VerifyReport verify(const std::vector<VPoint>& pts, const std::vector<VPiece>& pieces, double tol) {
+VerifyReport verify(const std::vector<VPoint>& pts, const std::vector<VPiece>& pieces, double tol,
+                    Reach reach) {
   std::ostringstream why;
   why.precision(17);
   auto fail = [&](std::size_t k) -> std::ostringstream& {
@@ -154,6 +171,16 @@ VerifyReport verify(const std::vector<VPoint>& pts, const std::vector<VPiece>& p
       if (!(std::abs(d) <= lim)) {
         fail(k) << "inner point " << q << " is " << std::abs(d) << " from the "
                 << (pc.arc ? "circle" : "line") << ", tol " << tol;
+        return report();
+      }
+    }
+
+    // Within tol of the arc itself (each point's side of the sweep).
+    for (std::size_t q = pc.first + 1; q < pc.last && reach == Reach::arc; ++q) {
+      const double d = arc_distance(pts[q], pc);
+      if (!(d <= lim)) {
+        fail(k) << "inner point " << q << " is " << d << " from the " << (pc.arc ? "arc" : "segment")
+                << " (outside its sweep), tol " << tol;
         return report();
       }
     }

@@ -13,7 +13,8 @@
 //     1e-12 of the input's scale;
 //   - the arc runs through its inner points: the inner point farthest from the
 //     chord, if more than tol from it, lies (about the centre) inside the sweep
-//     from start to end in direction E, with tol / radius of angular slack.
+//     from start to end in direction E, with tol / radius of angular slack;
+//   - with Reach::arc, every inner point is within tol of the arc (segment).
 #pragma once
 
 #include <cstddef>
@@ -45,9 +46,19 @@ struct VerifyReport {
   std::string why;  // the first problem found, empty when ok
 };
 
-VerifyReport verify(const std::vector<VPoint>& pts, const std::vector<VPiece>& pieces, double tol);
+// How far an inner point may be: from the piece's full circle (or infinite
+// line), the ESGI rules' measure, or from the arc (or segment) itself, the
+// optimal vertex fit's: inside the arc's sweep the distance to the circle,
+// outside it the distance to the nearer end.
+enum class Reach { circle, arc };
 
-// The largest distance of the piece's inner points to its circle (or line).
+VerifyReport verify(const std::vector<VPoint>& pts, const std::vector<VPiece>& pieces, double tol,
+                    Reach reach = Reach::circle);
+
+// The distance of p to the piece's arc (or segment).
+double arc_distance(const VPoint& p, const VPiece& piece);
+
+// The largest distance of the piece's inner points to its arc (or segment).
 double piece_error(const std::vector<VPoint>& pts, const VPiece& piece);
 
 // The length of the diagonal of the points' bounding box.

@@ -289,7 +289,7 @@ void check(const std::string& what, const std::vector<VPoint>& pts, double tol) 
 
   // The twin's own path holds up under the verifier (checks twin and verifier).
   const auto twin_out = kerf_test::twin_pieces(pts, twin.path, tol);
-  const kerf_test::VerifyReport tv = kerf_test::verify(pts, twin_out, tol);
+  const kerf_test::VerifyReport tv = kerf_test::verify(pts, twin_out, tol, kerf_test::Reach::arc);
   EXPECT_TRUE(tv.ok) << "twin's path fails the verifier: " << tv.why;
 
   CoreFitter f(pts);
@@ -312,7 +312,7 @@ void check(const std::string& what, const std::vector<VPoint>& pts, double tol) 
     EXPECT_LE(r.value().max_error, tol);
     EXPECT_EQ(r.value().tol, tol);
     const auto pieces = f.pieces(r.value().pieces);
-    const kerf_test::VerifyReport v = kerf_test::verify(pts, pieces, tol);
+    const kerf_test::VerifyReport v = kerf_test::verify(pts, pieces, tol, m == Method::optimal ? kerf_test::Reach::arc : kerf_test::Reach::circle);
     EXPECT_TRUE(v.ok) << v.why;
     double worst = 0, slack = 0;
     for (std::size_t k = 0; k < pieces.size(); ++k) {

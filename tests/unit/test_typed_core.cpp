@@ -11,6 +11,7 @@
 
 #include "kerf/geom/circle.hpp"
 #include "kerf/geom/segment.hpp"
+#include "job/check_fit.hpp"
 #include "kerf/motion/interpolator.hpp"
 #include "typed_core_helpers.hpp"
 
@@ -145,6 +146,48 @@ TYPED_TEST(TypedCore, AirfoilVertexCountsMatchDoubleAndVerifyInDouble) {
       EXPECT_EQ(got.value().pieces, want.value().pieces) << code << " tol " << tol;
       EXPECT_LE(worst_excess(pd, buf, got.value().pieces, tol), slack<S>(512) + 1e-9 * tol)
           << code << " tol " << tol;
+    }
+  }
+}
+
+// Points near a piece's circle but on its other arc, from
+// tests/data/gcode/cncjs_tball-pocket.gcode (issue 25). The zigzag: the
+// circle through its ends passes within tol of the two inner points, on the
+// arc the piece does not run. The hook: a long step, then a short one back
+// past the end; only the major arc through all three has them in its sweep,
+// and its first step skips 343 degrees round: two pieces. The vertex fit
+// measured to the circle and failed kerf's own check on both.
+TYPED_TEST(TypedCore, VertexFitMeasuresToTheArcNotToItsCircle) {
+  using S = TypeParam;
+  struct ArcCase {
+    const char* name;
+    std::vector<VD> pts;
+    std::uint32_t pieces;
+  };
+  const ArcCase cases[] = {
+      {"zigzag", {{79.5450, -52.2490}, {79.4614, -52.3628}, {80.4832, -53.1169}, {80.3877, -53.2457}}, 2},
+      {"hook", {{116.1360, -95.0597}, {102.4685, -109.4526}, {102.7496, -109.2324}}, 2},
+  };
+  for (const ArcCase& c : cases) {
+    for (const double tol : {0.01, 0.025, 0.05, 0.1}) {
+      kerf::test::FitBuffers<S> buf(c.pts.size());
+      const auto got = fit_curve<S>(c.pts, tol, Method::optimal, buf);
+      ASSERT_TRUE(got.ok()) << c.name << " tol " << tol;
+      EXPECT_EQ(got.value().pieces, c.pieces) << c.name << " tol " << tol;
+      EXPECT_LE(worst_excess(c.pts, buf, got.value().pieces, tol), slack<S>(128) + 1e-9 * tol)
+          << c.name << " tol " << tol;
+      std::vector<kerf::fit::Piece<double>> pd;
+      for (std::uint32_t k = 0; k < got.value().pieces; ++k) {
+        const auto& pc = buf.pieces[k];
+        kerf::Segment<double> seg = to_d(pc.segment);
+        seg.start = c.pts[pc.first];  // exactly on the input points, as kerf fit writes them
+        seg.end = c.pts[pc.last];
+        pd.push_back({pc.first, pc.last, seg, to_d(pc.error)});
+      }
+      EXPECT_EQ(kerf::job::check_fit({c.pts.data(), c.pts.size()}, {pd.data(), pd.size()},
+                                     tol + slack<S>(128)),
+                "")
+          << c.name << " tol " << tol;
     }
   }
 }

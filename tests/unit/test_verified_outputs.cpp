@@ -59,7 +59,8 @@ TEST_P(VerifiedOutputs, FewestPiecesAtFixedTolerances) {
       ASSERT_TRUE(r.ok()) << kerf::to_string(r.status());
       EXPECT_EQ(r.value().pieces, c.value());
       EXPECT_LE(r.value().max_error, tol);
-      const kerf_test::VerifyReport v = kerf_test::verify(pts, f.pieces(r.value().pieces), tol);
+      const kerf_test::VerifyReport v = kerf_test::verify(pts, f.pieces(r.value().pieces), tol,
+                                                               m == Method::optimal ? kerf_test::Reach::arc : kerf_test::Reach::circle);
       EXPECT_TRUE(v.ok) << v.why;
       if (m == Method::optimal) optimal = r.value().pieces;
       else EXPECT_GE(r.value().pieces, optimal) << "a heuristic beat the optimum";
@@ -85,7 +86,8 @@ TEST_P(VerifiedOutputs, SmallestToleranceForABudgetIsVerifiedAndMinimal) {
       // The pieces' errors are measured after the search: equal to tol up to
       // rounding (1e-9 relative, the verifier's own allowance).
       EXPECT_LE(r.value().max_error, tol * (1 + 1e-9));
-      const kerf_test::VerifyReport v = kerf_test::verify(pts, f.pieces(r.value().pieces), tol);
+      const kerf_test::VerifyReport v = kerf_test::verify(pts, f.pieces(r.value().pieces), tol,
+                                                               m == Method::optimal ? kerf_test::Reach::arc : kerf_test::Reach::circle);
       EXPECT_TRUE(v.ok) << v.why << " (at the returned tol " << tol << ")";
       // Minimal: just below the returned tol the budget no longer suffices
       // (unless the search stopped at its floor: the data are exact).

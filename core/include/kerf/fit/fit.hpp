@@ -24,7 +24,7 @@ struct Piece {
   std::uint32_t first = 0;  // index of the start point
   std::uint32_t last = 0;   // index of the end point
   Segment<S> segment{};
-  S error{};                // largest distance of an inner point to the circle (or line)
+  S error{};                // largest distance of an inner point to the piece (arc or segment)
 };
 
 template <class S>

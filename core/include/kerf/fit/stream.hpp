@@ -418,7 +418,7 @@ struct VertexCriterion {
     const PieceFit<S> f = choose_piece(pts, i, j, eps, method, s);
     const Chord<S> chord(pts[i], pts[j]);
     const Vec2<S> centre = f.line ? Vec2<S>{} : chord.centre(f.direction);
-    return Piece<S>{i, j, make_segment(chord, pts + i + 1, j - i - 1, f.line, centre, eps), f.error};
+    return Piece<S>{i, j, make_segment(chord, pts + i + 1, j - i - 1, f.line, centre, eps, f.dir), f.error};
   }
 };
 

@@ -95,12 +95,74 @@ struct Chord {
   }
 };
 
+// The arc's wedge (the angle at the centre that the arc spans). Of the two
+// arcs from a to b on the circle of direction d = (cos phi, sin phi), the one
+// of E = +1 bulges to the right of a -> b (counter-clockwise, half-sweep phi)
+// and the one of E = -1 to the left (clockwise, half-sweep pi - phi). With
+// p = mid + x u + y n (u along a -> b), p lies in the wedge of the arc of E iff
+//   E ((h - |x|) cos phi - y sin phi) >= 0,
+// a half-plane in (cos phi, sin phi). Why: p is on the arc's side of the ray
+// from the centre through a iff (h + x) cos phi - y sin phi >= 0 (the cross
+// product (a - c) x (p - c) times sin(phi) / h), through b iff (h - x) cos phi
+// - y sin phi >= 0; a minor arc's wedge (cos phi >= 0) is both, a major one's
+// either, and in both cases the one that binds is the end on p's side of the
+// bisector. At phi = 0 the arc of E = +1 is the segment ab (|x| <= h); the
+// arc of E = -1 there is the rest of the line. A point within eps of a or b
+// is within eps of every arc from a to b: it is exempt.
+template <class S>
+struct Wedge {
+  S c;      // p is in the wedge iff c cos(phi) + s sin(phi) >= 0
+  S s;
+  bool exempt;
+  S end2;   // the squared distance to the nearer end, on local terms
+  S k;      // the local scale (Chord::local)
+};
+
+template <class S>
+Wedge<S> wedge_of(const Chord<S>& chord, Vec2<S> p, S eps, int e) {
+  const typename Chord<S>::Local l = chord.local(p, eps);
+  const Vec2<S> u{chord.n.y, -chord.n.x};
+  const S x = Scalar<S>::abs(l.v.dot(u));
+  const S y = l.v.dot(chord.n);
+  const S gap = x - l.h;
+  const S ee = eps * l.k;
+  const S end2 = gap * gap + y * y;
+  const S c = e > 0 ? l.h - x : x - l.h;
+  const S s = e > 0 ? -y : y;
+  return {c, s, !(end2 > ee * ee), end2, l.k};
+}
+
+// Distance of p to the arc of E = e on the circle of direction d (for d =
+// (1, 0) and e = +1: the segment): to the circle inside the arc's wedge, else
+// to the nearer end.
+template <class S>
+S arc_distance(const Chord<S>& chord, Vec2<S> d, int e, Vec2<S> p) {
+  const Wedge<S> w = wedge_of(chord, p, S(0), e);
+  if (w.exempt || !(w.c * d.x + w.s * d.y < S(0))) return chord.distance(d, p);
+  return Scalar<S>::sqrt(w.end2) / w.k;
+}
+
+// Does the step from p to q turn forward about the centre of direction d,
+// for the arc of E = e (fit/vertex/pair.hpp, constrain_step)? Steps of at
+// most 2 eps are exempt.
+template <class S>
+bool steps_forward(const Chord<S>& chord, Vec2<S> p, Vec2<S> q, S eps, int e, Vec2<S> d) {
+  const S k = min_of(chord.local(p, eps).k, chord.local(q, eps).k);
+  const Vec2<S> step = (q - p) * k;
+  const S ee = eps * k;
+  if (!(step.norm2() > S(4) * ee * ee)) return true;
+  const S c = -(chord.h * k) * chord.n.cross(step);
+  const S s = ((p - chord.mid) * k).cross(step);
+  return !(S(e) * (c * d.x + s * d.y) < S(0));
+}
+
 // The circle (or line) chosen for one piece, as every fitting rule reports it.
 template <class S>
 struct PieceFit {
   bool line = true;
   Vec2<S> direction{S(1), S(0)};  // unit (cos phi, sin phi); (1, 0) is the line
   S error{};                      // the largest distance of an inner point
+  int dir = 0;  // the arc's E (+1 CCW, -1 CW) when the rule chose it; 0: make_segment's rule
 };
 
 // True when a and b are too close for their chord to define a pencil of
@@ -119,10 +181,13 @@ bool closes_on_itself(Vec2<S> a, Vec2<S> b) {
 // farthest from the chord. If every inner point is within tol of the chord
 // (or there is none), it is the minor arc, which bulges away from the centre.
 // Bulging to the right of a->b means turning counter-clockwise: E = +1.
+// `dir`, when not 0, is the E that the rule chose (the vertex criterion's
+// exact arc test knows which of the circle's two arcs passes the points).
 template <class S>
 Segment<S> make_segment(const Chord<S>& chord, const Vec2<S>* inner, unsigned count, bool line,
-                        Vec2<S> centre, S tol) {
+                        Vec2<S> centre, S tol, int dir = 0) {
   if (line) return Segment<S>::line(chord.a, chord.b);
+  if (dir != 0) return Segment<S>::arc(chord.a, chord.b, centre, dir);
   S far = S(0);
   for (unsigned k = 0; k < count; ++k) {
     const S o = chord.offset(inner[k]);

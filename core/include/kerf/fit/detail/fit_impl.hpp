@@ -31,7 +31,7 @@ struct Oracle {
       return ok;
     }
     const EsgiRule rule = method == Method::esgi_max ? EsgiRule::max : EsgiRule::mean;
-    return !(esgi_arc(rule, pts, i, j, eps, eps).error > eps);
+    return !(esgi_arc(rule, pts, i, j, eps, eps, eps).error > eps);
   }
   bool alive(std::uint32_t i, std::uint32_t j) const { return prefix_guard(pts, i, j, eps); }
 };
@@ -140,7 +140,7 @@ PieceFit<S> choose_piece(const Vec2<S>* p, std::uint32_t i, std::uint32_t j, S e
                         AngleSet<S>& set) {
   if (method == Method::optimal) return best_vertex_pair(p, i, j, eps, set);
   const EsgiRule rule = method == Method::esgi_max ? EsgiRule::max : EsgiRule::mean;
-  return esgi_arc(rule, p, i, j, Scalar<S>::infinity(), S(-1));
+  return esgi_arc(rule, p, i, j, Scalar<S>::infinity(), S(-1), eps);
 }
 
 // Runs the search at eps within `pieces` and writes the path's pieces, in
@@ -165,7 +165,7 @@ Result<Fit<S>> build(Span<const Vec2<S>> original, Scaled<S> sc, S eps, std::uin
     const PieceFit<S> f = choose_piece(p, i, j, eps, method, set);
     const Chord<S> chord(p[i], p[j]);
     const Vec2<S> centre = f.line ? Vec2<S>{} : chord.centre(f.direction);
-    Segment<S> seg = make_segment(chord, p + i + 1, j - i - 1, f.line, centre, eps);
+    Segment<S> seg = make_segment(chord, p + i + 1, j - i - 1, f.line, centre, eps, f.dir);
     seg.start = original[i];
     seg.end = original[j];
     seg.centre = seg.centre * unscale;
@@ -238,6 +238,11 @@ Result<Fit<S>> fit_min_count(Span<const Vec2<S>> pts, S tol, Method method, Work
   const Result<S> best = detail::bisect_tol(sc.pts, count.value(), method, ws, tol * sc.factor, tie_break, true);
   if (!best.ok()) return best.status();
   Result<Fit<S>> fit = detail::build(pts, sc, best.value(), count.value(), method, ws, out);
+  // At the tie-break's tol the verdicts sit on their boundary, where rounding
+  // (kerf::Fixed far from the origin) may undo the count the bisection saw:
+  // then the fit at tol itself, whose count was just found.
+  if (!fit.ok() && fit.status() == Status::infeasible)
+    fit = detail::build(pts, sc, tol * sc.factor, count.value(), method, ws, out);
   if (fit.ok()) fit.value().tol = tol;
   return fit;
 }
