@@ -50,11 +50,11 @@ int run_job(const RunOptions& opts, const char* who, RunCheck check, LinesOpener
   // read; a bad job that fits in the ring is refused here, before anything moves.
   // Where the machine stands is not known before the link is up, so the first
   // travel is checked from the first pierce point on.
+  control::StreamedJob streamed;
+  if (const int rc = open_streamed(cfg, opts.job, opts.dry_run, says.c_str(), streamed); rc != 0) return rc;
   if (!control::fully_limited(cfg.machine))
     std::fprintf(stderr, "%s: %s: machine.axis: x and y need min and max (soft limits): the job is not checked "
                          "against the table\n", says.c_str(), cfg.file.c_str());
-  control::StreamedJob streamed;
-  if (const int rc = open_streamed(cfg, opts.job, opts.dry_run, says.c_str(), streamed); rc != 0) return rc;
   // Before anything moves: where the machine is must be known.
   job::MachineState state;
   if (!cfg.machine.state.empty() && !job::load_machine_state(cfg.machine.state, state, error)) {
