@@ -174,6 +174,28 @@ TEST(StreamedJob, TheSourceGivesTheWholeJobsCommandsOnTheCorpus) {
   EXPECT_GT(moves, 0u);
 }
 
+// Point files (paths separated by blank lines), read path by path: the whole job's segments.
+TEST(StreamedJob, PointFilesStreamTheWholeJobsSegments) {
+  std::vector<std::string> files;
+  for (const auto& e : fs::directory_iterator(KERF_EXAMPLES_DIR))
+    if (e.path().extension() == ".txt") files.push_back(e.path().string());
+  std::sort(files.begin(), files.end());
+  ASSERT_GE(files.size(), 2u);
+  std::size_t paths = 0;
+  for (const std::string& file : files) {
+    const control::StreamedJobSetup s = setup(false, false);
+    const control::FittedJob f = whole(file, s);
+    control::WholeJobSource oracle(f.job);
+    control::StreamedJob streamed;
+    std::string error;
+    ASSERT_EQ(streamed.open(file, s, error), 0) << error;
+    ASSERT_EQ(streamed.prime(error), 0) << error;
+    EXPECT_EQ(drain(streamed.source()), drain(oracle)) << file;
+    paths += f.job.paths.size();
+  }
+  EXPECT_GT(paths, files.size()) << "some file has many paths";
+}
+
 simulated::SimMachineResult run(control::JobSource& source, control::MemoryOutputs& outputs,
                                 control::Journal* journal = nullptr, const control::ResumePoint& from = {},
                                 std::vector<simulated::BoardFault> faults = {}) {
