@@ -63,8 +63,7 @@ Controller::Controller(const Job& job, const ControllerConfig& cfg, hal::Segment
 Controller::~Controller() = default;  // the writer's destructor writes what is queued
 
 void Controller::start(const ResumePoint& from) {
-  const std::size_t n = job_.segment_count();
-  path_count_ = job_.path_count();
+  const std::size_t n = job_.segment_count();  // JobSource::kUnknownCount for a stream not yet ended
   // The writer thread from the first start on (a restart after a reset keeps it).
   const bool journal_done = journal_ != nullptr && writer_ == nullptr && journal_->state().finished;
   if (journal_ && !cfg_.journal_inline && !writer_) writer_ = std::make_unique<JournalWriter>(*journal_, cfg_.journal_queue);
@@ -108,13 +107,13 @@ void Controller::start(const ResumePoint& from) {
     report_.last_completed = static_cast<std::int64_t>(next_seg_);
     ++report_.completed_this_run;
     ++next_seg_;
-    if (next_seg_ == n) {
+    if (next_seg_ < job_.segment_count()) at = job_.locate(next_seg_);  // a stream may meet its end there
+    if (next_seg_ >= job_.segment_count()) {
       state_ = State::done;
       finished_ = true;
       if (journal_) journal_finished();
       return;
     }
-    at = job_.locate(next_seg_);
     pierce_at_ = at.start;
   }
   path_ = at.path;
@@ -127,7 +126,7 @@ void Controller::start(const ResumePoint& from) {
   if (!actions_.replay_outputs(first_actions_ ? path_ : path_ + 1) && stop_request_.empty())
     stop_request_ = actions_.error();  // a fault in the first cycle, before anything moves
   if (*job_.error() != '\0' && stop_request_.empty()) stop_request_ = std::string("job: ") + job_.error();  // locate() failed
-  report_.actions.reserve(path_count_ + 8);
+  report_.actions.reserve(std::min<std::size_t>(job_.path_count(), 4096) + 8);
 }
 
 void Controller::cycle(double now_s) {
@@ -313,7 +312,7 @@ void Controller::begin_travel(Vec2<double> to) {
   // (rounded to counts): a path that starts where the last one ended needs
   // no travel, and a travel a fraction of a count long would be empty on the board.
   Vec2<double> at = has_tail_ ? tail_ : st_.position;
-  if (path_ < path_count_) queue_moves(*head_->before, at);
+  if (path_ < job_.path_count()) queue_moves(*head_->before, at);
   if (distance(at, to) > kSamePoint) {
     hal::SegmentCommand c;
     c.kind = SegmentKind::line;

@@ -205,7 +205,6 @@ class Controller {
   std::unique_ptr<JobSource> owned_;  // the whole-job constructor's
   JobSource& job_;
   const PathHead* head_ = nullptr;  // the open path (path_)
-  std::size_t path_count_ = 0;
   ControllerConfig cfg_;
   hal::SegmentLink& link_;
   hal::Gpio& gpio_;

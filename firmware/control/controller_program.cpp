@@ -5,9 +5,12 @@
 namespace kerf::control {
 
 bool Controller::open_path() {
-  if (path_ >= path_count_ || head_ != nullptr) return true;  // past the last, or open (start())
+  if (path_ >= job_.path_count() || head_ != nullptr) return true;  // past the last, or open (start())
   head_ = job_.open(path_);
-  if (head_ == nullptr) return false;
+  if (head_ == nullptr) {
+    if (*job_.error() != '\0' && stop_request_.empty()) stop_request_ = std::string("job: ") + job_.error();
+    return path_ >= job_.path_count();  // a stream that has just met its end: no path `path_`
+  }
   pierce_at_ = head_->start;
   return true;
 }
@@ -30,12 +33,12 @@ void Controller::run_actions_or_travel(double now_s) {
 
 void Controller::actions_done(double now_s) {
   report_.actions = actions_.log();
-  if (path_ < path_count_) begin_travel(pierce_at_);
+  if (path_ < job_.path_count()) begin_travel(pierce_at_);
   else finish_job(now_s);
 }
 
 double Controller::pierce_delay() const {
-  const double d = path_ < path_count_ ? head_->pierce_delay_s : -1.0;
+  const double d = path_ < job_.path_count() ? head_->pierce_delay_s : -1.0;
   return d >= 0.0 ? d : cfg_.pierce_delay_s;
 }
 

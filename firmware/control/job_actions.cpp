@@ -51,13 +51,15 @@ void ActionRunner::begin(std::size_t path, double now_s) {
 bool ActionRunner::replay_outputs(std::size_t path) {
   // From the program's start: a stop turned every output off, and a restart
   // after a reset (controller_safety.cpp) replays them all.
-  next_ = 0;
   error_.clear();
   bool ok = true;
-  for (const JobAction* a = job_.action(next_); a != nullptr && a->before_path < path; a = job_.action(++next_)) {
+  for (std::size_t i = 0;; ++i) {
+    const JobAction* a = job_.replay_output(path, i);
+    if (a == nullptr) break;
     if (a->kind == job::CanonKind::digital_out) ok = set_digital(a->index, a->value != 0) && ok;
     if (a->kind == job::CanonKind::analog_out) ok = set_analog(a->index, a->value) && ok;
   }
+  next_ = job_.first_action();  // begin() goes on from there to the path's own actions
   return ok;
 }
 

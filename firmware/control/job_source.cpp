@@ -50,6 +50,18 @@ const JobAction* WholeJobSource::action(std::size_t a) {
   return a < job_.actions.size() ? &job_.actions[a] : nullptr;
 }
 
+const JobAction* JobSource::replay_output(std::size_t path, std::size_t i) {
+  if (i == 0) replay_action_ = replay_index_ = 0;
+  for (const JobAction* a = action(replay_action_); a != nullptr && a->before_path < path; a = action(++replay_action_)) {
+    if (a->kind != job::CanonKind::digital_out && a->kind != job::CanonKind::analog_out) continue;
+    if (replay_index_++ == i) {
+      ++replay_action_;
+      return a;
+    }
+  }
+  return nullptr;
+}
+
 ResumePoint resume_point(JobSource& source, const JournalState& state) {
   ResumePoint r;
   r.first = static_cast<std::size_t>(state.last_completed + 1);
@@ -58,6 +70,10 @@ ResumePoint resume_point(JobSource& source, const JournalState& state) {
     return r;
   }
   r.from = source.locate(r.first).start;
+  if (r.first >= source.segment_count()) {  // a stream met its end before r.first
+    r.done = true;
+    return r;
+  }
   if (state.has_cut_to && state.cut_to.segment == r.first) r.from = state.cut_to.at;
   return r;
 }

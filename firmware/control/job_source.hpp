@@ -46,8 +46,10 @@ enum class Pull : std::uint8_t { ready, later, end, error };
 class JobSource {
  public:
   virtual ~JobSource() = default;
-  // The journal's identity of the job, and its size (a stream knows them
-  // from its first pass over the file, before anything moves).
+  // The journal's identity of the job, and its size: a stream knows its
+  // size only once its producer has ended (kUnknownCount, the largest
+  // size_t, until then; the job is done when the source ends).
+  static constexpr std::size_t kUnknownCount = static_cast<std::size_t>(-1);
   virtual JobId id() const = 0;
   virtual std::size_t segment_count() const = 0;
   virtual std::size_t path_count() const = 0;
@@ -55,9 +57,11 @@ class JobSource {
   // reserves its travel queue once, at start).
   virtual std::size_t max_moves() const = 0;
   // Job segment k (< segment_count()); its path becomes the one open() gives next.
+  // A stream whose job ends before k: segment_count() is then known (<= k).
   virtual SegmentPlace locate(std::size_t k) = 0;
   // Path p's head, p the path locate() gave or the one after the last opened;
-  // null: not available yet (the controller waits at rest and asks again).
+  // null: not available yet (the controller waits at rest and asks again),
+  // or no such path (path_count() then says p is past the last), or error().
   // Never null for the path locate() gave (locate() waits for it).
   // The head and its lists stay valid until the next open() or locate().
   virtual const PathHead* open(std::size_t p) = 0;
@@ -68,8 +72,18 @@ class JobSource {
   // or after the last); null past the last. Available: every action before
   // the open path, and the outputs (M62..M68) before it, for a restart's replay.
   virtual const JobAction* action(std::size_t a) = 0;
+  // The i-th output (M62..M68) a restart sets again before path `path`, i
+  // counting from 0 in order; null past the last. The default: each output
+  // action before the path, in program order (a stream keeps each output's
+  // latest value instead: control/stream_job_source.hpp).
+  virtual const JobAction* replay_output(std::size_t path, std::size_t i);
+  // The oldest action number action() still gives (a stream keeps the last few).
+  virtual std::size_t first_action() const { return 0; }
   // After Pull::error: "FILE:LINE: reason".
   virtual const char* error() const { return ""; }
+
+ private:
+  std::size_t replay_action_ = 0, replay_index_ = 0;  // the default replay_output's place
 };
 
 // The source over a whole Job in memory (not owned; it must outlive the source).

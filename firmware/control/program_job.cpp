@@ -10,8 +10,6 @@
 
 namespace kerf::control {
 
-namespace {
-
 // z axis: the program's moves between paths as link commands (torch off;
 // feed 0 means rapid, which the controller fills in; a z move's XY is set
 // when it is sent). XY ends go on the link's grid, as the fitted paths' do:
@@ -32,7 +30,42 @@ void append_moves(const std::vector<job::ProgramMove>& moves, double max_feed_mm
   }
 }
 
-}  // namespace
+int fit_program_path(const io::PointFile& one, const std::vector<double>& feed, const job::ProgramPath& pp,
+                     std::size_t p, const PathFitSettings& s, FittedJob& f, std::string& error) {
+  // The path alone through fit_paths, at its own tolerance: the same fit
+  // and the same segments on the link's grid as a point file's.
+  Status status = Status::ok;
+  const double tol = pp.tol > 0 ? std::min(pp.tol, s.tol) : s.tol;
+  if (!fit_paths(one, s.criterion, tol, s.feed_mm_s, f, error, status, s.numeric)) {
+    if (f.job.paths.empty() && status == Status::invalid_argument && error.find("shorter than the link") != std::string::npos) {
+      f = FittedJob{};  // a path shorter than a count: nothing to cut; its moves go on
+      error.clear();
+      return 0;
+    }
+    if (error.compare(0, 7, "path 1 ") == 0) error = "path " + std::to_string(p + 1) + error.substr(6);
+    return status == Status::invalid_argument || status == Status::degenerate ? 2 : 1;
+  }
+  // Each segment at the slowest feed programmed along its piece (mm/min per point; 0: the default).
+  auto feed_of = [&](const fit::Piece<double>& piece) {
+    double v = 0;
+    for (std::size_t k = piece.first + 1; k <= piece.last && k < feed.size(); ++k) {
+      const double f_k = feed[k] > 0 ? feed[k] / 60.0 : s.feed_mm_s;
+      v = v == 0 ? f_k : std::min(v, f_k);
+    }
+    if (v == 0) v = pp.feed_mm_min > 0 ? pp.feed_mm_min / 60.0 : s.feed_mm_s;
+    return std::min(v, s.max_feed_mm_s);
+  };
+  CutPath& path = f.job.paths.front();
+  path.torch = pp.torch;
+  path.pierce_delay_s = pp.pierce_delay_s;
+  append_moves(pp.before, s.max_feed_mm_s, path.before);
+  append_moves(pp.after, s.max_feed_mm_s, path.after);
+  for (std::size_t k = 0; k < path.segments.size(); ++k) {
+    path.segments[k].feed = feed_of(f.pieces[k]);
+    path.segments[k].torch = pp.torch;
+  }
+  return 0;
+}
 
 int fit_program_or_say(const job::GcodeProgram& prog, job::Criterion criterion, double tol, double feed_mm_s,
                        double max_feed_mm_s, FittedJob& out, job::Numeric numeric,
@@ -40,63 +73,45 @@ int fit_program_or_say(const job::GcodeProgram& prog, job::Criterion criterion, 
   out = FittedJob{};
   const io::PointFile& in = prog.points;
   const std::vector<std::size_t>& begins = in.path_begin;
+  const PathFitSettings settings{criterion, numeric, tol, feed_mm_s, max_feed_mm_s};
   // kept_before[k]: how many paths before program path k reach the job (a
   // path shorter than the link's grid does not), for the actions' places.
   std::vector<std::size_t> kept_before(begins.size() + 1, 0);
   std::vector<hal::SegmentCommand> carry;  // the moves of paths too short to keep
   for (std::size_t p = 0; p < begins.size(); ++p) {
     kept_before[p] = out.job.paths.size();
-    const std::size_t b = begins[p];
-    const std::size_t e = p + 1 < begins.size() ? begins[p + 1] : in.points.size();
+    const auto b = static_cast<std::ptrdiff_t>(begins[p]);
+    const auto e = static_cast<std::ptrdiff_t>(p + 1 < begins.size() ? begins[p + 1] : in.points.size());
     const job::ProgramPath& pp = prog.paths[p];
-    // The path alone through fit_paths, at its own tolerance: the same fit
-    // and the same segments on the link's grid as a point file's.
     io::PointFile one;
     one.file = in.file;
-    one.points.assign(in.points.begin() + static_cast<std::ptrdiff_t>(b), in.points.begin() + static_cast<std::ptrdiff_t>(e));
-    one.point_lines.assign(in.point_lines.begin() + static_cast<std::ptrdiff_t>(b),
-                           in.point_lines.begin() + static_cast<std::ptrdiff_t>(e));
+    one.points.assign(in.points.begin() + b, in.points.begin() + e);
+    one.point_lines.assign(in.point_lines.begin() + b, in.point_lines.begin() + e);
+    std::vector<double> feed;
+    if (static_cast<std::size_t>(b) < prog.point_feed.size())
+      feed.assign(prog.point_feed.begin() + b, prog.point_feed.begin() + std::min<std::ptrdiff_t>(e, static_cast<std::ptrdiff_t>(prog.point_feed.size())));
     FittedJob f;
     std::string error;
-    Status status = Status::ok;
-    if (!fit_paths(one, criterion, pp.tol > 0 ? std::min(pp.tol, tol) : tol, feed_mm_s, f, error, status, numeric)) {
-      if (f.job.paths.empty() && status == Status::invalid_argument && error.find("shorter than the link") != std::string::npos) {
-        // A path shorter than a count: nothing to cut (kept_before counts it out); its moves go on.
-        append_moves(prog.paths[p].before, max_feed_mm_s, carry);
-        append_moves(prog.paths[p].after, max_feed_mm_s, carry);
-        continue;
-      }
-      if (error.compare(0, 7, "path 1 ") == 0) error = "path " + std::to_string(p + 1) + error.substr(6);
+    if (const int rc = fit_program_path(one, feed, pp, p, settings, f, error); rc != 0) {
       std::fprintf(stderr, "kerf: %s: %s\n", in.file.c_str(), error.c_str());
-      return status == Status::invalid_argument || status == Status::degenerate ? 2 : 1;
+      return rc;
     }
-    // Each segment at the slowest feed programmed along its piece (mm/min per point; 0: the default).
-    auto feed_of = [&](const fit::Piece<double>& piece) {
-      double v = 0;
-      for (std::size_t k = b + piece.first + 1; k <= b + piece.last && k < prog.point_feed.size(); ++k) {
-        const double f_k = prog.point_feed[k] > 0 ? prog.point_feed[k] / 60.0 : feed_mm_s;
-        v = v == 0 ? f_k : std::min(v, f_k);
-      }
-      if (v == 0) v = pp.feed_mm_min > 0 ? pp.feed_mm_min / 60.0 : feed_mm_s;
-      return std::min(v, max_feed_mm_s);
-    };
+    if (f.job.paths.empty()) {
+      append_moves(pp.before, max_feed_mm_s, carry);
+      append_moves(pp.after, max_feed_mm_s, carry);
+      continue;
+    }
     CutPath& path = f.job.paths.front();
-    path.torch = pp.torch;
-    path.pierce_delay_s = pp.pierce_delay_s;
-    path.before.swap(carry);
+    path.before.insert(path.before.begin(), carry.begin(), carry.end());
     carry.clear();
-    append_moves(pp.before, max_feed_mm_s, path.before);
-    append_moves(pp.after, max_feed_mm_s, path.after);
     for (std::size_t k = 0; k < path.segments.size(); ++k) {
-      path.segments[k].feed = feed_of(f.pieces[k]);
-      path.segments[k].torch = pp.torch;
       out.pieces.push_back(f.pieces[k]);
       out.piece_path.push_back(out.job.paths.size());
     }
     out.lines_for_arcs += f.lines_for_arcs;
     out.job.forced_commits += f.job.forced_commits;
     out.job.paths.push_back(std::move(path));
-    out.path_point.push_back(b);
+    out.path_point.push_back(static_cast<std::size_t>(b));
   }
   kept_before[begins.size()] = out.job.paths.size();
   if (!out.job.paths.empty()) out.job.paths.back().after.insert(out.job.paths.back().after.end(), carry.begin(), carry.end());
@@ -117,7 +132,8 @@ namespace {
 
 bool has(const std::vector<int>& numbers, int n) { return std::find(numbers.begin(), numbers.end(), n) != numbers.end(); }
 
-// "" when the machine can run `a`; otherwise why not, with the key to add.
+}  // namespace
+
 std::string cannot_run(const JobAction& a, const MachineIo& io) {
   const std::string n = std::to_string(a.index);
   switch (a.kind) {
@@ -138,8 +154,6 @@ std::string cannot_run(const JobAction& a, const MachineIo& io) {
     default: return "";
   }
 }
-
-}  // namespace
 
 bool machine_can_run(job::GcodeProgram& prog, const MachineIo& io, std::string& error) {
   const std::string& file = prog.points.file;

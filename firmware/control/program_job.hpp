@@ -14,6 +14,31 @@
 
 namespace kerf::control {
 
+// What fits a program path (the configuration's fit and feeds).
+struct PathFitSettings {
+  job::Criterion criterion = job::Criterion::band;
+  job::Numeric numeric = job::Numeric::floating;
+  double tol = 0.025;            // mm; a path's G64 P may lower it
+  double feed_mm_s = 50.0;       // the cut feed
+  double max_feed_mm_s = 1e300;  // caps every feed
+};
+
+// One program path as the job cuts it, shared by the whole job
+// (fit_program_or_say) and the streamed one (control/streamed_job.hpp):
+// `one` holds its points and lines (and a point file's tols), `feed` each
+// point's mm/min (0 or missing: the cut feed), p its number in the program.
+// 0 with `out` holding one CutPath (segments at the slowest feed along each
+// piece, the torch, the pierce delay, pp's moves before and after) and its
+// pieces; none for a path shorter than the link's grid (its moves are the
+// caller's to carry). Otherwise the exit code (2 bad input, 1 otherwise) and
+// "path N (line L): reason".
+int fit_program_path(const io::PointFile& one, const std::vector<double>& feed, const job::ProgramPath& pp,
+                     std::size_t p, const PathFitSettings& s, FittedJob& out, std::string& error);
+
+// A program's moves between paths (z axis) as link commands, on the grid.
+void append_moves(const std::vector<job::ProgramMove>& moves, double max_feed_mm_s,
+                  std::vector<hal::SegmentCommand>& out);
+
 // On failure prints "kerf: FILE: reason" and returns the exit code (2 bad input, 1 otherwise); 0 on success.
 // With `rules`, the cutting rules (control/cut_rules.hpp) then scale the feeds and add overcuts, as for a point file.
 int fit_program_or_say(const job::GcodeProgram& prog, job::Criterion criterion, double tol, double feed_mm_s,
@@ -33,6 +58,10 @@ struct MachineIo {
 // than QtPlasmaC's E3 feed %, M66 E) not in [analog] ignore; a bench runs
 // no program output at all. Each ignored analog number adds a note (once).
 bool machine_can_run(job::GcodeProgram& prog, const MachineIo& io, std::string& error);
+
+// "" when the machine can run action `a` (machine_can_run's rule for one
+// action); otherwise why not, with the key to add.
+std::string cannot_run(const JobAction& a, const MachineIo& io);
 
 // The program's part of the run summary: dry run, constructs, notes.
 void describe_program(const job::GcodeProgram& prog, RunSummary& sum);

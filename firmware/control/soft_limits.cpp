@@ -70,7 +70,7 @@ motion::Extent<double> job_extent(const FittedJob& fitted, const Vec2<double>* s
 }
 
 bool check_soft_limits(const FittedJob& fitted, const io::PointFile& source, const motion::SoftLimits<double>& limits,
-                       const Vec2<double>* start, std::string& error) {
+                       const Vec2<double>* start, std::string& error, std::size_t first_path) {
   if (start && !limits.contains(*start)) {
     error = source.file + ": the machine starts outside the soft limits, at (" + std::to_string(start->x) + ", " +
             std::to_string(start->y) + "): " + breach(limits, {*start, *start});
@@ -87,7 +87,7 @@ bool check_soft_limits(const FittedJob& fitted, const io::PointFile& source, con
     if (!why.empty()) {  // the travel to the pierce point (a straight line between points checked)
       error = source.file + ":" + std::to_string(line_at(source, base)) + ": outside the soft limits: " + why +
               " (travel to or from path " +
-              std::to_string(p + 1) + ")";
+              std::to_string(first_path + p + 1) + ")";
       return false;
     }
     Vec2<double> from = path.start;
@@ -108,7 +108,7 @@ bool check_soft_limits(const FittedJob& fitted, const io::PointFile& source, con
             break;
           }
       }
-      error = source.file + ":" + std::to_string(line) + ": outside the soft limits: " + why + " (path " + std::to_string(p + 1) +
+      error = source.file + ":" + std::to_string(line) + ": outside the soft limits: " + why + " (path " + std::to_string(first_path + p + 1) +
               ", segment " + std::to_string(k + 1) + ")";
       return false;
     }

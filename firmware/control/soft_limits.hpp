@@ -26,7 +26,9 @@ motion::Extent<double> job_extent(const FittedJob& fitted, const Vec2<double>* s
 // False with "FILE:LINE: X 1.000 mm past max 1200.000 (path 2, segment 5)"
 // for the first move outside the limits, FILE and LINE those of `source`
 // (the point file or the G-code program's points the job was fitted from).
+// first_path: the job number of fitted's first path (a streamed job checks
+// each path alone, control/streamed_job.hpp).
 bool check_soft_limits(const FittedJob& fitted, const io::PointFile& source, const motion::SoftLimits<double>& limits,
-                       const Vec2<double>* start, std::string& error);
+                       const Vec2<double>* start, std::string& error, std::size_t first_path = 0);
 
 }  // namespace kerf::control
