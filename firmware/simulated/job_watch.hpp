@@ -55,6 +55,10 @@ class WatchedJobSource final : public control::JobSource {
   const control::PathHead* open(std::size_t p) override;
   control::Pull segment(std::size_t i, const hal::SegmentCommand*& out) override;
   const control::JobAction* action(std::size_t a) override;
+  const control::JobAction* replay_output(std::size_t path, std::size_t i) override {
+    return inner_.replay_output(path, i);
+  }
+  std::size_t first_action() const override { return inner_.first_action(); }
   const char* error() const override { return inner_.error(); }
 
   // Job segment k, if it is among the last kRecent pulled.

@@ -283,6 +283,7 @@ int run_sim(const SimOptions& given) {
     res = run_sim_machine(watch, ccfg, mcfg, gpio, journal.get(), from);
   }
   progress.clear();
+  job->say_notes();
   if (!res.setup_error.empty()) {
     std::fprintf(stderr, "kerf: sim: %s\n", res.setup_error.c_str());
     return kExitFailure;

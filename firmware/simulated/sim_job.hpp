@@ -41,6 +41,9 @@ class SimJob {
   // After the run: the job's part of the summary (cut rules, forced
   // commits, the program's constructs and notes).
   virtual void describe(control::RunSummary& sum) const = 0;
+  // After the run: the program's notes on stderr ("kerf: sim: ..."), when
+  // they were not known before it (a stream knows them at its end).
+  virtual void say_notes() const {}
   virtual const std::string& file() const = 0;
 };
 
