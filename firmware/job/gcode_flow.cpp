@@ -28,7 +28,7 @@ bool qtplasmac_pin(std::string_view pin, double cut_feed, double& value, std::st
 // Each pin read is recorded for the report, at the line that reads it.
 GcodeFlow::GcodeFlow(const GcodeFile& g, GcodeParams::HalRead hal, std::size_t max_blocks,
                      std::map<std::string, Construct>& constructs, std::vector<std::string>& notes)
-    : g_(g),
+    : g_(&g),
       params_([this, hal = std::move(hal)](std::string_view pin, double& v, std::string& why) {
         if (!hal(pin, v, why)) return false;
         seen("#<_hal[" + std::string(pin) + "]>", "run", line());
@@ -39,7 +39,7 @@ GcodeFlow::GcodeFlow(const GcodeFile& g, GcodeParams::HalRead hal, std::size_t m
       notes_(notes) {}
 
 bool GcodeFlow::fail(std::size_t line, std::string why) {
-  error_ = g_.file + ":" + std::to_string(line) + ": " + why;
+  error_ = g_->file + ":" + std::to_string(line) + ": " + why;
   return false;
 }
 
@@ -48,10 +48,19 @@ void GcodeFlow::seen(const std::string& name, const char* handling, std::size_t 
   if (c.count++ == 0) c.first_line = line, c.handling = handling;
 }
 
+bool GcodeFlow::start_part(const GcodeFile& part, std::string& error) {
+  g_ = &part;
+  code_of_.clear();
+  codes_.clear();
+  pool_.nodes.clear();
+  pc_ = run_ = 0;
+  return prepare(error);
+}
+
 bool GcodeFlow::prepare(std::string& error) {
-  code_of_.assign(g_.blocks.size(), -1);
-  for (std::size_t i = 0; i < g_.blocks.size(); ++i) {
-    const GBlock& b = g_.blocks[i];
+  code_of_.assign(g_->blocks.size(), -1);
+  for (std::size_t i = 0; i < g_->blocks.size(); ++i) {
+    const GBlock& b = g_->blocks[i];
     if (!b.dynamic) continue;
     LineCode code;
     std::string why;
@@ -73,13 +82,13 @@ bool GcodeFlow::match(std::string& error) {
   };
   if (codes_.empty()) return true;  // a plain program: nothing to match
   std::vector<Open> stack;
-  partner_.assign(g_.blocks.size(), 0);
-  next_branch_.assign(g_.blocks.size(), 0);
+  partner_.assign(g_->blocks.size(), 0);
+  next_branch_.assign(g_->blocks.size(), 0);
   auto code = [&](std::size_t i) -> const LineCode& { return codes_[static_cast<std::size_t>(code_of_[i])]; };
   auto name = [&](std::size_t i) { return "o" + code(i).oname + " " + oword_name(code(i).oword); };
-  auto bad = [&](std::size_t i, const std::string& why) { return fail(g_.blocks[i].line, why), error = error_, false; };
+  auto bad = [&](std::size_t i, const std::string& why) { return fail(g_->blocks[i].line, why), error = error_, false; };
   std::vector<std::size_t> calls;
-  for (std::size_t i = 0; i < g_.blocks.size(); ++i) {
+  for (std::size_t i = 0; i < g_->blocks.size(); ++i) {
     if (code_of_[i] < 0 || code(i).oword == Oword::none) continue;
     const LineCode& c = code(i);
     const bool top_ok = !stack.empty() && code(stack.back().at).oname == c.oname;
@@ -88,7 +97,7 @@ bool GcodeFlow::match(std::string& error) {
       if (!top_ok || top != opener)
         return bad(i, name(i) + (stack.empty() ? " closes nothing"
                                                : " does not close " + name(stack.back().at) + " (line " +
-                                                     std::to_string(g_.blocks[stack.back().at].line) + ")"));
+                                                     std::to_string(g_->blocks[stack.back().at].line) + ")"));
       partner_[i] = stack.back().at;
       partner_[stack.back().at] = i;
       stack.pop_back();
@@ -168,13 +177,13 @@ bool GcodeFlow::value(int expr, double& v, std::size_t line) {
 
 bool GcodeFlow::condition(std::size_t at, const LineCode& code, bool& truth) {
   double v = 0;
-  if (!value(code.args.at(0), v, g_.blocks[at].line)) return false;
+  if (!value(code.args.at(0), v, g_->blocks[at].line)) return false;
   truth = v != 0;
   return true;
 }
 
 bool GcodeFlow::run_oword(std::size_t at, const LineCode& c) {
-  const std::size_t line = g_.blocks[at].line;
+  const std::size_t line = g_->blocks[at].line;
   seen(std::string("O-word ") + oword_name(c.oword), "run", line);
   auto code = [&](std::size_t i) -> const LineCode& { return codes_[static_cast<std::size_t>(code_of_[i])]; };
   bool truth = false;
@@ -307,15 +316,15 @@ bool GcodeFlow::run_dynamic(const GBlock& b, const LineCode& c) {
 }
 
 bool GcodeFlow::next(const GBlock*& block, std::span<const GWord>& words, std::string& error) {
-  while (pc_ < g_.blocks.size()) {
+  while (pc_ < g_->blocks.size()) {
     const std::size_t i = pc_;
-    const GBlock& b = g_.blocks[i];
+    const GBlock& b = g_->blocks[i];
     if (!b.dynamic && b.words.empty()) {
       ++pc_;
       continue;
     }
     // Only what loops run again counts: a straight file of any length is never refused.
-    if (++run_ > g_.blocks.size() + max_blocks_) {
+    if (++run_ > g_->blocks.size() + max_blocks_) {
       fail(b.line, "loops run more than " + std::to_string(max_blocks_) +
                        " blocks beyond the file's own (a loop that never ends?)");
       error = error_;

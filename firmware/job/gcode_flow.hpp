@@ -42,11 +42,15 @@ class GcodeFlow {
 
   // Parses the marked lines and matches the O-words. False with "FILE:LINE: reason".
   bool prepare(std::string& error);
+  // The window reading (job/program_window.hpp), for a file without
+  // O-words: runs `part` (the file's next lines) from its first block, its
+  // marked lines parsed; the parameters carry on. False with "FILE:LINE: reason".
+  bool start_part(const GcodeFile& part, std::string& error);
   // The next block to run, with its words' values: false at the end of the
   // file, or on an error (then `error` is "FILE:LINE: reason").
   bool next(const GBlock*& block, std::span<const GWord>& words, std::string& error);
   // The line of the block being run (for what a parameter read records).
-  std::size_t line() const { return pc_ < g_.blocks.size() ? g_.blocks[pc_].line : 0; }
+  std::size_t line() const { return pc_ < g_->blocks.size() ? g_->blocks[pc_].line : 0; }
 
  private:
   struct Frame {  // a call in progress
@@ -65,7 +69,7 @@ class GcodeFlow {
   bool match(std::string& error);
   void seen(const std::string& name, const char* handling, std::size_t line);
 
-  const GcodeFile& g_;
+  const GcodeFile* g_;
   GcodeParams params_;
   std::size_t max_blocks_;
   std::map<std::string, Construct>& constructs_;

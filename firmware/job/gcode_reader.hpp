@@ -143,6 +143,14 @@ GcodeFile parse_gcode(std::string_view text, std::string display_name);
 
 // "FILE:LINE: reason".
 std::string describe_error(const GcodeFile& f);
+// "FILE:LINE: ", the start of a reason.
+inline std::string where(const std::string& file, std::size_t line) {
+  std::string s = file;
+  s += ':';
+  s += std::to_string(line);
+  s += ": ";
+  return s;
+}
 
 // A G-code job as cut paths for `kerf sim` / `kerf run`: the XY points of the
 // moves made with the torch on (every feed move when the file never uses M3/M4),

@@ -2,6 +2,8 @@
 
 #include <utility>
 
+#include "job/program_window.hpp"
+
 namespace kerf::job {
 
 WholeProgramStream::WholeProgramStream(GcodeProgram program) : program_(std::move(program)) {
@@ -10,6 +12,7 @@ WholeProgramStream::WholeProgramStream(GcodeProgram program) : program_(std::mov
   summary_.dry_run = program_.dry_run;
   summary_.z_moves = program_.z_moves;
   summary_.final_z = program_.final_z;
+  summary_.points.duplicates_dropped = program_.points.duplicates_dropped;
 }
 
 ProgramStream::Next WholeProgramStream::next(ProgramPiece& path, ProgramAction& action) {
@@ -32,12 +35,29 @@ ProgramStream::Next WholeProgramStream::next(ProgramPiece& path, ProgramAction& 
   return Next::path;
 }
 
-// Whole-file reading for now; a window reading replaces it for the files it can run.
 bool open_program_stream(const std::string& file, const InterpSettings& settings, const MachineState& state,
                          std::unique_ptr<ProgramStream>& out, std::string& error) {
-  GcodeProgram program;
-  if (!read_gcode_program(file, settings, state, program, error)) return false;
-  out = std::make_unique<WholeProgramStream>(std::move(program));
+  return open_program_stream(file, settings, state, ProgramStreamOptions{}, out, error);
+}
+
+bool open_program_stream(const std::string& file, const InterpSettings& settings, const MachineState& state,
+                         const ProgramStreamOptions& options, std::unique_ptr<ProgramStream>& out,
+                         std::string& error) {
+  error.clear();
+  ProgramScan scan;
+  const bool whole = options.whole || file == "-" ||
+                     (scan_program(file, settings, options.part_bytes, scan, error) &&
+                      (scan.o_words || scan.torch_unknown));
+  if (whole) {
+    GcodeProgram program;
+    if (!read_gcode_program(file, settings, state, program, error)) return false;
+    out = std::make_unique<WholeProgramStream>(std::move(program));
+    return true;
+  }
+  if (!error.empty()) return false;
+  auto window = std::make_unique<WindowProgramStream>(settings, state, !scan.torch_word);
+  if (!window->open(file, options.part_bytes, error)) return false;
+  out = std::move(window);
   return true;
 }
 

@@ -61,9 +61,25 @@ class WholeProgramStream final : public ProgramStream {
   std::string error_;
 };
 
+// How open_program_stream reads a file (job/program_window.hpp).
+struct ProgramStreamOptions {
+  std::size_t part_bytes = std::size_t{256} << 10;  // read at a time by the window reading
+  bool whole = false;  // read the file whole (the oracle): WholeProgramStream
+};
+
 // The stream of a G-code file: false with "FILE:LINE: reason" for what
-// read_gcode_program refuses before its first path.
+// read_gcode_program refuses before its first path. A file is read in a
+// window (job/program_window.hpp) unless it is stdin ("-"), it has O-words
+// (the flow jumps), or its torch word is computed: those are read whole.
+// The window reading refuses at open what read_gcode refuses (a line that
+// does not parse, anywhere in the file); what the interpreter refuses, and
+// "no cut moves", come as Next::error when the stream reaches them.
+// The stream is used by one thread at a time; it owns its file and copies
+// of the settings and the state.
 bool open_program_stream(const std::string& file, const InterpSettings& settings, const MachineState& state,
                          std::unique_ptr<ProgramStream>& out, std::string& error);
+bool open_program_stream(const std::string& file, const InterpSettings& settings, const MachineState& state,
+                         const ProgramStreamOptions& options, std::unique_ptr<ProgramStream>& out,
+                         std::string& error);
 
 }  // namespace kerf::job
