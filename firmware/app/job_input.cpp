@@ -4,6 +4,7 @@
 
 #include "control/machine_config.hpp"
 #include "control/program_job.hpp"
+#include "control/soft_limits.hpp"
 #include "io/options.hpp"
 #include "job/fit_job.hpp"
 #include "job/machine_state.hpp"
@@ -38,6 +39,39 @@ int read_and_fit(const config::Config& cfg, const std::string& path, bool strict
   if (!job::read_job(path, cfg.fit.criterion, out.points)) return io::kExitUsage;
   return control::fit_paths_or_say(out.points, cfg.fit.criterion, cfg.fit.tol, cfg.cut.feed / 60.0, out.fitted,
                                    cfg.fit.numeric, &cfg.cut.rules);
+}
+
+int open_streamed(const config::Config& cfg, const std::string& path, bool dry_run, const char* who,
+                  control::StreamedJob& out) {
+  std::string error;
+  control::StreamedJobSetup s;
+  s.criterion = cfg.fit.criterion;
+  s.numeric = cfg.fit.numeric;
+  s.tol = cfg.fit.tol;
+  s.feed_mm_s = cfg.cut.feed / 60.0;
+  s.max_feed_mm_s = cfg.machine.max_feed / 60.0;
+  s.rules = cfg.cut.rules;
+  s.limits = control::soft_limits_of(cfg.machine);
+  s.io = control::machine_io(cfg);
+  s.torch_off = cfg.bench.enabled || dry_run;
+  s.outputs_off = dry_run;
+  if (job::is_gcode_path(path)) {
+    if (!cfg.machine.state.empty() && !job::load_machine_state(cfg.machine.state, s.state, error)) {
+      std::fprintf(stderr, "%s: machine.state: %s\n", who, error.c_str());
+      return io::kExitUsage;
+    }
+    s.interp = config::interp_settings(cfg, true);
+  }
+  int rc = out.open(path, s, error);
+  if (rc == 0) rc = out.prime(error);
+  if (rc != 0) {
+    std::fprintf(stderr, "%s\n", error.c_str());
+    return rc;
+  }
+  const control::StreamTotals t = out.totals();
+  if (t.ended)
+    for (const std::string& n : t.summary.interp.notes) std::fprintf(stderr, "%s: %s\n", who, n.c_str());
+  return 0;
 }
 
 }  // namespace kerf::app

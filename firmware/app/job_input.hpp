@@ -7,6 +7,7 @@
 
 #include "config/config.hpp"
 #include "control/fit_paths.hpp"
+#include "control/streamed_job.hpp"
 #include "io/point_file.hpp"
 #include "job/gcode_program.hpp"
 
@@ -27,5 +28,15 @@ struct JobInput {
 // program the machine cannot run is not a failure: the reason goes there.
 int read_and_fit(const config::Config& cfg, const std::string& path, bool strict, const char* who, JobInput& out,
                  std::string* cannot_run = nullptr);
+
+// kerf run's job, streamed from `path` (control/streamed_job.hpp) with the
+// configuration's fit, feeds, cutting rules, soft limits and machine (each
+// action as machine_can_run checks it); a bench or `dry_run` holds the torch
+// off, `dry_run` the outputs too. Opens it and waits, before anything moves,
+// for a full ring or the file's end; then prints the program's notes if it
+// has ended. On failure prints why ("FILE:LINE: reason") and returns the
+// exit code; 0 on success.
+int open_streamed(const config::Config& cfg, const std::string& path, bool dry_run, const char* who,
+                  control::StreamedJob& out);
 
 }  // namespace kerf::app

@@ -7,6 +7,8 @@
 #include "app/job_input.hpp"
 #include "control/fit_paths.hpp"
 #include "control/program_job.hpp"
+#include "control/run_report.hpp"
+#include "control/streamed_job.hpp"
 #include "control/soft_limits.hpp"
 #include "io/input_file.hpp"
 #include "io/options.hpp"
@@ -40,24 +42,19 @@ int run_job(const RunOptions& opts, const char* who, RunCheck check, LinesOpener
     return kExitFailure;
   }
   if (opts.resume && opts.journal.empty()) return io::usage_error("--resume: needs --journal FILE");
-  JobInput in;
   const std::string says = std::string(who) + ": run";
-  if (const int rc = read_and_fit(cfg, opts.job, true, says.c_str(), in); rc != 0) return rc;
-  control::FittedJob& fitted = in.fitted;
-  // Before anything moves: the whole job inside the table. Where the machine
-  // stands is not known before the link is up, so the first travel is checked
-  // from the first pierce point on (a machine inside the table stays inside).
+  // The job streams from its file (control/streamed_job.hpp): each path is
+  // fitted, checked against the soft limits and the machine's lines, and held
+  // off for a bench (no torch: every path a dry run, so no safety input is
+  // ever stood in for in software) or --dry-run (the outputs too) as it is
+  // read; a bad job that fits in the ring is refused here, before anything moves.
+  // Where the machine stands is not known before the link is up, so the first
+  // travel is checked from the first pierce point on.
+  control::StreamedJob streamed;
+  if (const int rc = open_streamed(cfg, opts.job, opts.dry_run, says.c_str(), streamed); rc != 0) return rc;
   if (!control::fully_limited(cfg.machine))
     std::fprintf(stderr, "%s: %s: machine.axis: x and y need min and max (soft limits): the job is not checked "
                          "against the table\n", says.c_str(), cfg.file.c_str());
-  if (!control::check_soft_limits(fitted, in.source(), control::soft_limits_of(cfg.machine), nullptr, error)) {
-    std::fprintf(stderr, "%s\n", error.c_str());
-    return kExitUsage;
-  }
-  // A bench has no torch: every path runs as a dry run (no pierce, no wait
-  // for arc-OK), so no safety input is ever stood in for in software. So
-  // does --dry-run, with the program's outputs (gas) held off too.
-  if (cfg.bench.enabled || opts.dry_run) control::hold_outputs_off(fitted.job, opts.dry_run);
   // Before anything moves: where the machine is must be known.
   job::MachineState state;
   if (!cfg.machine.state.empty() && !job::load_machine_state(cfg.machine.state, state, error)) {
@@ -82,14 +79,25 @@ int run_job(const RunOptions& opts, const char* who, RunCheck check, LinesOpener
   }
   std::unique_ptr<control::Journal> journal;
   control::ResumePoint from;
-  if (!control::open_journal(opts.journal, opts.resume, fitted.job, journal, from)) return kExitUsage;
-  const int rc = machine::run_on_machine(fitted.job, cfg, *link, *gpio, journal.get(), from, opts.resume, opts.report,
-                                         opts.reset, in.gcode ? &in.prog : nullptr, &fitted.cut_rules, opts.dry_run,
+  control::JobSource& source = streamed.source();
+  if (!control::open_journal(opts.journal, opts.resume, source, journal, from)) return kExitUsage;
+  // The report's facts of the job: complete once the stream has ended.
+  const machine::JobFacts facts = [&](control::RunSummary& sum) {
+    const control::StreamTotals t = streamed.totals();
+    sum.paths = t.paths;
+    sum.planned = t.segments;
+    if (t.gcode) control::describe_program(t.summary, sum);
+    sum.cut_rules = t.cut_rules;
+    sum.forced_commits = t.forced_commits;
+  };
+  const int rc = machine::run_on_machine(source, facts, cfg, *link, *gpio, journal.get(), from, opts.resume,
+                                         opts.report, opts.reset, opts.dry_run,
                                          opts.assume_homed ? "assumed (--assume-homed)" : "kerf home");
   // The offsets the program set are kept once it has run to its end (a
   // stopped run leaves the machine state as it was).
-  if (in.gcode && rc == 0 && !cfg.machine.state.empty() &&
-      !job::save_machine_state(cfg.machine.state, in.prog.interp.state, error)) {
+  const control::StreamTotals t = streamed.totals();
+  if (t.gcode && rc == 0 && t.ended && !cfg.machine.state.empty() &&
+      !job::save_machine_state(cfg.machine.state, t.summary.interp.state, error)) {
     std::fprintf(stderr, "%s: run: machine.state: %s\n", who, error.c_str());
     return kExitFailure;
   }

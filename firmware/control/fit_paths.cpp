@@ -1,6 +1,7 @@
 #include "control/fit_paths.hpp"
 
 #include "control/cut_rules.hpp"
+#include "control/job_source.hpp"
 #include "control/path_stream.hpp"
 #include "job/fit_job.hpp"
 
@@ -149,8 +150,14 @@ int fit_paths_or_say(const io::PointFile& in, job::Criterion criterion, double t
 
 bool open_journal(const std::string& path, bool resume, const control::Job& job,
                   std::unique_ptr<control::Journal>& out, control::ResumePoint& from) {
+  control::WholeJobSource source(job);
+  return open_journal(path, resume, source, out, from);
+}
+
+bool open_journal(const std::string& path, bool resume, JobSource& job, std::unique_ptr<control::Journal>& out,
+                  control::ResumePoint& from) {
   from = control::ResumePoint{};
-  from.from = job.paths.front().start;
+  from.from = job.locate(0).start;
   out.reset();
   if (path.empty()) return true;
   std::string error;

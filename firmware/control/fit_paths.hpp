@@ -54,5 +54,9 @@ int fit_paths_or_say(const io::PointFile& in, job::Criterion criterion, double t
 // "kerf: --journal: reason" and returns false.
 bool open_journal(const std::string& path, bool resume, const control::Job& job,
                   std::unique_ptr<control::Journal>& out, control::ResumePoint& from);
+// The same over a job source (a streamed job: control/streamed_job.hpp).
+class JobSource;
+bool open_journal(const std::string& path, bool resume, JobSource& job, std::unique_ptr<control::Journal>& out,
+                  control::ResumePoint& from);
 
 }  // namespace kerf::control

@@ -22,10 +22,11 @@ void JobProducer::stop() {
   if (thread_.joinable()) thread_.join();
 }
 
-void JobProducer::start(std::unique_ptr<job::ProgramStream> program, const io::PointFile* points,
+void JobProducer::start(std::unique_ptr<job::ProgramStream> program, std::unique_ptr<PointPaths> points,
                         const StreamedJobSetup& setup, JobItemRing& ring, bool quiet) {
   program_ = std::move(program);
-  points_ = points;
+  points_ = std::move(points);
+  file_ = program_ ? program_->summary().points.file : points_->file();
   setup_ = setup;
   fit_ = {setup.criterion, setup.numeric, setup.tol, setup.feed_mm_s, setup.max_feed_mm_s};
   if (points_ != nullptr) fit_.max_feed_mm_s = 1e300;  // a point file's paths run at the cut feed, as fit_paths_or_say's
@@ -41,7 +42,7 @@ StreamTotals JobProducer::totals() const {
   return totals_;
 }
 
-const std::string& JobProducer::file() const { return points_ != nullptr ? points_->file : program_->summary().points.file; }
+const std::string& JobProducer::file() const { return file_; }
 
 bool JobProducer::put(const JobItem& item) {
   while (!ring_->try_push(item)) {
@@ -69,17 +70,15 @@ bool JobProducer::fail(std::string error, int rc, std::string say) {
 
 void JobProducer::run() {
   if (points_ != nullptr) {
-    std::vector<std::size_t> begins = points_->path_begin;
-    if (begins.empty()) begins.push_back(0);
     const job::ProgramPath pp;  // a point file's path: torch on, the cut feed, the fit's tol
-    for (std::size_t p = 0; p < begins.size() && !stopping_; ++p) {
-      const auto b = static_cast<std::ptrdiff_t>(begins[p]);
-      const auto e = static_cast<std::ptrdiff_t>(p + 1 < begins.size() ? begins[p + 1] : points_->points.size());
-      io::PointFile one;
-      one.file = points_->file;
-      one.points.assign(points_->points.begin() + b, points_->points.begin() + e);
-      one.point_lines.assign(points_->point_lines.begin() + b, points_->point_lines.begin() + e);
-      if (!points_->tols.empty()) one.tols.assign(points_->tols.begin() + b, points_->tols.begin() + e);
+    io::PointFile one;
+    while (!stopping_) {
+      const PointPaths::Next n = points_->next(one);
+      if (n == PointPaths::Next::end) break;
+      if (n == PointPaths::Next::error) {
+        fail(points_->error(), 2);
+        return;
+      }
       if (!path(one, {}, pp)) return;
     }
     if (!stopping_) finish();

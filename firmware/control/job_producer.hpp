@@ -19,6 +19,7 @@
 #include <thread>
 #include <vector>
 
+#include "control/point_paths.hpp"
 #include "control/stream_job_source.hpp"
 #include "control/streamed_job.hpp"
 #include "io/point_file.hpp"
@@ -33,10 +34,10 @@ class JobProducer {
   JobProducer(const JobProducer&) = delete;
   JobProducer& operator=(const JobProducer&) = delete;
 
-  // Starts the thread over a program stream, or a point file read whole
-  // (`points`, not owned: it must outlive the producer). quiet: no cutting
-  // rule notes on stderr (a second reading, for a resume's rewind).
-  void start(std::unique_ptr<job::ProgramStream> program, const io::PointFile* points,
+  // Starts the thread over a program stream or a point file's paths (one
+  // of the two). quiet: no cutting rule notes on stderr (a second reading,
+  // for a resume's rewind).
+  void start(std::unique_ptr<job::ProgramStream> program, std::unique_ptr<PointPaths> points,
              const StreamedJobSetup& setup, JobItemRing& ring, bool quiet);
   void stop();
 
@@ -57,9 +58,10 @@ class JobProducer {
   bool finish();
   bool fail(std::string error, int rc, std::string say = {});
   const std::string& file() const;
+  std::string file_;
 
   std::unique_ptr<job::ProgramStream> program_;
-  const io::PointFile* points_ = nullptr;
+  std::unique_ptr<PointPaths> points_;
   StreamedJobSetup setup_;
   PathFitSettings fit_;
   JobItemRing* ring_ = nullptr;

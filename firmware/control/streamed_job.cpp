@@ -8,7 +8,6 @@
 
 #include "control/job_producer.hpp"
 #include "control/stream_job_source.hpp"
-#include "job/fit_job.hpp"
 #include "job/gcode_reader.hpp"
 #include "job/program_stream.hpp"
 
@@ -96,7 +95,6 @@ struct StreamedJob::Impl {
   std::string file;
   StreamedJobSetup setup;
   bool gcode = false;
-  io::PointFile points;  // a point file, read whole
   JobId id{};
   std::unique_ptr<JobItemRing> ring;
   std::unique_ptr<JobProducer> producer;
@@ -109,8 +107,13 @@ struct StreamedJob::Impl {
     producer = std::make_unique<JobProducer>();
     ring = std::make_unique<JobItemRing>();
     std::unique_ptr<job::ProgramStream> program;
+    std::unique_ptr<PointPaths> points;
     if (gcode && !job::open_program_stream(file, setup.interp, setup.state, program, why)) return 2;
-    producer->start(std::move(program), gcode ? nullptr : &points, setup, *ring, quiet);
+    if (!gcode) {
+      points = std::make_unique<PointPaths>();
+      if (!points->open(file, setup.criterion, why)) return 2;
+    }
+    producer->start(std::move(program), std::move(points), setup, *ring, quiet);
     return 0;
   }
 };
@@ -130,10 +133,6 @@ int StreamedJob::open(const std::string& file, const StreamedJobSetup& setup, st
   hash_setup(setup, m.gcode, f);
   if (!hash_file(file, f, error)) return 2;
   m.id = {f.h, 0xffffffffu};  // a stream's size is not known before its end: the bytes identify it
-  if (!m.gcode && !job::read_job(file, setup.criterion, m.points)) {
-    error.clear();  // read_job said why on stderr, FILE:LINE
-    return 2;
-  }
   if (const int rc = m.start(false, error); rc != 0) return rc;
   const auto rewind = [&m]() -> JobItemRing* {
     std::string why;

@@ -4,6 +4,7 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <string>
 
 #include "control/controller.hpp"
 #include "control/machine_config.hpp"
@@ -30,6 +31,19 @@ int run_on_machine(const Job& job, const config::Config& cfg, hal::SegmentLink& 
                    Journal* journal, const ResumePoint& from, bool resumed, const std::string& report,
                    bool reset_at_start, const job::GcodeProgram* program,
                    const std::vector<CutRuleNote>* cut_rules, bool dry_run, const char* homed) {
+  WholeJobSource source(job);
+  const JobFacts facts = [&](RunSummary& sum) {
+    sum.paths = job.paths.size();
+    if (program != nullptr) control::describe_program(*program, sum);
+    if (cut_rules != nullptr) sum.cut_rules = *cut_rules;
+    sum.forced_commits = job.forced_commits;
+  };
+  return run_on_machine(source, facts, cfg, link, gpio, journal, from, resumed, report, reset_at_start, dry_run, homed);
+}
+
+int run_on_machine(JobSource& job, const JobFacts& facts, const config::Config& cfg, hal::SegmentLink& link,
+                   hal::Gpio& gpio, Journal* journal, const ResumePoint& from, bool resumed, const std::string& report,
+                   bool reset_at_start, bool dry_run, const char* homed) {
   using io::kExitFailure;
   using io::kExitOk;
   const hal::RtSetup rt = hal::rt_setup(cfg.rt.priority, cfg.rt.lock_memory);
@@ -73,19 +87,18 @@ int run_on_machine(const Job& job, const config::Config& cfg, hal::SegmentLink& 
     }
     if (now >= next_status) {  // the operator's status line, once a second
       next_status += 1.0;
-      std::fprintf(stderr, "kerf: run: %st %.0f s, %s, segment %lld of %zu; %s\n", bench, now,
+      const std::size_t n = job.segment_count();  // a stream's is known at its end
+      std::fprintf(stderr, "kerf: run: %st %.0f s, %s, segment %lld of %s; %s\n", bench, now,
                    to_string(ctl.state()), static_cast<long long>(ctl.report().last_completed + 1),
-                   ctl.report().planned, loop.stats().describe().c_str());
+                   n == JobSource::kUnknownCount ? "?" : std::to_string(n).c_str(), loop.stats().describe().c_str());
     }
   }
   const RunReport& r = ctl.report();
   RunSummary sum =
-      summarise_run(r, job.paths.size(), config::to_string(cfg.link.kind), resumed,
+      summarise_run(r, 0, config::to_string(cfg.link.kind), resumed,
                     ctl.journal_settled() ? journal : nullptr);  // a stalled writer still owns it
   sum.simulated = false;
-  if (program != nullptr) control::describe_program(*program, sum);
-  if (cut_rules != nullptr) sum.cut_rules = *cut_rules;
-  sum.forced_commits = job.forced_commits;
+  facts(sum);
   sum.dry_run_option = dry_run;
   sum.torch_on = ctl.torch();
   sum.duration_s = now;  // on the loop's clock: overrun cycles are skipped, not counted

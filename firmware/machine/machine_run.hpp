@@ -9,12 +9,15 @@
 // BENCH.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "config/config.hpp"
 #include "control/cut_rule_note.hpp"
 #include "control/job.hpp"
+#include "control/job_source.hpp"
+#include "control/run_report.hpp"
 #include "control/journal.hpp"
 #include "job/gcode_program.hpp"
 #include "kerf/hal/gpio.hpp"
@@ -38,5 +41,15 @@ int run_on_machine(const control::Job& job, const config::Config& cfg, hal::Segm
                    const std::vector<control::CutRuleNote>* cut_rules = nullptr,  // for the report
                    bool dry_run = false,   // --dry-run: the report and the summary say so
                    const char* homed = nullptr);  // the report's "homed": how the position is known
+
+// What the report says of the job beyond the controller's report (paths,
+// segments planned, the program's facts, the cutting rules, forced
+// commits), asked once the run has ended: a streamed job knows them only then.
+using JobFacts = std::function<void(control::RunSummary&)>;
+
+// The same run over a job source (kerf run's streamed job, control/streamed_job.hpp).
+int run_on_machine(control::JobSource& job, const JobFacts& facts, const config::Config& cfg, hal::SegmentLink& link,
+                   hal::Gpio& gpio, control::Journal* journal, const control::ResumePoint& from, bool resumed,
+                   const std::string& report, bool reset_at_start, bool dry_run, const char* homed);
 
 }  // namespace kerf::machine
