@@ -47,6 +47,7 @@ SimMachineResult run_can_sim_machine(control::JobSource& job, const control::Con
   m.max_sim_s = mcfg.max_sim_s;
   m.time_limit = mcfg.time_limit;
   m.keep_executed = mcfg.keep_executed;
+  m.source_behind = mcfg.source_behind;
   m.trace_sink = mcfg.trace_sink;
   m.progress = mcfg.progress;
   for (const CanFault& f : mcfg.faults) m.faults.push_back({can_fault_kind(f.kind), f.at_s, 0.0});

@@ -28,6 +28,7 @@ struct CanMachineConfig {
   double max_sim_s = 4 * 3600.0;
   std::function<double()> time_limit;  // as SimMachineConfig's
   bool keep_executed = true;           // as SimMachineConfig's
+  std::function<bool()> source_behind; // as SimMachineConfig's
   std::function<void(const sim::TraceSample&)> trace_sink;  // as SimMachineConfig's
   std::function<void(const SimProgress&)> progress;
 };

@@ -38,7 +38,10 @@ control::SegmentPlace WatchedJobSource::locate(std::size_t k) {
 
 const control::PathHead* WatchedJobSource::open(std::size_t p) {
   const control::PathHead* head = inner_.open(p);
-  if (head == nullptr) return head;
+  if (head == nullptr) {
+    behind_ = behind_ || (inner_.path_count() == kUnknownCount && *inner_.error() == '\0');
+    return head;
+  }
   path_ = p;
   first_ = head->first_segment;
   head_start_ = head->start;
@@ -51,6 +54,7 @@ const control::PathHead* WatchedJobSource::open(std::size_t p) {
 
 control::Pull WatchedJobSource::segment(std::size_t i, const hal::SegmentCommand*& out) {
   const control::Pull r = inner_.segment(i, out);
+  if (r == control::Pull::later) behind_ = true;
   if (r != control::Pull::ready) return r;
   const std::size_t k = first_ + i;
   PulledSegment& slot = ring_[k % kRecent];

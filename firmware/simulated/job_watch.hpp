@@ -66,6 +66,13 @@ class WatchedJobSource final : public control::JobSource {
   std::size_t paths_opened() const { return paths_; }
   std::size_t segments_pulled() const { return pulled_; }  // distinct job segments
   const TimeBudget& budget() const { return budget_; }
+  // Whether the source had nothing ready (a segment `later`, a path not
+  // there yet) since the last call.
+  bool take_behind() {
+    const bool b = behind_;
+    behind_ = false;
+    return b;
+  }
 
  private:
   control::JobSource& inner_;
@@ -74,6 +81,7 @@ class WatchedJobSource final : public control::JobSource {
   std::vector<PulledSegment> ring_;
   std::size_t path_ = 0, first_ = 0, paths_ = 0, pulled_ = 0, actions_ = 0;
   Vec2<double> head_start_{};
+  bool behind_ = false;
   bool located_ = false;  // locate() gave the start of segment located_at_
   std::size_t located_at_ = 0;
   Vec2<double> located_start_{};

@@ -246,6 +246,7 @@ int run_sim(const SimOptions& given) {
   // feed, a rapid across its extent and a pierce per path, three times over.
   mcfg.time_limit = [&watch] { return watch.budget().limit_s(); };
   mcfg.keep_executed = can_cfg.keep_executed = false;  // counted only
+  mcfg.source_behind = can_cfg.source_behind = [&watch] { return watch.take_behind(); };
   // The axes power up at the job's first pierce point, as if homed there; a
   // resumed run starts there too and travels to its resume point.
   mcfg.start = job->start();

@@ -115,6 +115,12 @@ SimMachineResult run_sim_machine(control::JobSource& job, const control::Control
     // The journal's writer thread is not simulated: simulated time waits for it.
     while (ctl.journal_lagging()) std::this_thread::sleep_for(std::chrono::microseconds(100));
     ctl.cycle(now);
+    if (mcfg.source_behind && mcfg.source_behind() && !ctl.finished()) {
+      // The same cycle again once the producer has had a moment: no tick.
+      std::this_thread::sleep_for(std::chrono::microseconds(50));
+      last_wall = clock::now();
+      continue;
+    }
     // Link faults are wall-time events (timeouts, the board's watchdog): while
     // the link is down the simulation runs at least in real time, so that the
     // board moves on, blind, for as long as it would on a real machine.

@@ -72,6 +72,11 @@ struct SimMachineConfig {
   // False: the result's executed list stays empty (its counts are kept), so
   // that memory does not grow with the job (kerf sim).
   bool keep_executed = true;
+  // True when the job source had nothing ready for the controller since the
+  // last call (a streamed job's producer behind: job_watch.hpp). The
+  // producer is not simulated: simulated time waits for it, as for the
+  // journal, so a run takes the same simulated time however fast it is read.
+  std::function<bool()> source_behind;
   // Called about every 0.1 s of wall time (not at all when empty).
   std::function<void(const SimProgress&)> progress;
 };
