@@ -202,6 +202,7 @@ int run_sim(const SimOptions& given) {
   settings.tol = tol;
   settings.feed = feed;
   settings.dry_run = opts.dry_run;
+  settings.whole = opts.whole_job;
   std::unique_ptr<SimJob> job;
   if (const int rc = load_sim_job(opts.file, cfg, settings, job); rc != 0) return rc;
 

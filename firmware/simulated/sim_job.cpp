@@ -217,7 +217,7 @@ void StreamedSimJob::plot_points(PlotKeeper& plot) {
 
 int load_sim_job(const std::string& file, const config::Config& cfg, const SimJobSettings& s,
                  std::unique_ptr<SimJob>& out) {
-  if (!file.empty()) {  // the demo job is compiled in (43 segments): held whole
+  if (!file.empty() && !s.whole) {  // the demo job is compiled in (43 segments): held whole
     auto streamed = std::make_unique<StreamedSimJob>();
     if (const int rc = streamed->load(file, cfg, s); rc != 0) return rc;
     out = std::move(streamed);

@@ -23,6 +23,7 @@ struct SimJobSettings {
   double tol = 0.025;      // mm
   double feed = 0;         // mm/min, the cut feed
   bool dry_run = false;    // --dry-run: torch and gas outputs held off
+  bool whole = false;      // read and fit the file whole first (SimOptions::whole_job)
 };
 
 class SimJob {
@@ -47,7 +48,7 @@ class SimJob {
   virtual const std::string& file() const = 0;
 };
 
-// The job of `file` (empty: the demo). Prints "kerf: ..." and returns the
+// The job of `file` (empty: the demo), streamed unless s.whole. Prints "kerf: ..." and returns the
 // exit code (2 bad input, 1 otherwise) on failure; 0 with `out` set.
 int load_sim_job(const std::string& file, const config::Config& cfg, const SimJobSettings& s,
                  std::unique_ptr<SimJob>& out);
