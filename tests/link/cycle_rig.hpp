@@ -108,11 +108,13 @@ struct CycleRig {
   double t = 0;
   bool pace_journal = true;  // as the simulator: simulated time waits while the journal writer lags
 
-  CycleRig(const control::ControllerConfig& cfg, control::Journal* journal) {
+  // source: the job to run instead of z_job() (a streamed one).
+  CycleRig(const control::ControllerConfig& cfg, control::Journal* journal, control::JobSource* source = nullptr) {
     std::string err;
     plant = simulated::make_modbus_plant(machine, cfg.link_watchdog_s, err);
     if (!plant) throw std::runtime_error("plant: " + err);
-    ctl = std::make_unique<control::Controller>(job, cfg, plant->link(), gpio, journal);
+    ctl = source ? std::make_unique<control::Controller>(*source, cfg, plant->link(), gpio, journal)
+                 : std::make_unique<control::Controller>(job, cfg, plant->link(), gpio, journal);
   }
   // Cycles until finished (or max_s of simulated time); around each
   // Controller::cycle call `around(true)` before and `around(false)` after.

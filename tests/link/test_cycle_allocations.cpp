@@ -11,6 +11,7 @@
 #include <cstdio>
 
 #include "alloc_trap.hpp"
+#include "control/streamed_job.hpp"
 #include "cycle_rig.hpp"
 #include "kerf/hal/can/csp_segment_link.hpp"
 
@@ -56,6 +57,62 @@ TEST(CycleAllocations, ControllerCycleOverModbusWithJournalDoesNotAllocate) {
   EXPECT_EQ(journal->state().last_completed, 11);
   EXPECT_TRUE(journal->state().finished);
   std::remove(path.c_str());
+}
+
+// The same over kerf run's streamed job (control/streamed_job.hpp): a
+// G-code program with z moves before and after each path, more segments than
+// the producer's ring holds. Its producer thread reads, fits and allocates;
+// the cycle only pops the ring.
+TEST(CycleAllocations, ControllerCycleOverAStreamedJobDoesNotAllocate) {
+  const std::string file = ::testing::TempDir() + "kerf_cycle_" + std::to_string(::getpid()) + "_stream.ngc";
+  {
+    std::FILE* f = std::fopen(file.c_str(), "w");
+    ASSERT_NE(f, nullptr);
+    std::fprintf(f, "G21 G90\n");
+    for (int p = 0; p < 24; ++p) {
+      const double x0 = 12.0 * (p % 6), y0 = 3.0 * (p / 6);
+      std::fprintf(f, "G0 Z5\nG0 X%.3f Y%.3f\nG1 Z1.5 F600\nM3 S1\n", x0, y0);
+      for (int k = 1; k <= 48; ++k) std::fprintf(f, "G1 X%.3f Y%.3f F3000\n", x0 + 0.2 * k, y0 + (k % 2) * 0.3);
+      std::fprintf(f, "M5\nG0 Z10\n");
+    }
+    std::fclose(f);
+  }
+  control::StreamedJobSetup s;
+  s.criterion = job::Criterion::band;
+  s.tol = 0.01;
+  s.feed_mm_s = 50.0;
+  s.max_feed_mm_s = 100.0;
+  s.interp.z_axis = true;
+  control::StreamedJob streamed;
+  std::string err;
+  ASSERT_EQ(streamed.open(file, s, err), 0) << err;
+  ASSERT_EQ(streamed.prime(err), 0) << err;
+  const std::string path = temp_journal("stream");
+  auto journal = control::Journal::create(path, streamed.id(), err);
+  ASSERT_TRUE(journal) << err;
+  CycleRig run(quick_controller(), journal.get(), &streamed.source());
+  run.ctl->start({});
+  long cycles = 0;
+  alloc_trap_start();
+  alloc_trap_pause();
+  const bool done = run.run(300.0, [&](bool on) {
+    on ? alloc_trap_resume() : alloc_trap_pause();
+    cycles += on;
+  });
+  ASSERT_TRUE(done);
+  const control::RunReport& r = run.ctl->report();
+  ASSERT_EQ(r.state, control::State::done) << r.reason;
+  const control::StreamTotals t = streamed.totals();
+  EXPECT_GT(t.segments, 1024u) << "more than the ring holds";
+  EXPECT_EQ(r.completed_this_run, t.segments);
+  EXPECT_EQ(r.pierces, 24u);
+  EXPECT_GE(r.z_moves, 48u);
+  std::printf("Controller::cycle over a streamed job: %ld allocations in %ld cycles (%zu segments, %.1f s simulated)\n",
+              alloc_trap_count(), cycles, t.segments, run.t);
+  EXPECT_EQ(alloc_trap_count(), 0);
+  EXPECT_TRUE(journal->state().finished);
+  std::remove(path.c_str());
+  std::remove(file.c_str());
 }
 
 // Three drives whose actual position follows the target in the same SYNC.

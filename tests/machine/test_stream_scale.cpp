@@ -1,7 +1,8 @@
-// A streamed point job's memory does not grow with its length: the first
-// pass, the producer thread, its ring and the controller pulling from it
-// (control/ring_job_source.hpp) at 1e4, 1e5 and 1e6 points, each run in a
-// child process for its own peak RSS. Label scale (tests/machine/CMakeLists.txt).
+// A streamed point job's memory does not grow with its length: the
+// StreamedJob (control/streamed_job.hpp: the id's pass over the bytes, the
+// producer thread, its ring, the controller pulling from its source) at 1e4,
+// 1e5 and 1e6 points in paths of 2000, each run in a child process for its
+// own peak RSS. Label scale (tests/machine/CMakeLists.txt).
 #include <gtest/gtest.h>
 
 #include <sys/resource.h>
@@ -12,8 +13,7 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "control/point_job_pass.hpp"
-#include "control/ring_job_source.hpp"
+#include "control/streamed_job.hpp"
 #include "simulated/sim_machine.hpp"
 #include "simulated/sim_plant.hpp"
 #include "fake_gpio.hpp"
@@ -21,38 +21,36 @@
 namespace kerf::test {
 namespace {
 
-// A zigzag of n points (about one segment per two points), written line by line.
+// A zigzag of n points (about one segment per two points) in paths of 2000, written line by line.
 std::string write_zigzag(long n) {
   const std::string dir = std::filesystem::temp_directory_path() / ("kerf_stream_scale_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   const std::string path = dir + "/zigzag_" + std::to_string(n) + ".txt";
   std::FILE* f = std::fopen(path.c_str(), "w");
-  for (long k = 0; k < n; ++k) std::fprintf(f, "%.3f %.3f\n", 0.2 * static_cast<double>(k % 2000), (k % 2) * 0.3 + 0.001 * static_cast<double>(k / 2000));
+  for (long k = 0; k < n; ++k) {
+    if (k > 0 && k % 2000 == 0) std::fprintf(f, "\n");
+    std::fprintf(f, "%.3f %.3f\n", 0.2 * static_cast<double>(k % 2000), (k % 2) * 0.3 + 0.001 * static_cast<double>(k / 2000));
+  }
   std::fclose(f);
   return path;
 }
 
-control::JobStreamSetup setup() {
-  control::JobStreamSetup s;
+control::StreamedJobSetup setup() {
+  control::StreamedJobSetup s;
   s.criterion = job::Criterion::vertex;
   s.tol = 0.01;
-  s.window = 64;
   s.feed_mm_s = 2000.0;
   return s;
 }
 
 // The child: 0 when the whole job was cut, each segment once.
 int stream_run(const std::string& file) {
-  control::JobSummary summary;
+  control::StreamedJob streamed;
   std::string error;
-  if (!control::first_pass(file, setup(), summary, error)) return 2;
+  if (streamed.open(file, setup(), error) != 0 || streamed.prime(error) != 0) return 2;
   rusage u{};
   ::getrusage(RUSAGE_SELF, &u);
-  std::printf("  after the first pass: %.1f MB\n", static_cast<double>(u.ru_maxrss) / 1024.0);
-  auto ring = std::make_unique<control::JobRing>();
-  control::PointFileProducer producer;
-  if (!producer.start(file, setup(), *ring, error)) return 3;
-  control::RingJobSource source(*ring, summary, producer.error());
+  std::printf("  primed: %.1f MB\n", static_cast<double>(u.ru_maxrss) / 1024.0);
   FakeGpio gpio;
   gpio.record_watchdog = false;  // an edge every cycle: the fixture's record would grow, not the controller
   control::ControllerConfig cfg;
@@ -62,11 +60,12 @@ int stream_run(const std::string& file) {
   m.max_sim_s = 1e6;
   std::unique_ptr<simulated::SimPlant> plant = simulated::make_modbus_plant(m, cfg.link_watchdog_s, error);
   if (!plant) return 4;
-  const simulated::SimMachineResult r = simulated::run_sim_machine(source, cfg, m, *plant, gpio, nullptr, {});
-  producer.join();
-  std::printf("  %zu segments, %.0f s simulated\n", summary.segments, r.sim_s);
-  const bool ok = r.setup_error.empty() && r.run.state == control::State::done &&
-                  r.run.completed_this_run == summary.segments && source.popped() == summary.segments;
+  const simulated::SimMachineResult r =
+      simulated::run_sim_machine(streamed.source(), cfg, m, *plant, gpio, nullptr, {});
+  const control::StreamTotals t = streamed.totals();
+  std::printf("  %zu segments in %zu paths, %.0f s simulated\n", t.segments, t.paths, r.sim_s);
+  const bool ok = r.setup_error.empty() && r.run.state == control::State::done && t.ended &&
+                  r.run.completed_this_run == t.segments && streamed.source().segment_count() == t.segments;
   return ok ? 0 : 5;
 }
 

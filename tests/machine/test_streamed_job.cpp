@@ -239,6 +239,38 @@ TEST(StreamedJob, CutsTheWholeJobsSegmentsOnTheBoard) {
   EXPECT_EQ(streamed.piece(f.job.segment_count(), nullptr), nullptr);
 }
 
+// The first segment runs on the board before the producer has read the file
+// to its end (the ring holds fewer items than the job has).
+TEST(StreamedJob, TheFirstSegmentRunsBeforeTheFileIsReadToItsEnd) {
+  const std::string file = zigzags_file("first.ngc", 40);
+  control::StreamedJob streamed;
+  std::string error;
+  ASSERT_EQ(streamed.open(file, setup(false, false), error), 0) << error;
+  ASSERT_EQ(streamed.prime(error), 0) << error;
+  FakeGpio gpio;
+  control::ControllerConfig cfg;
+  cfg.pierce_delay_s = 0.02;
+  simulated::SimMachineConfig m;
+  bool seen = false;
+  control::StreamTotals at_first;
+  m.trace_sink = [&](const sim::TraceSample& t) {
+    if (t.seq == 0 || seen) return;
+    seen = true;
+    at_first = streamed.totals();
+  };
+  std::unique_ptr<simulated::SimPlant> plant = simulated::make_modbus_plant(m, cfg.link_watchdog_s, error);
+  ASSERT_TRUE(plant != nullptr) << error;
+  const simulated::SimMachineResult r = simulated::run_sim_machine(streamed.source(), cfg, m, *plant, gpio, nullptr, {});
+  ASSERT_EQ(r.run.state, control::State::done) << r.run.reason;
+  const control::StreamTotals t = streamed.totals();
+  ASSERT_TRUE(seen);
+  std::printf("the first segment ran with %zu of %zu paths (%zu of %zu segments) handed on\n", at_first.paths, t.paths,
+              at_first.segments, t.segments);
+  EXPECT_FALSE(at_first.ended) << "the file was read to its end before the first segment ran";
+  EXPECT_LT(at_first.segments, t.segments);
+  EXPECT_EQ(r.run.completed_this_run, t.segments);
+}
+
 // Stopped by a drive fault after more segments than the source keeps, then
 // resumed from the journal by a new StreamedJob: each segment once; the
 // outputs before the resumed path are set again. Another file is refused.
