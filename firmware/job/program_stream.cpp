@@ -1,5 +1,7 @@
 #include "job/program_stream.hpp"
 
+#include <filesystem>
+#include <system_error>
 #include <utility>
 
 #include "job/program_window.hpp"
@@ -45,7 +47,10 @@ bool open_program_stream(const std::string& file, const InterpSettings& settings
                          std::string& error) {
   error.clear();
   ProgramScan scan;
-  const bool whole = options.whole || file == "-" ||
+  // A pipe (stdin, a named pipe) cannot be read twice: it is read whole.
+  std::error_code ec;
+  const bool regular = std::filesystem::is_regular_file(file, ec);
+  const bool whole = options.whole || !regular ||
                      (scan_program(file, settings, options.part_bytes, scan, error) &&
                       (scan.o_words || scan.torch_unknown));
   if (whole) {

@@ -69,7 +69,8 @@ struct ProgramStreamOptions {
 
 // The stream of a G-code file: false with "FILE:LINE: reason" for what
 // read_gcode_program refuses before its first path. A file is read in a
-// window (job/program_window.hpp) unless it is stdin ("-"), it has O-words
+// window (job/program_window.hpp) unless it is no regular file (stdin "-",
+// a pipe: it cannot be read twice), it has O-words
 // (the flow jumps), or its torch word is computed: those are read whole.
 // The window reading refuses at open what read_gcode refuses (a line that
 // does not parse, anywhere in the file); what the interpreter refuses, and

@@ -6,8 +6,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <thread>
+
+#include <sys/stat.h>
 #include <fstream>
 #include <memory>
 #include <string>
@@ -88,16 +93,18 @@ TEST(ProgramWindow, EveryCorpusFileGivesWhatTheWholeReadingGives) {
   std::size_t files = 0, windowed = 0;
   for (const char* dir : {"data/gcode", "data/print", "fuzz/corpus/gcode", "cli/bad_input", "cli/cases"})
     for (const fs::path& f : files_in(tests / dir)) {
+      // Every line boundary a part boundary; the large files (up to 1.1 MB) once so.
       const bool small = fs::file_size(f) < 100000;
-      for (const std::size_t part : {std::size_t{64}, std::size_t{1} << 20}) {
-        InterpSettings plain;
-        const bool w = expect_same(f.string(), kerf_test::interp_case_settings(), MachineState{}, part);
-        expect_same(f.string(), plain, MachineState{}, part);
-        plain.z_axis = true;
-        if (small) expect_same(f.string(), plain, MachineState{}, part);
-        if (part == 64) files += 1, windowed += w;
-      }
-      if (small) expect_same(f.string(), kerf_test::interp_case_settings(), MachineState{}, 1);
+      const InterpSettings cases = kerf_test::interp_case_settings();
+      InterpSettings plain, z_axis;
+      z_axis.z_axis = true;
+      windowed += expect_same(f.string(), cases, MachineState{}, 64);
+      ++files;
+      expect_same(f.string(), cases, MachineState{}, std::size_t{1} << 20);
+      expect_same(f.string(), plain, MachineState{}, small ? 64 : 4096);
+      if (!small) continue;
+      expect_same(f.string(), z_axis, MachineState{}, 64);
+      expect_same(f.string(), cases, MachineState{}, 1);
     }
   std::printf("%zu files, %zu read in a window (the rest have O-words)\n", files, windowed);
   EXPECT_GE(files, 60u);
@@ -210,6 +217,97 @@ TEST(ProgramWindow, LineEndsAreTheWholeFilesInEveryPart) {
     for (const std::size_t part : {std::size_t{1}, std::size_t{5}, std::size_t{64}})
       expect_same(f, InterpSettings{}, MachineState{}, part);
   }
+}
+
+// A named pipe cannot be read twice (the scan, then the window): it is read whole.
+TEST(ProgramWindow, APipeIsReadWhole) {
+  const std::string text = "G0 X0 Y0\nM3\nG1 X10 F600\nG1 Y10\nM5\nM2\n";
+  const std::string plain = write_file("kerf_window_plain.ngc", text);
+  const std::string fifo = ::testing::TempDir() + "kerf_window_fifo.ngc";
+  std::remove(fifo.c_str());
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  std::thread writer([&] { std::ofstream(fifo, std::ios::binary) << text; });
+  const Reading p = read(fifo, InterpSettings{}, MachineState{}, false, 64);
+  writer.join();
+  std::remove(fifo.c_str());
+  ASSERT_TRUE(p.opened) << p.error;
+  EXPECT_FALSE(p.window);
+  const Reading w = read(plain, InterpSettings{}, MachineState{}, false, 64);
+  EXPECT_TRUE(w.window);
+  EXPECT_EQ(p.d.items, w.d.items);
+  EXPECT_EQ(p.d.paths, 1u);
+}
+
+}  // namespace
+
+namespace {
+
+// Random programs of the constructs that shape paths (rapids, feeds, arcs,
+// Z changes with the torch on and off, the torch, dwells, pauses, outputs,
+// feed %, tolerances, comments, parameters), read both ways with and without
+// a z axis, in parts of 1 and 7 bytes: the same items.
+std::string random_program(unsigned seed) {
+  std::uint64_t s = seed * 6364136223846793005ull + 1442695040888963407ull;
+  auto next = [&](int n) {
+    s = s * 6364136223846793005ull + 1442695040888963407ull;
+    return static_cast<int>((s >> 33) % static_cast<std::uint64_t>(n));
+  };
+  std::string t = "G21 G90\n";
+  double x = 0, y = 0;
+  char line[160];
+  for (int k = 0; k < 60; ++k) {
+    const double nx = next(200) / 10.0, ny = next(200) / 10.0, z = next(3) * 1.5;
+    switch (next(14)) {
+      case 0: std::snprintf(line, sizeof line, "G0 X%.1f Y%.1f\n", nx, ny), x = nx, y = ny; break;
+      case 1: std::snprintf(line, sizeof line, "M3\n"); break;
+      case 2: std::snprintf(line, sizeof line, "M5\n"); break;
+      case 3: std::snprintf(line, sizeof line, "G1 Z%.1f F300\n", z); break;
+      case 4: std::snprintf(line, sizeof line, "G0 X%.1f Y%.1f Z%.1f\n", nx, ny, z), x = nx, y = ny; break;
+      case 5: std::snprintf(line, sizeof line, "G4 P0.%d\n", next(9)); break;
+      case 6: std::snprintf(line, sizeof line, "M%d\n", next(2) == 0 ? 0 : 1); break;
+      case 7: std::snprintf(line, sizeof line, "M6%d P%d\n", 2 + next(4), next(3)); break;
+      case 8: std::snprintf(line, sizeof line, "M67 E3 Q%d\n", 10 + next(90)); break;
+      case 9: std::snprintf(line, sizeof line, "G64 P0.0%d (tol)\n", 1 + next(9)); break;
+      case 10: {  // an arc about a centre one to three mm away, to a point on its circle
+        const double r = 1 + next(3), a = next(360) * 3.14159265358979 / 180;
+        const double cx = x - r * std::cos(a), cy = y - r * std::sin(a), b = a + (1 + next(300)) * 0.01;
+        const double ex = cx + r * std::cos(b), ey = cy + r * std::sin(b);
+        std::snprintf(line, sizeof line, "G%d X%.6f Y%.6f I%.6f J%.6f F%d\n", next(2) == 0 ? 2 : 3, ex, ey, cx - x,
+                      cy - y, 500 + next(5) * 100);
+        x = ex, y = ey;
+        break;
+      }
+      case 11: std::snprintf(line, sizeof line, "#1 = %.1f\nG1 X[#1 + 1] Y%.1f Z%.1f\n", nx, ny, z), x = nx + 1, y = ny; break;
+      default: std::snprintf(line, sizeof line, "G1 X%.1f Y%.1f F%d ; cut\n", nx, ny, 600 + next(3) * 300), x = nx, y = ny;
+    }
+    t += line;
+  }
+  if (next(2) == 0) t += "M2\n";
+  return t;
+}
+
+TEST(ProgramWindow, RandomProgramsGiveWhatTheWholeReadingGives) {
+  std::size_t cut = 0, paths = 0, actions = 0;
+  for (unsigned seed = 0; seed < 120; ++seed) {
+    const std::string f = write_file("kerf_window_random.ngc", random_program(seed));
+    InterpSettings s = kerf_test::interp_case_settings();
+    const Reading r = read(f, s, MachineState{}, false, 64);
+    cut += r.d.ok;
+    paths += r.d.paths;
+    actions += r.d.actions;
+    for (const bool z : {false, true}) {
+      s.z_axis = z;
+      expect_same(f, s, MachineState{}, 1);
+      expect_same(f, s, MachineState{}, 7);
+    }
+    if (::testing::Test::HasFailure()) {
+      ADD_FAILURE() << "seed " << seed << ":\n" << random_program(seed);
+      break;
+    }
+  }
+  std::printf("120 programs: %zu cut, %zu paths, %zu actions\n", cut, paths, actions);
+  EXPECT_GE(cut, 60u) << "the programs are mostly correct";
+  EXPECT_GE(paths, 400u);
 }
 
 }  // namespace
