@@ -267,7 +267,10 @@ int run_sim(const SimOptions& given) {
         if (p != nullptr) path = p->path;
         return p != nullptr;
       },
-      watch.path_count(), watch.segment_count());
+      [&watch](std::size_t& paths, std::size_t& segments) {
+        paths = watch.path_count();
+        segments = watch.segment_count();
+      });
   if (progress.on()) mcfg.progress = [&progress](const SimProgress& p) { progress.show(p); };
   can_cfg.trace_sink = mcfg.trace_sink;
   can_cfg.progress = mcfg.progress;
