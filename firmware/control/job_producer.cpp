@@ -33,7 +33,10 @@ void JobProducer::start(std::unique_ptr<job::ProgramStream> program, std::unique
   ring_ = &ring;
   quiet_ = quiet;
   totals_.gcode = program_ != nullptr;
-  if (program_) totals_.summary.points.file = program_->summary().points.file;
+  if (program_) {  // known before the first item: a stopped run's report says it too
+    totals_.summary.points.file = file_;
+    totals_.summary.dry_run = program_->dry_run();
+  }
   thread_ = std::thread([this] { run(); });
 }
 

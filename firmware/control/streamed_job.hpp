@@ -26,7 +26,9 @@
 // another file or other settings have another id, which the journal refuses.
 //
 // Threads: open(), prime(), source() and piece() belong to the controller's
-// thread; totals() may be called from any thread.
+// thread; totals() may be called from any thread, except while source().locate()
+// reads the file again (a restart after a reset behind the history: it
+// replaces the producer).
 #pragma once
 
 #include <cstddef>

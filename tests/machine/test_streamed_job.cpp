@@ -174,6 +174,28 @@ TEST(StreamedJob, TheSourceGivesTheWholeJobsCommandsOnTheCorpus) {
   EXPECT_GT(moves, 0u);
 }
 
+// Point files (paths separated by blank lines), read path by path: the whole job's segments.
+TEST(StreamedJob, PointFilesStreamTheWholeJobsSegments) {
+  std::vector<std::string> files;
+  for (const auto& e : fs::directory_iterator(KERF_EXAMPLES_DIR))
+    if (e.path().extension() == ".txt") files.push_back(e.path().string());
+  std::sort(files.begin(), files.end());
+  ASSERT_GE(files.size(), 2u);
+  std::size_t paths = 0;
+  for (const std::string& file : files) {
+    const control::StreamedJobSetup s = setup(false, false);
+    const control::FittedJob f = whole(file, s);
+    control::WholeJobSource oracle(f.job);
+    control::StreamedJob streamed;
+    std::string error;
+    ASSERT_EQ(streamed.open(file, s, error), 0) << error;
+    ASSERT_EQ(streamed.prime(error), 0) << error;
+    EXPECT_EQ(drain(streamed.source()), drain(oracle)) << file;
+    paths += f.job.paths.size();
+  }
+  EXPECT_GT(paths, files.size()) << "some file has many paths";
+}
+
 simulated::SimMachineResult run(control::JobSource& source, control::MemoryOutputs& outputs,
                                 control::Journal* journal = nullptr, const control::ResumePoint& from = {},
                                 std::vector<simulated::BoardFault> faults = {}) {
@@ -323,6 +345,41 @@ TEST(StreamedJob, AResumeFromTheJournalCutsEachSegmentOnce) {
   EXPECT_NE(finer.id().hash, id.hash);
   again.reset();
   EXPECT_FALSE(control::Journal::resume(journal_path, other.id(), error));
+}
+
+// locate() of a segment behind the source's history, or in a path before the
+// newest, reads and fits the file again from its start: the same segment.
+TEST(StreamedJob, LocateBehindTheHistoryReadsTheFileAgain) {
+  const std::string file = zigzags_file("rewind.ngc", 40);
+  const control::StreamedJobSetup s = setup(false, false);
+  const control::FittedJob f = whole(file, s);
+  control::WholeJobSource oracle(f.job);
+  control::StreamedJob streamed;
+  std::string error;
+  ASSERT_EQ(streamed.open(file, s, error), 0) << error;
+  ASSERT_EQ(streamed.prime(error), 0) << error;
+  control::JobSource& src = streamed.source();
+  const std::size_t n = f.job.segment_count();
+  ASSERT_GT(n, control::StreamedJob::kHistory + 200);
+  const auto same = [&](std::size_t k) {
+    const control::SegmentPlace want = oracle.locate(k);
+    const control::SegmentPlace got = src.locate(k);
+    EXPECT_EQ(got.path, want.path) << k;
+    EXPECT_EQ(got.index, want.index) << k;
+    EXPECT_EQ(describe(got.segment), describe(want.segment)) << k;
+    EXPECT_EQ(got.start, want.start) << k;
+    const control::PathHead* h = src.open(got.path);
+    ASSERT_NE(h, nullptr) << k;
+    EXPECT_EQ(h->first_segment, k - got.index) << k;
+  };
+  same(n - 10);  // forward, past the history's length
+  same(n - 60);  // in the newest path's history: no second reading
+  same(3);       // behind the history: read again
+  same(200);     // forward again
+  same(150);     // an older path: read again
+  const hal::SegmentCommand* c = nullptr;
+  EXPECT_EQ(src.segment(src.locate(150).index + 1, c), control::Pull::ready);
+  EXPECT_EQ(describe(*c), describe(oracle.locate(151).segment));
 }
 
 // A path outside the soft limits far into the file: the job has started
