@@ -9,6 +9,7 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -40,12 +41,13 @@ struct Run {
   std::string trace, report;
 };
 
-Run sim(const std::string& file, const std::string& link, bool whole) {
+Run sim(const std::string& file, const std::string& link, bool whole, const std::string& criterion) {
   const std::string dir = ::testing::TempDir() + "kerf_sim_stream_" + std::to_string(::getpid()) + "_";
   simulated::SimOptions o;
   o.file = file;
   o.link = link;
   o.whole_job = whole;
+  o.criterion = criterion;
   o.trace = dir + "trace.csv";
   o.report = dir + "report.json";
   Run r;
@@ -57,8 +59,8 @@ Run sim(const std::string& file, const std::string& link, bool whole) {
   return r;
 }
 
-void expect_same_run(const std::string& file, const std::string& link) {
-  const Run whole = sim(file, link, true), streamed = sim(file, link, false);
+void expect_same_run(const std::string& file, const std::string& link, const std::string& criterion = {}) {
+  const Run whole = sim(file, link, true, criterion), streamed = sim(file, link, false, criterion);
   ASSERT_EQ(whole.rc, 0) << file;
   EXPECT_EQ(streamed.rc, whole.rc) << file;
   EXPECT_GT(whole.trace.size(), 1000U) << file;
@@ -82,6 +84,42 @@ TEST(SimStream, AProgramWithMaterialsRunsAsTheWholeJobOnCan) {
 TEST(SimStream, APointFileOfFourPathsRunsAsTheWholeJob) {
   expect_same_run(kGcode + "/../../../firmware/examples/demo_job.txt", "modbus-tcp");
   expect_same_run(kGcode + "/../../../firmware/examples/demo_job.txt", "can");
+}
+
+}  // namespace
+}  // namespace kerf::test
+
+namespace kerf::test {
+namespace {
+
+// 1e5 lines in paths of 500 (as test_sim_scale.cpp's): the producer's ring
+// holds about 90 paths, so it falls behind the run after the first ring.
+std::string write_long_program(const std::string& path) {
+  std::FILE* f = std::fopen(path.c_str(), "w");
+  if (f == nullptr) return {};
+  std::fprintf(f, "G21 G90\nF6000\n");
+  for (long row = 0; row < 200; ++row) {
+    const double y0 = 10.0 + 3.0 * static_cast<double>(row % 100), x0 = 10.0 + 40.0 * static_cast<double>(row / 100);
+    std::fprintf(f, "G0 X%.3f Y%.3f\nM3 S1\n", x0, y0);
+    for (long j = 0; j < 500; ++j) {
+      const double t = 0.05 * static_cast<double>(j);
+      std::fprintf(f, "G1 X%.3f Y%.3f\n", x0 + t, y0 + std::sin(t / 2.0));
+    }
+    std::fprintf(f, "M5\n");
+  }
+  std::fprintf(f, "M2\n");
+  return std::fclose(f) == 0 ? path : std::string();
+}
+
+// Simulated time stands still while the producer is behind: the run is the
+// whole job's however slowly the file is fitted (label scale: a few seconds).
+TEST(SimStreamScale, AProducerBehindTheRunLeavesTheRunAsTheWholeJobs) {
+  const std::string file =
+      write_long_program(::testing::TempDir() + "kerf_sim_stream_long_" + std::to_string(::getpid()) + ".ngc");
+  ASSERT_FALSE(file.empty());
+  expect_same_run(file, "modbus-tcp", "vertex");  // the band fit takes 3 times as long
+  expect_same_run(file, "can", "vertex");
+  std::remove(file.c_str());
 }
 
 }  // namespace
