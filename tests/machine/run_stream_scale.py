@@ -18,18 +18,18 @@ import subprocess
 import sys
 import time
 
-PATHS, LEG, STEP = 16, 50, 0.002  # paths; points a zigzag leg (a segment), mm between points along x
+PATHS, LEG, STEP = 64, 50, 0.002  # paths; points a zigzag leg (a segment), mm between points along x
 
 
 def write_job(path, lines, kind):
-    """16 zigzag paths: legs of 50 points 2 um apart at +-45 degrees (each leg a
+    """64 zigzag paths: legs of 50 points 2 um apart at +-45 degrees (each leg a
     segment: the fit's cost per point stays small, and so does the distance)."""
     n = max(2 * LEG, lines // PATHS - 3)  # points a path (the G-code's G0, M3, M5 besides)
     with open(path, "w") as f:
         if kind == "ngc":
             f.write("G21 G90\n")
         for p in range(PATHS):
-            x0, y0 = 5.0, 5.0 + 2.0 * p
+            x0, y0 = 5.0, 5.0 + 1.0 * p
             if kind == "ngc":
                 f.write(f"G0 X{x0:.4f} Y{y0:.4f}\nM3 S1\n")
             elif p > 0:
