@@ -30,6 +30,13 @@ CanMachineConfig can_machine_config(const config::Config& cfg) {
 SimMachineResult run_can_sim_machine(const control::Job& job, const control::ControllerConfig& ccfg,
                                      const CanMachineConfig& mcfg, hal::Gpio& gpio, control::Journal* journal,
                                      const control::ResumePoint& from) {
+  control::WholeJobSource source(job);
+  return run_can_sim_machine(source, ccfg, mcfg, gpio, journal, from);
+}
+
+SimMachineResult run_can_sim_machine(control::JobSource& job, const control::ControllerConfig& ccfg,
+                                     const CanMachineConfig& mcfg, hal::Gpio& gpio, control::Journal* journal,
+                                     const control::ResumePoint& from) {
   SimMachineResult res;
   std::unique_ptr<CanPlant> plant = make_can_plant(mcfg.can, res.setup_error);
   if (!plant) return res;
@@ -38,6 +45,9 @@ SimMachineResult run_can_sim_machine(const control::Job& job, const control::Con
   // Over SocketCAN each SYNC waits for the wall clock already.
   m.speed = mcfg.can.iface.empty() ? mcfg.speed : 0.0;
   m.max_sim_s = mcfg.max_sim_s;
+  m.time_limit = mcfg.time_limit;
+  m.keep_executed = mcfg.keep_executed;
+  m.source_behind = mcfg.source_behind;
   m.trace_sink = mcfg.trace_sink;
   m.progress = mcfg.progress;
   for (const CanFault& f : mcfg.faults) m.faults.push_back({can_fault_kind(f.kind), f.at_s, 0.0});

@@ -26,6 +26,9 @@ struct CanMachineConfig {
   double speed = 0.0;           // simulated s per wall s; 0 = as fast as possible (in-process bus only)
   std::vector<CanFault> faults;
   double max_sim_s = 4 * 3600.0;
+  std::function<double()> time_limit;  // as SimMachineConfig's
+  bool keep_executed = true;           // as SimMachineConfig's
+  std::function<bool()> source_behind; // as SimMachineConfig's
   std::function<void(const sim::TraceSample&)> trace_sink;  // as SimMachineConfig's
   std::function<void(const SimProgress&)> progress;
 };
@@ -34,6 +37,10 @@ struct CanMachineConfig {
 CanMachineConfig can_machine_config(const config::Config& cfg);
 
 SimMachineResult run_can_sim_machine(const control::Job& job, const control::ControllerConfig& ccfg,
+                                     const CanMachineConfig& mcfg, hal::Gpio& gpio, control::Journal* journal,
+                                     const control::ResumePoint& from);
+// The same with the job as it streams (control/job_source.hpp).
+SimMachineResult run_can_sim_machine(control::JobSource& job, const control::ControllerConfig& ccfg,
                                      const CanMachineConfig& mcfg, hal::Gpio& gpio, control::Journal* journal,
                                      const control::ResumePoint& from);
 

@@ -98,6 +98,13 @@ std::unique_ptr<SimPlant> make_modbus_plant(const SimMachineConfig& cfg, double 
 SimMachineResult run_sim_machine(const control::Job& job, const control::ControllerConfig& ccfg,
                                  const SimMachineConfig& mcfg, hal::Gpio& gpio, control::Journal* journal,
                                  const control::ResumePoint& from) {
+  control::WholeJobSource source(job);
+  return run_sim_machine(source, ccfg, mcfg, gpio, journal, from);
+}
+
+SimMachineResult run_sim_machine(control::JobSource& job, const control::ControllerConfig& ccfg,
+                                 const SimMachineConfig& mcfg, hal::Gpio& gpio, control::Journal* journal,
+                                 const control::ResumePoint& from) {
   SimMachineResult res;
   std::unique_ptr<SimPlant> plant = make_modbus_plant(mcfg, ccfg.link_watchdog_s, res.setup_error);
   if (!plant) return res;

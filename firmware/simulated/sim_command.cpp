@@ -7,22 +7,18 @@
 #include <cstring>
 #include <memory>
 #include <optional>
-#include <set>
 
 #include "job/fit_job.hpp"
-#include "control/fit_paths.hpp"
-#include "control/program_job.hpp"
-#include "job/gcode_program.hpp"
 #include "io/options.hpp"
 #include "config/config.hpp"
 #include "simulated/can_sim_machine.hpp"
 #include "control/machine_config.hpp"
 #include "control/run_report.hpp"
-#include "control/soft_limits.hpp"
 #include "simulated/sim_machine.hpp"
 #include "io/output_file.hpp"
-#include "io/point_file.hpp"
 #include "io/run_svg.hpp"
+#include "simulated/job_watch.hpp"
+#include "simulated/sim_job.hpp"
 #include "simulated/sim_output.hpp"
 #include "simulated/sim_progress.hpp"
 #include "simulated/trace_recorder.hpp"
@@ -35,10 +31,6 @@ using io::kExitOk;
 using io::kExitUsage;
 
 namespace {
-
-const char* const kDemoJob =
-#include "demo_job.inc"
-    ;
 
 constexpr const char* kFaultKinds =
     "estop, arc-lost, no-arc, limit, hold, cycle-start, reset, drive-fault, stall, link-drop, link-stall, "
@@ -204,50 +196,36 @@ int run_sim(const SimOptions& given) {
     return kExitUsage;
   }
 
-  io::PointFile in;
-  job::GcodeProgram prog;
-  const bool gcode = !demo && job::is_gcode_path(opts.file);
-  if (gcode) {
-    // The simulator keeps the machine state in memory: it starts from the
-    // configured file's offsets (if any) and never writes it.
-    job::MachineState state;
-    if (!cfg.machine.state.empty() && !job::load_machine_state(cfg.machine.state, state, error)) {
-      std::fprintf(stderr, "kerf: sim: machine.state: %s\n", error.c_str());
-      return kExitUsage;
-    }
-    if (!job::read_gcode_program(opts.file, config::interp_settings(cfg, false), state, prog, error)) {
-      std::fprintf(stderr, "%s\n", error.c_str());
-      return kExitUsage;
-    }
-    for (const std::string& n : prog.interp.notes) std::fprintf(stderr, "kerf: sim: %s\n", n.c_str());
-    in = prog.points;
-  } else if (demo) {
-    in = io::parse_points(kDemoJob, "<demo job>");
-    if (!in.ok) {
-      std::fprintf(stderr, "%s\n", io::describe_error(in).c_str());
-      return kExitFailure;
-    }
-  } else if (!job::read_job(opts.file, *criterion, in)) {
-    return kExitUsage;
-  }
-  control::FittedJob fitted;
-  if (const int rc = gcode ? control::fit_program_or_say(prog, *criterion, tol, feed / 60.0, cfg.machine.max_feed / 60.0,
-                                                         fitted, *numeric, &cfg.cut.rules)
-                           : control::fit_paths_or_say(in, *criterion, tol, feed / 60.0, fitted, *numeric, &cfg.cut.rules);
-      rc != 0)
-    return rc;
-  // The whole job inside the table before anything moves, from where the
-  // simulated machine starts (below).
-  const Vec2<double> start = gcode ? Vec2<double>{cfg.sim.start[0], cfg.sim.start[1]} : fitted.job.paths.front().start;
-  if (!control::check_soft_limits(fitted, in, control::soft_limits_of(cfg.machine), &start, error)) {
-    std::fprintf(stderr, "%s\n", error.c_str());
-    return kExitUsage;
-  }
-  if (opts.dry_run) control::hold_outputs_off(fitted.job, true);
+  SimJobSettings settings;
+  settings.criterion = *criterion;
+  settings.numeric = *numeric;
+  settings.tol = tol;
+  settings.feed = feed;
+  settings.dry_run = opts.dry_run;
+  settings.whole = opts.whole_job;
+  std::unique_ptr<SimJob> job;
+  if (const int rc = load_sim_job(opts.file, cfg, settings, job); rc != 0) return rc;
+
+  // The controller reads the job through the watch: the trace, the progress
+  // line, the time limit and the plot take what they need from it as the
+  // run goes, never the whole job.
+  PlotKeeper plot_keep(!opts.plot.empty());
+  TimeBudget budget;
+  budget.cut_feed_mm_min = feed;
+  budget.rapid_mm_min = cfg.machine.rapid_feed;
+  budget.arc_ok_timeout_s = cfg.cut.arc_ok_timeout;
+  budget.pierce_delay_s = cfg.cut.pierce_delay;
+  budget.operator_delay_s = cfg.sim.operator_delay;
+  WatchedJobSource watch(job->source(), budget, [&plot_keep, &job](const PulledSegment& p) {
+    if (!plot_keep.on()) return;
+    Segment<double> piece = p.segment;  // the wire's, where the fitted piece is gone
+    job->piece(p.job, piece);
+    plot_keep.add_piece(piece, p.path);
+  });
 
   std::unique_ptr<control::Journal> journal;
   control::ResumePoint from;
-  if (!control::open_journal(opts.journal, opts.resume, fitted.job, journal, from)) return kExitUsage;
+  if (!open_sim_journal(opts.journal, opts.resume, watch, job->first_pierce(), journal, from)) return kExitUsage;
 
   sim::ScriptedGpio gpio(gopts);
   if (!gpio.add(events, error)) return io::usage_error("--fault: " + error);
@@ -265,36 +243,34 @@ int run_sim(const SimOptions& given) {
   mcfg.rtu = rtu;
   mcfg.speed = speed;
   mcfg.faults = board_faults;
-  // Long enough for any run of this job: every path at the cut feed, a rapid
-  // across the job's extent between paths, each pierce at its timeout, three
-  // times over.
-  double cut_mm = 0.0, extent = 0.0;
-  for (const fit::Piece<double>& p : fitted.pieces) {
-    cut_mm += p.segment.is_arc() ? p.segment.radius() * 6.3 : distance(p.segment.start, p.segment.end);
-    extent = std::max({extent, std::abs(p.segment.end.x), std::abs(p.segment.end.y)});
-  }
-  const double paths = static_cast<double>(fitted.job.paths.size());
-  // The program's own waits (dwells, pauses, M66 timeouts) and its slowest feed.
-  double waits = 0.0;
-  for (const control::JobAction& a : fitted.job.actions)
-    waits += a.kind == job::CanonKind::pause ? cfg.sim.operator_delay + 1.0 : a.value > 0 ? a.value : 0.0;
-  for (const control::CutPath& p : fitted.job.paths)
-    for (const hal::SegmentCommand& c : p.segments) feed = std::min(feed, c.feed * 60.0);
-  mcfg.max_sim_s = std::max(600.0, 3.0 * (cut_mm / (feed / 60.0) + paths * (4.0 * extent / (cfg.machine.rapid_feed / 60.0) +
-                                                                             cfg.cut.arc_ok_timeout + cfg.cut.pierce_delay + 2.0)));
+  // Long enough for any run of this job: what has been read of it at the cut
+  // feed, a rapid across its extent and a pierce per path, three times over.
+  mcfg.time_limit = [&watch] { return watch.budget().limit_s(); };
+  mcfg.keep_executed = can_cfg.keep_executed = false;  // counted only
+  mcfg.source_behind = can_cfg.source_behind = [&watch] { return watch.take_behind(); };
   // The axes power up at the job's first pierce point, as if homed there; a
   // resumed run starts there too and travels to its resume point.
-  mcfg.start = start;
+  mcfg.start = job->start();
 
   // The trace goes to its consumers as the run makes it: memory stays flat
   // however long the job runs.
-  TraceRecorder trace(fitted.pieces, config::z_limits(cfg.machine).configured(), !opts.plot.empty(), kPlotSamples);
+  TraceRecorder trace([&job](std::size_t k, Segment<double>& out) { return job->piece(k, out); },
+                      config::z_limits(cfg.machine).configured(), !opts.plot.empty(), kPlotSamples);
   if (!opts.trace.empty() && !trace.open_csv(opts.trace)) {
     write_or_say("--trace", opts.trace, false);
     return kExitFailure;
   }
   mcfg.trace_sink = [&trace](const sim::TraceSample& t) { trace.take(t); };
-  SimProgressLine progress(fitted.piece_path, fitted.job.paths.size());
+  SimProgressLine progress(
+      [&watch](std::size_t k, std::size_t& path) {
+        const PulledSegment* p = watch.recent(k);
+        if (p != nullptr) path = p->path;
+        return p != nullptr;
+      },
+      [&watch](std::size_t& paths, std::size_t& segments) {
+        paths = watch.path_count();
+        segments = watch.segment_count();
+      });
   if (progress.on()) mcfg.progress = [&progress](const SimProgress& p) { progress.show(p); };
   can_cfg.trace_sink = mcfg.trace_sink;
   can_cfg.progress = mcfg.progress;
@@ -303,23 +279,25 @@ int run_sim(const SimOptions& given) {
     can_cfg.can.start = mcfg.start;
     can_cfg.speed = speed;
     can_cfg.max_sim_s = mcfg.max_sim_s;
+    can_cfg.time_limit = mcfg.time_limit;
     // The controller cycles in whole SYNC periods.
     const double sync_s = can_cfg.can.sync_ms / 1000.0;
     can_cfg.cycle_s = std::max(sync_s, std::round(mcfg.cycle_s / sync_s) * sync_s);
-    res = run_can_sim_machine(fitted.job, ccfg, can_cfg, gpio, journal.get(), from);
+    res = run_can_sim_machine(watch, ccfg, can_cfg, gpio, journal.get(), from);
   } else {
-    res = run_sim_machine(fitted.job, ccfg, mcfg, gpio, journal.get(), from);
+    res = run_sim_machine(watch, ccfg, mcfg, gpio, journal.get(), from);
   }
   progress.clear();
+  job->say_notes();
   if (!res.setup_error.empty()) {
     std::fprintf(stderr, "kerf: sim: %s\n", res.setup_error.c_str());
     return kExitFailure;
   }
 
-  control::RunSummary sum = control::summarise_run(res.run, fitted.job.paths.size(), link, opts.resume, journal.get());
+  control::RunSummary sum = control::summarise_run(res.run, watch.path_count(), link, opts.resume, journal.get());
   // The board's truth: what it executed (with the link down it may run on
   // past what the controller saw and journaled).
-  sum.executed = res.executed.size();
+  sum.executed = static_cast<std::size_t>(res.executed_count);
   sum.torch_on = gpio.torch();
   sum.board_duplicates = res.board.duplicates;
   sum.max_path_deviation_mm = trace.max_deviation();
@@ -327,29 +305,19 @@ int run_sim(const SimOptions& given) {
   sum.wall_s = res.wall_s;
   sum.rt = res.rt;
   sum.rt_histogram = res.rt_histogram;
-  sum.cut_rules = fitted.cut_rules;
-  sum.forced_commits = fitted.job.forced_commits;
-  if (gcode) control::describe_program(prog, sum);
+  job->describe(sum);
   sum.dry_run_option = opts.dry_run;
   if (!journal) {  // no journal: count repeats in this run's own record
-    const std::set<std::int64_t> seen(res.executed.begin(), res.executed.end());
-    sum.executed_total = res.executed.size();
-    sum.duplicates = res.executed.size() - seen.size();
+    sum.executed_total = res.executed_count;
+    sum.duplicates = res.executed_repeats;
   }
 
   io::RunPlot plot;
   if (!opts.plot.empty()) {
-    for (std::size_t p = 0; p < fitted.job.paths.size(); ++p) {
-      const std::size_t b = in.path_begin.empty() ? 0 : in.path_begin[p];
-      const std::size_t e = p + 1 < in.path_begin.size() ? in.path_begin[p + 1] : in.points.size();
-      plot.paths.emplace_back(in.points.begin() + static_cast<std::ptrdiff_t>(b),
-                              in.points.begin() + static_cast<std::ptrdiff_t>(e));
-    }
-    for (const fit::Piece<double>& piece : fitted.pieces) plot.pieces.push_back(piece.segment);
-    plot.piece_path = fitted.piece_path;
+    job->plot_points(plot_keep);
+    plot = plot_keep.take("kerf sim: " + job->file() + " (" + sum.state + ")");
     plot.tol = tol;
     plot.trace = trace.plot_trace();
-    plot.title = "kerf sim: " + in.file + " (" + sum.state + ")";
     for (const control::ActionEvent& a : res.run.actions)
       if (a.kind == job::CanonKind::dwell || a.kind == job::CanonKind::pause)
         plot.marks.push_back({a.at, a.kind == job::CanonKind::dwell ? "dwell" : "pause", a.what});

@@ -66,6 +66,7 @@ SimMachineResult run_sim_machine(control::JobSource& job, const control::Control
                    [](const BoardFault& a, const BoardFault& b) { return a.at_s < b.at_s; });
   std::size_t next_fault = 0;
   const bool keep = !mcfg.trace_sink;  // else the sink takes each sample and nothing grows
+  std::int64_t highest_done = -1;
   if (keep) res.trace.reserve(1 << 16);
   std::uint64_t ticks = 0;
   std::uint32_t last_executed = 0;
@@ -82,7 +83,11 @@ SimMachineResult run_sim_machine(control::JobSource& job, const control::Control
     recent[ticks % recent.size()] = s.position;
     for (std::uint32_t q = last_executed + 1; q <= s.last_executed; ++q) {
       const std::int64_t done = ctl.job_segment_of(q);
-      if (done >= 0 && ctl.completes_job_segment(q)) res.executed.push_back(done);
+      if (done < 0 || !ctl.completes_job_segment(q)) continue;
+      if (mcfg.keep_executed) res.executed.push_back(done);
+      ++res.executed_count;
+      if (done <= highest_done) ++res.executed_repeats;
+      highest_done = std::max(highest_done, done);
     }
     last_executed = std::max(last_executed, s.last_executed);
   };
@@ -110,6 +115,12 @@ SimMachineResult run_sim_machine(control::JobSource& job, const control::Control
     // The journal's writer thread is not simulated: simulated time waits for it.
     while (ctl.journal_lagging()) std::this_thread::sleep_for(std::chrono::microseconds(100));
     ctl.cycle(now);
+    if (mcfg.source_behind && mcfg.source_behind() && !ctl.finished()) {
+      // The same cycle again once the producer has had a moment: no tick.
+      std::this_thread::sleep_for(std::chrono::microseconds(50));
+      last_wall = clock::now();
+      continue;
+    }
     // Link faults are wall-time events (timeouts, the board's watchdog): while
     // the link is down the simulation runs at least in real time, so that the
     // board moves on, blind, for as long as it would on a real machine.
@@ -135,7 +146,7 @@ SimMachineResult run_sim_machine(control::JobSource& job, const control::Control
       const bool still = s.position == recent[(ticks - static_cast<std::uint64_t>(ticks_per_cycle)) % recent.size()];
       tail = still && s.state != hal::BoardState::running ? tail + 1 : 0;
     }
-    if (now > mcfg.max_sim_s) {
+    if (now > mcfg.max_sim_s && (!mcfg.time_limit || now > mcfg.time_limit())) {
       res.setup_error = "the job did not finish within the simulation's time limit";
       break;
     }

@@ -59,6 +59,9 @@ struct SimMachineConfig {
   motion::SoftLimits<double> soft_limits{};  // the board's own check (control::soft_limits_of)
   std::vector<BoardFault> faults;
   double max_sim_s = 600.0;     // give up (a stuck run, a hold never released) after this
+  // When set, the limit past max_sim_s, read as the run goes (a streamed
+  // job's grows as it is read: job_watch.hpp's TimeBudget).
+  std::function<double()> time_limit;
   // Modbus TCP: the link hands its frames to the board's server in this
   // process (hal::ModbusFramePeer) instead of a loopback socket, unless a
   // fault needs the socket (link-drop, link-stall). False: always the socket.
@@ -66,6 +69,14 @@ struct SimMachineConfig {
   // Each trace sample as it is taken; when set, the result's trace stays
   // empty and memory does not grow with simulated time.
   std::function<void(const sim::TraceSample&)> trace_sink;
+  // False: the result's executed list stays empty (its counts are kept), so
+  // that memory does not grow with the job (kerf sim).
+  bool keep_executed = true;
+  // True when the job source had nothing ready for the controller since the
+  // last call (a streamed job's producer behind: job_watch.hpp). The
+  // producer is not simulated: simulated time waits for it, as for the
+  // journal, so a run takes the same simulated time however fast it is read.
+  std::function<bool()> source_behind;
   // Called about every 0.1 s of wall time (not at all when empty).
   std::function<void(const SimProgress&)> progress;
 };
@@ -77,7 +88,9 @@ struct SimMachineResult {
   // segment + 1 being run (0 for a rapid or none), `torch` the torch output,
   // `thc_lock` the board's (gpio.thc_lock is it while the torch is on).
   std::vector<sim::TraceSample> trace;
-  std::vector<std::int64_t> executed;   // job segments completed, in order
+  std::vector<std::int64_t> executed;   // job segments completed, in order (unless !keep_executed)
+  std::uint64_t executed_count = 0;     // the same counted, kept or not
+  std::uint64_t executed_repeats = 0;   // of them, a segment at or before one completed earlier
   hal::BoardStatus board{};             // the board's final status
   std::uint64_t link_resends = 0;
   double sim_s = 0.0;
@@ -91,6 +104,10 @@ SimMachineConfig sim_machine_config(const config::Config& cfg);
 
 // On the Modbus board (TCP or RTU, as mcfg.rtu says).
 SimMachineResult run_sim_machine(const control::Job& job, const control::ControllerConfig& ccfg,
+                                 const SimMachineConfig& mcfg, hal::Gpio& gpio, control::Journal* journal,
+                                 const control::ResumePoint& from);
+// The same with the job as it streams (control/job_source.hpp).
+SimMachineResult run_sim_machine(control::JobSource& job, const control::ControllerConfig& ccfg,
                                  const SimMachineConfig& mcfg, hal::Gpio& gpio, control::Journal* journal,
                                  const control::ResumePoint& from);
 // On any plant (sim_plant.hpp); mcfg's motion and rtu settings are the plant's business then.

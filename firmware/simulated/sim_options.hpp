@@ -29,6 +29,9 @@ struct SimOptions {
   std::string sync_ms;              // can: SYNC period, 1..10 ms (default: the config's)
   std::string iface;                // can: a SocketCAN interface (vcan0); empty: the in-process bus
   std::string file;                 // empty: the built-in demo job
+  // Tests only (no option): the file read and fitted whole before the run,
+  // the oracle a streamed run is compared against.
+  bool whole_job = false;
 };
 
 }  // namespace kerf::simulated

@@ -6,15 +6,14 @@
 
 namespace kerf::simulated {
 
-double sample_deviation(const sim::TraceSample& s, const std::vector<fit::Piece<double>>& pieces) {
+double sample_deviation(Vec2<double> pos, const Segment<double>* const near[3]) {
   // The sample is the drives' position; the segment number is the
   // setpoint's. Drives that lag their setpoints (CAN: a SYNC or two) are
   // still on the previous piece just after a joint, so a sample counts
   // against the nearest of its piece and the pieces either side.
-  const std::size_t k = s.seq - 1;
-  double d = distance_to_segment(pieces[k].segment, s.pos);
-  if (k > 0) d = std::min(d, distance_to_segment(pieces[k - 1].segment, s.pos));
-  if (k + 1 < pieces.size()) d = std::min(d, distance_to_segment(pieces[k + 1].segment, s.pos));
+  double d = distance_to_segment(*near[1], pos);
+  if (near[0] != nullptr) d = std::min(d, distance_to_segment(*near[0], pos));
+  if (near[2] != nullptr) d = std::min(d, distance_to_segment(*near[2], pos));
   return d;
 }
 

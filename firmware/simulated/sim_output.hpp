@@ -5,16 +5,16 @@
 #pragma once
 
 #include <cstddef>
-#include <vector>
 
-#include "kerf/fit/fit.hpp"
+#include "kerf/geom/segment.hpp"
 #include "kerf/sim/motion_board.hpp"
 
 namespace kerf::simulated {
 
-// Distance of an executed sample (running job segment k + 1, k < pieces.size())
-// from fitted piece k or a piece next to it.
-double sample_deviation(const sim::TraceSample& s, const std::vector<fit::Piece<double>>& pieces);
+// Distance of an executed sample (running job segment k + 1) from fitted
+// piece k or a piece next to it: near[0..2] are pieces k - 1, k and k + 1,
+// null where there is none (or it is not known).
+double sample_deviation(Vec2<double> pos, const Segment<double>* const near[3]);
 
 // The CSV's first line; with_z (a machine with a z axis) adds a last column z_mm.
 const char* csv_header(bool with_z);

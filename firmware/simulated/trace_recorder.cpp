@@ -4,14 +4,14 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <utility>
 
 #include "simulated/sim_output.hpp"
 
 namespace kerf::simulated {
 
-TraceRecorder::TraceRecorder(const std::vector<fit::Piece<double>>& pieces, bool with_z, bool plot,
-                             std::size_t plot_budget)
-    : pieces_(pieces), with_z_(with_z), plot_(plot), budget_(std::max<std::size_t>(plot_budget, 16)),
+TraceRecorder::TraceRecorder(PieceLookup pieces, bool with_z, bool plot, std::size_t plot_budget)
+    : pieces_(std::move(pieces)), with_z_(with_z), plot_(plot), budget_(std::max<std::size_t>(plot_budget, 16)),
       limit_(budget_) {
   if (plot_) kept_.reserve(budget_);
 }
@@ -39,8 +39,25 @@ bool TraceRecorder::open_csv(const std::string& path) {
   return true;
 }
 
+void TraceRecorder::look_up(std::size_t k) {
+  if (k != near_k_) {
+    near_k_ = k;
+    have_[0] = k > 0 && pieces_(k - 1, near_[0]);
+    have_[1] = pieces_(k, near_[1]);
+    have_[2] = false;
+  }
+  // The next piece may not have been read yet when k starts running.
+  if (!have_[2]) have_[2] = pieces_(k + 1, near_[2]);
+}
+
 void TraceRecorder::take(const sim::TraceSample& s) {
-  if (s.seq != 0 && s.seq <= pieces_.size()) max_dev_ = std::max(max_dev_, sample_deviation(s, pieces_));
+  if (s.seq != 0 && pieces_) {
+    look_up(s.seq - 1);
+    if (have_[1]) {
+      const Segment<double>* const near[3] = {have_[0] ? &near_[0] : nullptr, &near_[1], have_[2] ? &near_[2] : nullptr};
+      max_dev_ = std::max(max_dev_, sample_deviation(s.pos, near));
+    }
+  }
   if (csv_ != nullptr && csv_ok_) {
     char line[192];
     const int len = format_trace_row(s, with_z_, line, sizeof line);

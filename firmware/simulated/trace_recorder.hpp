@@ -1,25 +1,31 @@
 // `kerf sim`'s trace, taken as the run makes it (SimMachineConfig::trace_sink)
-// in memory that does not grow with simulated time: the CSV is written as it
-// goes, the path deviation is a running maximum, and the plot keeps at most
+// in memory that does not grow with simulated time nor with the job: the CSV
+// is written as it goes, the path deviation is a running maximum against the
+// pieces of the segment being run and its neighbours (looked up when the
+// segment changes: a streamed job keeps only recent ones), and the plot keeps at most
 // `plot_budget` samples (every sample while the run is short; then every
 // 2nd, 4th ... sample, and always the two at each torch change, so the SVG's
 // cut and rapid runs and pierce marks are those of the whole trace).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <cstdio>
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "io/run_svg.hpp"
-#include "kerf/fit/fit.hpp"
+#include "kerf/geom/segment.hpp"
 #include "kerf/sim/motion_board.hpp"
 
 namespace kerf::simulated {
 
 class TraceRecorder {
  public:
-  TraceRecorder(const std::vector<fit::Piece<double>>& pieces, bool with_z, bool plot, std::size_t plot_budget);
+  // Job segment k's fitted piece into `out`; false if it is not known (any more).
+  using PieceLookup = std::function<bool(std::size_t k, Segment<double>& out)>;
+  TraceRecorder(PieceLookup pieces, bool with_z, bool plot, std::size_t plot_budget);
   ~TraceRecorder();
   TraceRecorder(const TraceRecorder&) = delete;
   TraceRecorder& operator=(const TraceRecorder&) = delete;
@@ -43,8 +49,13 @@ class TraceRecorder {
     bool torch_change;    // kept whatever the stride
   };
   void thin();
+  void look_up(std::size_t k);
 
-  const std::vector<fit::Piece<double>>& pieces_;
+  PieceLookup pieces_;
+  // Pieces k - 1, k, k + 1 of the segment k being run (have_: known).
+  std::size_t near_k_ = SIZE_MAX;
+  Segment<double> near_[3]{};
+  bool have_[3] = {false, false, false};
   bool with_z_, plot_;
   std::size_t budget_, limit_;
   std::uint64_t n_ = 0, stride_ = 1;
