@@ -270,7 +270,9 @@ bool BandRegion<S>::cell_convex(std::uint32_t k, int& bad_side) const {
     const Vec2<S> e1 = loop[t] - loop[(t + m - 1) % m];
     const Vec2<S> e2 = loop[(t + 1) % m] - loop[t];
     const S cross = e1.cross(e2);
-    if (cross > S(1e-9) * band_detail::length(e1) * band_detail::length(e2) &&
+    // Both limits are >= 0: a turn to the right (every turn of a convex
+    // cell) needs no lengths (their square roots were most of the check).
+    if (cross > S(0) && cross > S(1e-9) * band_detail::length(e1) * band_detail::length(e2) &&
         cross > noise * band_detail::length(e1 + e2)) {
       (side_of[t] > 0 ? reflex_left : reflex_right) = true;
     }
