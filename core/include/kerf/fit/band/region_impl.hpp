@@ -254,14 +254,22 @@ bool BandRegion<S>::cell_convex(std::uint32_t k, int& bad_side) const {
                        max_of(Scalar<S>::abs(p_[k + 1].x), Scalar<S>::abs(p_[k + 1].y)));
   const S noise = S(4096) * Scalar<S>::epsilon() * big;
   const S tiny = max_of(S(1e-12) * band_detail::length(p_[k + 1] - p_[k]), noise);
+  // A point farther than twice tiny along an axis is not within tiny: the
+  // square root is taken only near that limit (tiny far above underflow).
+  auto close = [&](Vec2<S> d) {
+    if constexpr (band_detail::kFloating<S>)
+      if (tiny > S(1e-150) && (Scalar<S>::abs(d.x) > S(2) * tiny || Scalar<S>::abs(d.y) > S(2) * tiny))
+        return false;
+    return band_detail::length(d) <= tiny;
+  };
   auto add = [&](Vec2<S> q, int side) {
-    if (m > 0 && band_detail::length(q - loop[m - 1]) <= tiny) return;
+    if (m > 0 && close(q - loop[m - 1])) return;
     loop[m] = q;
     side_of[m++] = side;
   };
   for (int t = 0; t < l.size; ++t) add(l.pt[t], 1);
   for (int t = r.size; t-- > 0;) add(r.pt[t], -1);
-  while (m > 1 && band_detail::length(loop[m - 1] - loop[0]) <= tiny) --m;
+  while (m > 1 && close(loop[m - 1] - loop[0])) --m;
   if (m < 3) return true;  // a cell narrowed to a segment
   S total = S(0);
   bool reflex_left = false;
@@ -270,7 +278,9 @@ bool BandRegion<S>::cell_convex(std::uint32_t k, int& bad_side) const {
     const Vec2<S> e1 = loop[t] - loop[(t + m - 1) % m];
     const Vec2<S> e2 = loop[(t + 1) % m] - loop[t];
     const S cross = e1.cross(e2);
-    if (cross > S(1e-9) * band_detail::length(e1) * band_detail::length(e2) &&
+    // Both limits are >= 0: a turn to the right (every turn of a convex
+    // cell) needs no lengths (their square roots were most of the check).
+    if (cross > S(0) && cross > S(1e-9) * band_detail::length(e1) * band_detail::length(e2) &&
         cross > noise * band_detail::length(e1 + e2)) {
       (side_of[t] > 0 ? reflex_left : reflex_right) = true;
     }
