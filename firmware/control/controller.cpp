@@ -126,7 +126,7 @@ void Controller::start(const ResumePoint& from) {
   if (!actions_.replay_outputs(first_actions_ ? path_ : path_ + 1) && stop_request_.empty())
     stop_request_ = actions_.error();  // a fault in the first cycle, before anything moves
   if (*job_.error() != '\0' && stop_request_.empty()) stop_request_ = std::string("job: ") + job_.error();  // locate() failed
-  report_.actions.reserve(std::min<std::size_t>(job_.path_count(), 4096) + 8);
+  report_.actions.reserve(ActionRunner::kLogged);  // as the runner's log: copying it never allocates
 }
 
 void Controller::cycle(double now_s) {

@@ -102,7 +102,8 @@ struct RunReport {
   std::uint32_t pierces = 0;
   std::uint32_t z_moves = 0;          // z moves sent this run (z axis)
   double final_z = 0;                 // mm, the board's z when the run ended
-  std::vector<ActionEvent> actions;   // the program's actions run (dwell, pause, outputs, waits)
+  std::vector<ActionEvent> actions;   // the program's actions run (dwell, pause, outputs, waits): the first ActionRunner::kLogged
+  ActionCounts action_counts;         // all of them
   // Safety: the last refused reset, resets accepted, watchdog toggles, and
   // the following error (largest seen; at a following-error fault, the gap
   // and the limit then).

@@ -32,7 +32,10 @@ void Controller::run_actions_or_travel(double now_s) {
 }
 
 void Controller::actions_done(double now_s) {
-  report_.actions = actions_.log();
+  // Only the new entries: the report's log is reserved as the runner's, so this never allocates.
+  const std::vector<ActionEvent>& log = actions_.log();
+  report_.actions.insert(report_.actions.end(), log.begin() + static_cast<std::ptrdiff_t>(report_.actions.size()), log.end());
+  report_.action_counts = actions_.counts();
   if (path_ < job_.path_count()) begin_travel(pierce_at_);
   else finish_job(now_s);
 }

@@ -1,6 +1,9 @@
 #include "control/job_actions.hpp"
 
-#include "control/format_text.hpp"
+#include <algorithm>
+#include <cstdarg>
+#include <cstdio>
+#include <cstring>
 
 namespace kerf::control {
 
@@ -22,7 +25,10 @@ bool MemoryOutputs::all_off() {
 }
 
 bool ActionRunner::failed() {
-  if (error_.empty()) error_ = outputs_->last_error();  // the first failure is the one to tell
+  if (error_.empty()) {  // the first failure is the one to tell; reserved, so no allocation
+    const char* why = outputs_->last_error();
+    error_.assign(why, std::min(std::strlen(why), error_.capacity()));
+  }
   return false;
 }
 
@@ -63,16 +69,23 @@ bool ActionRunner::replay_outputs(std::size_t path) {
   return ok;
 }
 
-void ActionRunner::done(double now_s, const std::string& what) {
+void ActionRunner::done(double now_s, const char* fmt, ...) {
   const JobAction& a = *job_.action(next_);
-  ActionEvent e;
-  e.t_s = started_;
-  e.duration_s = now_s - started_;
-  e.line = a.line;
-  e.kind = a.kind;
-  e.what = what;
-  e.at = a.at;
-  log_.push_back(e);
+  ++counts_.run;
+  counts_.dwells += a.kind == job::CanonKind::dwell;
+  counts_.pauses += a.kind == job::CanonKind::pause;
+  if (log_.size() < kLogged) {
+    ActionEvent& e = log_.emplace_back();
+    e.t_s = started_;
+    e.duration_s = now_s - started_;
+    e.line = a.line;
+    e.kind = a.kind;
+    e.at = a.at;
+    va_list args;
+    va_start(args, fmt);
+    std::vsnprintf(e.what, sizeof e.what, fmt, args);
+    va_end(args);
+  }
   waiting_ = paused_ = false;
   ++next_;
 }
@@ -97,26 +110,25 @@ bool ActionRunner::start(const JobAction& a, double now_s) {
   switch (a.kind) {
     case job::CanonKind::digital_out:
       set_digital(a.index, a.value != 0);
-      done(now_s, "output " + std::to_string(a.index) + (a.value != 0 ? " on" : " off") +
-                      (a.sync ? " (with motion)" : " (immediate)"));
+      done(now_s, "output %d %s (%s)", a.index, a.value != 0 ? "on" : "off", a.sync ? "with motion" : "immediate");
       return true;
     case job::CanonKind::analog_out:
       set_analog(a.index, a.value);
-      done(now_s, format_text("analog output %d = %g", a.index, a.value));
+      done(now_s, "analog output %d = %g", a.index, a.value);
       return true;
-    case job::CanonKind::tool: done(now_s, "tool " + std::to_string(a.index)); return true;
-    case job::CanonKind::feed_percent: done(now_s, format_text("feed %g %%", a.value)); return true;
+    case job::CanonKind::tool: done(now_s, "tool %d", a.index); return true;
+    case job::CanonKind::feed_percent: done(now_s, "feed %g %%", a.value); return true;
     case job::CanonKind::end: done(now_s, "program end"); return true;
     case job::CanonKind::wait_input:
       if (a.mode == 0) {
         const bool v = input(a.index, now_s);
-        done(now_s, format_text("input %d read: %d", a.index, v ? 1 : 0));
+        done(now_s, "input %d read: %d", a.index, v ? 1 : 0);
         return true;
       }
       return false;
     case job::CanonKind::dwell:
     case job::CanonKind::pause: return false;
-    default: done(now_s, "recorded"); return true;
+    default: done(now_s, "%s", "recorded"); return true;
   }
 }
 
@@ -124,27 +136,25 @@ bool ActionRunner::poll(const JobAction& a, double now_s, bool cycle_start_press
   const double held = now_s - started_;
   if (a.kind == job::CanonKind::dwell) {
     if (held + 1e-9 < a.value) return false;
-    done(now_s, format_text("dwell %g s", a.value));
+    done(now_s, "dwell %g s", a.value);
     return true;
   }
   if (a.kind == job::CanonKind::pause) {
     const bool simulated = operator_delay_s_ >= 0 && held + 1e-9 >= operator_delay_s_;
     if (!cycle_start_pressed && !simulated) return false;
-    done(now_s, std::string(a.index == 0 ? "pause (M0)" : "pause (M1)") +
-                    (cycle_start_pressed ? ": cycle-start" : ": cycle-start (simulated operator)"));
+    done(now_s, "pause (M%d): cycle-start%s", a.index == 0 ? 0 : 1, cycle_start_pressed ? "" : " (simulated operator)");
     return true;
   }
   // M66 L1..L4.
   const bool v = input(a.index, now_s);
   const bool met = a.mode == 1 ? (v && !last_input_) : a.mode == 2 ? (!v && last_input_) : a.mode == 3 ? v : !v;
   last_input_ = v;
-  const std::string head = "M66 P" + std::to_string(a.index) + " L" + std::to_string(a.mode);
   if (met) {
-    done(now_s, head + ": met");
+    done(now_s, "M66 P%d L%d: met", a.index, a.mode);
     return true;
   }
   if (held + 1e-9 >= a.value) {
-    done(now_s, head + format_text(": timed out after %g s", a.value));
+    done(now_s, "M66 P%d L%d: timed out after %g s", a.index, a.mode, a.value);
     return true;
   }
   return false;

@@ -69,21 +69,34 @@ class GpioOutputs : public Outputs {
   hal::Gpio& gpio_;
 };
 
+// One action run. Plain data with its text in place: the cycle logs it
+// without allocating.
 struct ActionEvent {
   double t_s = 0;        // controller time it started
   double duration_s = 0; // how long it held the machine
   std::size_t line = 0;  // source line
   job::CanonKind kind = job::CanonKind::dwell;
-  std::string what;      // "dwell 0.5 s", "pause (M0): cycle-start", "M66 P0 L3: timed out" ...
+  char what[96] = {};    // "dwell 0.5 s", "pause (M0): cycle-start", "M66 P0 L3: timed out" ...
   Vec2<double> at{};
+};
+
+// What the actions run add up to, whatever the log kept.
+struct ActionCounts {
+  std::size_t run = 0, dwells = 0, pauses = 0;
 };
 
 class ActionRunner {
  public:
+  // The log keeps the first kLogged actions run (reserved here, so that the
+  // cycle never allocates for it); counts() goes on past them.
+  static constexpr std::size_t kLogged = 1024;
   // operator_delay_s >= 0: a simulated operator presses cycle-start that
   // long after a pause starts; < 0: the real button.
   ActionRunner(JobSource& job, Outputs* outputs, double operator_delay_s)
-      : job_(job), outputs_(outputs), operator_delay_s_(operator_delay_s) {}
+      : job_(job), outputs_(outputs), operator_delay_s_(operator_delay_s) {
+    log_.reserve(kLogged);
+    error_.reserve(256);
+  }
 
   // The actions before paths[path] (path == size: after the last) are next.
   void begin(std::size_t path, double now_s);
@@ -96,6 +109,7 @@ class ActionRunner {
   // One cycle: runs what can run now; true once every pending action is done.
   bool step(double now_s, bool cycle_start_pressed);
   const std::vector<ActionEvent>& log() const { return log_; }
+  const ActionCounts& counts() const { return counts_; }
   // The first output or input that failed ("gpio: output 3: ..."); empty while all is well.
   const std::string& error() const { return error_; }
 
@@ -106,7 +120,7 @@ class ActionRunner {
   bool failed();                        // keeps the outputs' first error; false
   bool start(const JobAction& a, double now_s);  // true: done at once
   bool poll(const JobAction& a, double now_s, bool cycle_start_pressed);
-  void done(double now_s, const std::string& what);
+  __attribute__((format(printf, 3, 4))) void done(double now_s, const char* fmt, ...);
 
   JobSource& job_;
   Outputs* outputs_;
@@ -115,6 +129,7 @@ class ActionRunner {
   bool waiting_ = false, last_input_ = false, paused_ = false;
   double started_ = 0;
   std::vector<ActionEvent> log_;
+  ActionCounts counts_;
   std::string error_;
 };
 

@@ -34,11 +34,9 @@ RunSummary summarise_run(const RunReport& r, std::size_t paths, const std::strin
   s.max_ferror_mm = r.max_ferror_mm;
   s.ferror_at_fault_mm = r.ferror_at_fault_mm;
   s.ferror_limit_mm = r.ferror_limit_mm;
-  s.actions = r.actions.size();
-  for (const ActionEvent& a : r.actions) {
-    s.dwells += a.kind == job::CanonKind::dwell;
-    s.pauses += a.kind == job::CanonKind::pause;
-  }
+  s.actions = r.action_counts.run;
+  s.dwells = r.action_counts.dwells;
+  s.pauses = r.action_counts.pauses;
   return s;
 }
 

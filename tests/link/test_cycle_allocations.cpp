@@ -60,8 +60,9 @@ TEST(CycleAllocations, ControllerCycleOverModbusWithJournalDoesNotAllocate) {
 }
 
 // The same over kerf run's streamed job (control/streamed_job.hpp): a
-// G-code program with z moves before and after each path, more segments than
-// the producer's ring holds. Its producer thread reads, fits and allocates;
+// G-code program with z moves before and after each path, a dwell after each
+// and M2 at the end (the actions' log is reserved, its texts in place), more
+// segments than the producer's ring holds. Its producer thread reads, fits and allocates;
 // the cycle only pops the ring.
 TEST(CycleAllocations, ControllerCycleOverAStreamedJobDoesNotAllocate) {
   const std::string file = ::testing::TempDir() + "kerf_cycle_" + std::to_string(::getpid()) + "_stream.ngc";
@@ -73,8 +74,9 @@ TEST(CycleAllocations, ControllerCycleOverAStreamedJobDoesNotAllocate) {
       const double x0 = 12.0 * (p % 6), y0 = 3.0 * (p / 6);
       std::fprintf(f, "G0 Z5\nG0 X%.3f Y%.3f\nG1 Z1.5 F600\nM3 S1\n", x0, y0);
       for (int k = 1; k <= 48; ++k) std::fprintf(f, "G1 X%.3f Y%.3f F3000\n", x0 + 0.2 * k, y0 + (k % 2) * 0.3);
-      std::fprintf(f, "M5\nG0 Z10\n");
+      std::fprintf(f, "M5\nG0 Z10\nG4 P0.01\n");
     }
+    std::fprintf(f, "M2\n");
     std::fclose(f);
   }
   control::StreamedJobSetup s;
@@ -107,6 +109,9 @@ TEST(CycleAllocations, ControllerCycleOverAStreamedJobDoesNotAllocate) {
   EXPECT_EQ(r.completed_this_run, t.segments);
   EXPECT_EQ(r.pierces, 24u);
   EXPECT_GE(r.z_moves, 48u);
+  EXPECT_EQ(r.action_counts.dwells, 24u);
+  EXPECT_EQ(r.action_counts.run, 25u) << "24 dwells and the program's end";
+  EXPECT_EQ(r.actions.size(), 25u);
   std::printf("Controller::cycle over a streamed job: %ld allocations in %ld cycles (%zu segments, %.1f s simulated)\n",
               alloc_trap_count(), cycles, t.segments, run.t);
   EXPECT_EQ(alloc_trap_count(), 0);

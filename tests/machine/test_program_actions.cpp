@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "control/job_actions.hpp"
 #include "control/program_job.hpp"
 #include "fake_gpio.hpp"
 #include "program_fixture.hpp"
@@ -92,7 +93,7 @@ TEST(ProgramActions, SimulatedOperatorPressesCycleStartAfterItsDelay) {
   ASSERT_EQ(r.run.state, State::done) << r.run.reason;
   ASSERT_EQ(r.run.actions.size(), 1u);
   EXPECT_NEAR(r.run.actions[0].duration_s, 0.4, 0.0025);
-  EXPECT_NE(r.run.actions[0].what.find("simulated operator"), std::string::npos);
+  EXPECT_NE(std::string(r.run.actions[0].what).find("simulated operator"), std::string::npos);
 }
 
 TEST(ProgramActions, OutputsSwitchBetweenThePathsInProgramOrder) {
@@ -121,9 +122,9 @@ TEST(ProgramActions, M66TimesOutAndGoesOnOrEndsWhenTheInputComes) {
   double second_wait = -1;
   const auto probe = simulated::run_sim_machine(f.job, c, {}, gpio, nullptr, {});
   ASSERT_EQ(probe.run.actions.size(), 2u);
-  EXPECT_NE(probe.run.actions[0].what.find("timed out after 0.4 s"), std::string::npos) << probe.run.actions[0].what;
+  EXPECT_NE(std::string(probe.run.actions[0].what).find("timed out after 0.4 s"), std::string::npos) << probe.run.actions[0].what;
   EXPECT_NEAR(probe.run.actions[0].duration_s, 0.4, 0.0025);
-  EXPECT_NE(probe.run.actions[1].what.find("timed out after 5 s"), std::string::npos);
+  EXPECT_NE(std::string(probe.run.actions[1].what).find("timed out after 5 s"), std::string::npos);
   second_wait = probe.run.actions[1].t_s;
   // Again, with input 1 raised 0.3 s into the second wait.
   FakeGpio gpio2;
@@ -134,7 +135,7 @@ TEST(ProgramActions, M66TimesOutAndGoesOnOrEndsWhenTheInputComes) {
   const auto r = simulated::run_sim_machine(f.job, c, {}, gpio2, nullptr, {});
   ASSERT_EQ(r.run.state, State::done) << r.run.reason;
   ASSERT_EQ(r.run.actions.size(), 2u);
-  EXPECT_NE(r.run.actions[1].what.find("met"), std::string::npos) << r.run.actions[1].what;
+  EXPECT_NE(std::string(r.run.actions[1].what).find("met"), std::string::npos) << r.run.actions[1].what;
   EXPECT_NEAR(r.run.actions[1].duration_s, 0.3, 0.0025);
 }
 
@@ -237,6 +238,37 @@ TEST(ProgramReport, ListsTheConstructsAndSaysDryRun) {
             std::string::npos)
       << json;
   EXPECT_NE(json.find("\"notes\": [\"M150 (line 5) has no configured action: ignored\"]"), std::string::npos);
+}
+
+// The runner's log keeps the first ActionRunner::kLogged actions (reserved,
+// so the cycle never allocates for it) and counts every one.
+TEST(ActionLog, KeepsTheFirstActionsAndCountsThemAll) {
+  control::Job job;
+  control::CutPath path;
+  path.start = {0, 0};
+  hal::SegmentCommand seg;
+  seg.end = {1, 0};
+  seg.feed = 10;
+  path.segments.push_back(seg);
+  job.paths.push_back(path);
+  const std::size_t n = control::ActionRunner::kLogged + 100;
+  for (std::size_t k = 0; k < n; ++k) {
+    control::JobAction a;
+    a.kind = k % 2 == 0 ? CanonKind::tool : CanonKind::dwell;  // dwell 0 s: done at its first poll
+    a.index = static_cast<int>(k);
+    a.line = k + 1;
+    job.actions.push_back(a);
+  }
+  control::WholeJobSource source(job);
+  ASSERT_NE(source.open(0), nullptr);
+  control::ActionRunner runner(source, nullptr, -1);
+  runner.begin(0, 0.0);
+  ASSERT_TRUE(runner.step(0.0, false));
+  EXPECT_EQ(runner.log().size(), control::ActionRunner::kLogged);
+  EXPECT_EQ(runner.counts().run, n);
+  EXPECT_EQ(runner.counts().dwells, n / 2);
+  EXPECT_STREQ(runner.log()[2].what, "tool 2");
+  EXPECT_EQ(runner.log().back().line, control::ActionRunner::kLogged);
 }
 
 }  // namespace

@@ -35,7 +35,7 @@ TEST(ProgramLines, OutputsAndInputsRunOnTheLinesAndTheOutputsEndOff) {
   const auto r = m.run(f.job);
   ASSERT_EQ(r.run.state, State::done) << r.run.reason;
   ASSERT_EQ(r.run.actions.size(), 2u);
-  EXPECT_NE(r.run.actions[1].what.find("met"), std::string::npos) << r.run.actions[1].what;
+  EXPECT_NE(std::string(r.run.actions[1].what).find("met"), std::string::npos) << r.run.actions[1].what;
   EXPECT_LT(r.run.actions[1].duration_s, 0.01);  // the input was high: no wait
   ASSERT_EQ(m.gpio.output_changes.size(), 2u);
   EXPECT_EQ(m.gpio.output_changes[0].number, 2);
