@@ -1,8 +1,8 @@
 #include "control/job.hpp"
 
-#include <cstring>
 #include <vector>
 
+#include "control/fnv1a.hpp"
 #include "kerf/core/assert.hpp"
 
 namespace kerf::control {
@@ -37,52 +37,34 @@ Vec2<double> Job::segment_start(std::size_t k) const {
   return i == 0 ? paths[p].start : paths[p].segments[i - 1].end;
 }
 
-namespace {
-
-struct Fnv {
-  std::uint64_t h = 14695981039346656037ull;
-  void bytes(const void* data, std::size_t n) {
-    const auto* b = static_cast<const unsigned char*>(data);
-    for (std::size_t i = 0; i < n; ++i) h = (h ^ b[i]) * 1099511628211ull;
-  }
-  void number(double v) {
-    std::uint64_t bits = 0;
-    std::memcpy(&bits, &v, sizeof bits);
-    bytes(&bits, sizeof bits);
-  }
-  void number(std::uint64_t v) { bytes(&v, sizeof v); }
-};
-
-}  // namespace
-
 JobId Job::id() const {
-  Fnv f;
-  f.number(static_cast<std::uint64_t>(paths.size()));
+  Fnv1a f;
+  f.value(static_cast<std::uint64_t>(paths.size()));
   for (const CutPath& p : paths) {
-    f.number(p.start.x);
-    f.number(p.start.y);
-    f.number(static_cast<std::uint64_t>(p.segments.size()));
-    if (!p.torch) f.number(std::uint64_t{0xd27});  // a dry run is another job (point jobs keep their ids)
+    f.value(p.start.x);
+    f.value(p.start.y);
+    f.value(static_cast<std::uint64_t>(p.segments.size()));
+    if (!p.torch) f.value(std::uint64_t{0xd27});  // a dry run is another job (point jobs keep their ids)
     for (const hal::SegmentCommand& s : p.segments) {
-      f.number(static_cast<std::uint64_t>(s.kind == SegmentKind::arc ? 1 + (s.dir > 0) : 0));
-      f.number(s.end.x);
-      f.number(s.end.y);
+      f.value(static_cast<std::uint64_t>(s.kind == SegmentKind::arc ? 1 + (s.dir > 0) : 0));
+      f.value(s.end.x);
+      f.value(s.end.y);
       if (s.kind == SegmentKind::arc) {
-        f.number(s.centre.x);
-        f.number(s.centre.y);
+        f.value(s.centre.x);
+        f.value(s.centre.y);
       }
     }
     // z axis: the moves between paths (none without one: those jobs keep their ids).
     for (const auto* moves : {&p.before, &p.after})
       for (const hal::SegmentCommand& m : *moves) {
-        f.number(static_cast<std::uint64_t>(m.z_move ? 0x2d : 0x27));
-        f.number(m.z_move ? m.z : m.end.x);
-        f.number(m.end.y);
+        f.value(static_cast<std::uint64_t>(m.z_move ? 0x2d : 0x27));
+        f.value(m.z_move ? m.z : m.end.x);
+        f.value(m.end.y);
       }
   }
   for (const JobAction& a : actions) {
-    f.number(static_cast<std::uint64_t>(a.kind) << 32 | a.before_path);
-    f.number(a.value);
+    f.value(static_cast<std::uint64_t>(a.kind) << 32 | a.before_path);
+    f.value(a.value);
   }
   return {f.h, static_cast<std::uint32_t>(segment_count())};
 }

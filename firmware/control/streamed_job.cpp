@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "control/job_producer.hpp"
+#include "control/fnv1a.hpp"
 #include "control/stream_job_source.hpp"
 #include "job/gcode_reader.hpp"
 #include "job/program_stream.hpp"
@@ -15,25 +16,9 @@ namespace kerf::control {
 
 namespace {
 
-struct Fnv {
-  std::uint64_t h = 14695981039346656037ull;
-  void bytes(const void* data, std::size_t n) {
-    const auto* b = static_cast<const unsigned char*>(data);
-    for (std::size_t i = 0; i < n; ++i) h = (h ^ b[i]) * 1099511628211ull;
-  }
-  template <class T>
-  void value(T v) {
-    bytes(&v, sizeof v);
-  }
-  void text(const std::string& s) {
-    value(s.size());
-    bytes(s.data(), s.size());
-  }
-};
-
 // What decides the segments and actions besides the file's bytes: the fit,
 // the feeds, the rules, the holds, the interpreter's settings and the offsets.
-void hash_setup(const StreamedJobSetup& s, bool gcode, Fnv& f) {
+void hash_setup(const StreamedJobSetup& s, bool gcode, Fnv1a& f) {
   f.value(std::uint64_t{gcode ? 0x5354474bu : 0x53545054u});  // a streamed job: never a whole job's id
   f.value(static_cast<std::uint32_t>(s.criterion));
   f.value(static_cast<std::uint32_t>(s.numeric));
@@ -72,7 +57,7 @@ void hash_setup(const StreamedJobSetup& s, bool gcode, Fnv& f) {
   f.value(st.g92_on);
 }
 
-bool hash_file(const std::string& file, Fnv& f, std::string& error) {
+bool hash_file(const std::string& file, Fnv1a& f, std::string& error) {
   std::FILE* in = std::fopen(file.c_str(), "rb");
   if (in == nullptr) {
     error = file + ": cannot open: " + std::strerror(errno);
@@ -129,7 +114,7 @@ int StreamedJob::open(const std::string& file, const StreamedJobSetup& setup, st
   m.file = file;
   m.setup = setup;
   m.gcode = job::is_gcode_path(file);
-  Fnv f;
+  Fnv1a f;
   hash_setup(setup, m.gcode, f);
   if (!hash_file(file, f, error)) return 2;
   m.id = {f.h, 0xffffffffu};  // a stream's size is not known before its end: the bytes identify it
