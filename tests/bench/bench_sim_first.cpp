@@ -89,16 +89,22 @@ double first_segment(const std::string& file) {
   return first;
 }
 
+// The program as kerf sim reads it (the default configuration); null on failure.
+std::unique_ptr<kerf::job::ProgramStream> open_program(const std::string& file) {
+  using namespace kerf;
+  std::unique_ptr<job::ProgramStream> stream;
+  std::string error;
+  if (!job::open_program_stream(file, config::interp_settings(config::defaults(), false), job::MachineState{}, stream,
+                                error))
+    std::fprintf(stderr, "%s\n", error.c_str());
+  return stream;
+}
+
 double read_program(const std::string& file, std::size_t& paths) {
   using namespace kerf;
   const auto t0 = Clock::now();
-  const config::Config cfg = config::defaults();
-  std::unique_ptr<job::ProgramStream> stream;
-  std::string error;
-  if (!job::open_program_stream(file, config::interp_settings(cfg, false), job::MachineState{}, stream, error)) {
-    std::fprintf(stderr, "%s\n", error.c_str());
-    return -1.0;
-  }
+  const std::unique_ptr<job::ProgramStream> stream = open_program(file);
+  if (!stream) return -1.0;
   std::printf("  open_program_stream (its scan of every line) took %.3f s\n", since(t0));
   job::ProgramPiece path;
   job::ProgramAction action;
@@ -116,12 +122,9 @@ double read_and_fit(const std::string& file, std::size_t& segments) {
   using namespace kerf;
   const auto t0 = Clock::now();
   const config::Config cfg = config::defaults();
-  std::unique_ptr<job::ProgramStream> stream;
+  const std::unique_ptr<job::ProgramStream> stream = open_program(file);
+  if (!stream) return -1.0;
   std::string error;
-  if (!job::open_program_stream(file, config::interp_settings(cfg, false), job::MachineState{}, stream, error)) {
-    std::fprintf(stderr, "%s\n", error.c_str());
-    return -1.0;
-  }
   control::PathFitSettings fs;
   fs.criterion = job::Criterion::vertex;
   fs.tol = cfg.fit.tol;
