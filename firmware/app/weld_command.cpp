@@ -8,6 +8,7 @@
 
 #include "io/input_file.hpp"
 #include "io/options.hpp"
+#include "io/prefault.hpp"
 #include "weld/weld.hpp"
 
 namespace kerf::app {
@@ -40,6 +41,9 @@ CLI::App* add_weld_command(CLI::App& app, WeldCommandOptions& opts) {
 }
 
 int run_weld(const WeldCommandOptions& opts) {
+  // A weld fills tens of MB once (a 0.9 MB file's blocks are 7 MB): in huge
+  // pages that is 424 page faults instead of 3735, 5 ms less of 81 (tball-pocket).
+  io::use_huge_page_heap(std::size_t{64} << 20);
   weld::WeldOptions w;
   std::string error;
   if (!io::parse_length("--tol", opts.tol, false, w.tol_mm, error)) return io::usage_error(error);

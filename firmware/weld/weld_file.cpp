@@ -10,7 +10,6 @@
 #include <string>
 
 #include "io/options.hpp"
-#include "io/prefault.hpp"
 #include "weld/weld.hpp"
 
 namespace kerf::weld {
@@ -68,7 +67,6 @@ class Output {
 }  // namespace
 
 int weld_file(const std::string& in, const std::string& out, WeldOptions w) {
-  io::use_huge_page_heap(std::size_t{64} << 20);
   const auto t0 = std::chrono::steady_clock::now();
   const bool use_stdin = in == "-";
   const std::string name = use_stdin ? "<stdin>" : in;
