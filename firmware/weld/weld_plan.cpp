@@ -119,17 +119,11 @@ Written write_piece(const Segment<double>& s, P from, const std::vector<P>& pts,
   }
   const std::size_t n = std::clamp<std::size_t>(static_cast<std::size_t>(std::ceil(4 * length / tol)), 8, 512);
   std::size_t near = a;
-  // An arc's samples are kept once computed: the gallop and the scan below
-  // ask for many twice, and each costs a sine and a cosine.
-  P memo[513];
-  bool have[513] = {};
   auto sample = [&](std::size_t k) {
     const double t = static_cast<double>(k) / static_cast<double>(n);
     if (!arc) return from + (w.end - from) * t;
-    if (have[k]) return memo[k];
     const double ang = a0 + (s.dir > 0 ? 1 : -1) * sweep * t;
-    have[k] = true;
-    return memo[k] = P{c.x + r * std::cos(ang), c.y + r * std::sin(ang)};
+    return P{c.x + r * std::cos(ang), c.y + r * std::sin(ang)};
   };
   // Samples that cannot raise dev are not computed; the result is the same,
   // bit for bit: `margin` is far above the rounding of a sample and of a
@@ -145,8 +139,10 @@ Written write_piece(const Segment<double>& s, P from, const std::vector<P>& pts,
   const double margin = 1e-6 * tol + 1e-12 * size;
   double witness = 0;
   std::size_t seg = b;
+  std::size_t cached = 0;  // a sample computed by the gallop, 0: none
+  P cached_q{};
   for (std::size_t k = 1; k < n; ++k) {
-    const P q = sample(k);
+    const P q = k == cached ? cached_q : sample(k);
     dev = raise_to_polyline(pts, a, b, q, widen, dev, near, witness, seg);
     if (witness + widen + margin > dev) continue;
     auto fine = [&](std::size_t m) {
@@ -154,6 +150,10 @@ Written write_piece(const Segment<double>& s, P from, const std::vector<P>& pts,
       if (arc && angle > 1) return false;
       const double sagitta = arc ? r * angle * angle / 8 * (1 + 1e-9) : 0.0;
       const P qm = sample(m);
+      if (m == k + 1) {
+        cached = m;
+        cached_q = qm;
+      }
       const double d = seg == b ? distance(pts[a], qm) : distance_to_line_segment(pts[seg], pts[seg + 1], qm);
       return std::max(witness, d) + sagitta + widen + margin <= dev;
     };
