@@ -75,9 +75,10 @@ bool circle_through_near_three(Vec2<S> origin, const Vec2<S> pts[3], S eps) {
   }
   if (active < 2) return true;  // one arc alone is never empty
   for (int c = 0; c < active; ++c) {
-    const S len = w_len[c];
-    const Vec2<S> u = w[c].perp() * (S(1) / len);  // |beta . w| = 0 along u
-    const S k = lim[c] / len;
+    const S inv = S(1) / w_len[c];
+    const Vec2<S> u = w[c].perp() * inv;  // |beta . w| = 0 along u
+    // (In floating point a few ulps off lim / len, within the slack.)
+    const S k = std::is_floating_point_v<S> ? lim[c] * inv : lim[c] / w_len[c];
     const S co = M::sqrt(S(1) - k * k);
     const Vec2<S> ends[2] = {{u.x * co - u.y * k, u.y * co + u.x * k},
                              {u.x * co + u.y * k, u.y * co - u.x * k}};
