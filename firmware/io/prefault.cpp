@@ -46,11 +46,12 @@ void prefer_huge_pages(const void* p, std::size_t bytes) {
 void use_huge_page_heap(std::size_t bytes) {
 #if defined(KERF_GLIBC_HEAP) && defined(MADV_HUGEPAGE)
   const int size = static_cast<int>(std::min<std::size_t>(bytes, std::size_t{1} << 30));
-  // Large blocks from the heap (not a mapping each), grown `size` ahead and
-  // not given back as it shrinks.
-  if (mallopt(M_MMAP_THRESHOLD, size) == 0 || mallopt(M_TOP_PAD, size) == 0 ||
-      mallopt(M_TRIM_THRESHOLD, 2 * size) == 0)
-    return;
+  // Blocks up to 32 MiB (glibc's largest threshold on 64 bits) from the
+  // heap, not a mapping each; the heap grown `size` ahead and not given back
+  // as it shrinks. Each is a hint: one refused leaves the others.
+  (void)mallopt(M_MMAP_THRESHOLD, std::min(size, 32 << 20));
+  if (mallopt(M_TOP_PAD, size) == 0) return;
+  (void)mallopt(M_TRIM_THRESHOLD, 2 * size);
   char* const before = static_cast<char*>(sbrk(0));
   void* grow = std::malloc(std::size_t{256} << 10);  // more than the heap has free: it grows
   char* const after = static_cast<char*>(sbrk(0));
