@@ -1,5 +1,7 @@
 #include "app/weld_command.hpp"
 
+#include <sys/stat.h>
+
 #include <CLI/CLI.hpp>
 #include <cerrno>
 #include <cstdlib>
@@ -8,6 +10,7 @@
 
 #include "io/input_file.hpp"
 #include "io/options.hpp"
+#include "io/prefault.hpp"
 #include "weld/weld.hpp"
 
 namespace kerf::app {
@@ -40,6 +43,13 @@ CLI::App* add_weld_command(CLI::App& app, WeldCommandOptions& opts) {
 }
 
 int run_weld(const WeldCommandOptions& opts) {
+  // A weld of a large file fills tens of MB once (a 0.9 MB file's blocks
+  // are 7 MB): in huge pages that is 424 page faults instead of 3735, 5 ms
+  // less of 81 (tball-pocket). A small file's few pages would cost more as
+  // one zeroed huge page (0.15 ms on a 15-line file).
+  struct stat st {};
+  if (opts.in != "-" && ::stat(opts.in.c_str(), &st) == 0 && S_ISREG(st.st_mode) && st.st_size >= (128 << 10))
+    io::use_huge_page_heap(std::size_t{64} << 20);
   weld::WeldOptions w;
   std::string error;
   if (!io::parse_length("--tol", opts.tol, false, w.tol_mm, error)) return io::usage_error(error);

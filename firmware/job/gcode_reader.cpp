@@ -381,6 +381,7 @@ template <class T>
 void make_room(std::vector<T>& v, std::size_t& mapped, std::size_t n) {
   if (v.size() + n > v.capacity()) {
     v.reserve(2 * v.capacity() + n);
+    io::prefer_huge_pages(v.data(), v.capacity() * sizeof(T));
     mapped = v.size();
   }
   if (v.size() + n > mapped) {
@@ -454,6 +455,8 @@ GcodeFile parse_source(std::string text_in, std::string display_name, GcodePart*
   for (const char c : text) letters += is_alpha(c);
   f.blocks.reserve(lines);
   src->words.reserve(std::min(letters, 8 * lines));
+  io::prefer_huge_pages(f.blocks.data(), f.blocks.capacity() * sizeof(GBlock));
+  io::prefer_huge_pages(src->words.data(), src->words.capacity() * sizeof(GWord));
   src->pieces.reserve(lines);  // a comment or an unknown word per line is common; more grows
   std::size_t blocks_mapped = 0, words_mapped = 0, pieces_mapped = 0;
   Scratch sc;

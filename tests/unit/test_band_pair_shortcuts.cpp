@@ -8,7 +8,9 @@
 // when clear at the range's ends, and where a root's cut lands within
 // rounding of an end, whether it is applied depends on the range then).
 // Checked pair by pair, both ways round, on the test curves, a jittered and
-// a zigzag path and corpus polylines, with symmetric and one-sided widths.
+// a zigzag path and corpus polylines, with symmetric and one-sided widths;
+// and, where no barrier lies between the ends, with the search's promise of
+// that (set_clear_between), bit for bit.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -41,6 +43,7 @@ constexpr double kRounding = 1e-13;
 struct Tally {
   std::size_t pairs = 0;
   std::size_t valid = 0;
+  std::size_t clear = 0;  // pairs also tested as the search knows them to be barrier-free
 };
 
 // Every pair i -> j with j - i <= span, in the order a search asks them.
@@ -68,6 +71,21 @@ void expect_same_verdicts(const std::vector<VD>& p, BandWidth<double> width, con
         const bool ok_full = BandPair<double>(plain, i, j, orient).run(full, fail_full);
         const bool ok_slab = BandPair<double>(cached, i, j, orient).run(slab, fail_slab);
         const bool ok_bound = BandPair<double>(cached, i, j, orient).run(bound, fail_bound, binding);
+        // The search's own view: no barrier look-up per cell when none lies
+        // between the ends (it knows from its table).
+        bool barrier = false;
+        for (std::uint32_t k = i + 1; k < j; ++k) barrier = barrier || cached.vertex(k).barrier;
+        if (!barrier) {
+          BandPair<double> told(cached, i, j, orient);
+          told.set_clear_between();
+          PsiRange<double> clear;
+          std::uint32_t fail_clear = 0;
+          ASSERT_EQ(told.run(clear, fail_clear), ok_slab) << what << " pair " << i << "->" << j;
+          if (ok_slab) {
+            EXPECT_TRUE(same_bits(clear.lo, slab.lo) && same_bits(clear.hi, slab.hi)) << what;
+          }
+          ++tally.clear;
+        }
         const std::string at = what + " pair " + std::to_string(i) + "->" + std::to_string(j) +
                                (orient > 0 ? " ccw" : " cw");
         ++tally.pairs;
@@ -100,6 +118,7 @@ TEST(BandPairShortcuts, SameVerdictsAndRangesOnTheTestCurves) {
   }
   // Many pairs fit: the shortcuts had work to skip.
   EXPECT_GT(tally.valid, tally.pairs / 10) << tally.valid << " of " << tally.pairs;
+  EXPECT_GT(tally.clear, tally.pairs / 2) << tally.clear << " of " << tally.pairs;
 }
 
 TEST(BandPairShortcuts, SameVerdictsAndRangesOnJitterAndZigzags) {

@@ -59,4 +59,33 @@ TEST(PrefixGuard, FailsForPointsNoCircleCanFollow) {
   EXPECT_TRUE(kerf::fit::circle_through_near_three(V{0, 0}, on, 1e-9));
 }
 
+// The square-root-free slack and the squared test of which constraints bind
+// (prefix_guard.hpp) must keep it necessary: three points within eps of one
+// circle (or line) through the origin pass, for radii from below 3 eps (the
+// short cut) to nearly straight, with the points pushed out to 0.999 eps.
+TEST(PrefixGuard, PassesPointsNearOneCircleThroughTheOrigin) {
+  std::mt19937 rng(2511);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const double pi = std::acos(-1.0);
+  int checked = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    const double eps = std::pow(10.0, -4 + 3 * unit(rng));
+    const double radius = eps * std::pow(10.0, 7 * unit(rng));
+    const double phi = 2 * pi * unit(rng);
+    const V centre{radius * std::cos(phi), radius * std::sin(phi)};  // the circle passes through 0
+    V three[3];
+    for (V& q : three) {
+      const double a = phi + pi + (unit(rng) - 0.5) * std::min(pi, 50 * eps / radius + 0.5);
+      const double push = (2 * unit(rng) - 1) * 0.999 * eps;
+      const V on{centre.x + radius * std::cos(a), centre.y + radius * std::sin(a)};
+      const double n = std::hypot(on.x - centre.x, on.y - centre.y);
+      q = {on.x + push * (on.x - centre.x) / n, on.y + push * (on.y - centre.y) / n};
+    }
+    ++checked;
+    ASSERT_TRUE(kerf::fit::circle_through_near_three(V{0, 0}, three, eps))
+        << "trial " << trial << " eps " << eps << " radius " << radius;
+  }
+  EXPECT_EQ(checked, 20000);
+}
+
 }  // namespace

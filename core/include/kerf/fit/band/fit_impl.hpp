@@ -59,7 +59,8 @@ struct Oracle {
     const int first = (hint & kPreferCw) != 0 ? 1 : 0;  // 0: counter-clockwise
     for (int t = 0; t < 2; ++t) {
       const int o = t == 0 ? first : 1 - first;
-      const BandPair<S> pair(*region, i, j, o == 0 ? 1 : -1);
+      BandPair<S> pair(*region, i, j, o == 0 ? 1 : -1);
+      if (next_barrier[i] >= j) pair.set_clear_between();
       if (quick_fail(pair, i, j, mark(hint, o))) continue;
       PsiRange<S> range;
       std::uint32_t cell = i;

@@ -87,8 +87,12 @@ class BandPair {
 
   // Adds cell k's conditions (i <= k < j): its bulge-side chain, and gate
   // k + 1 when that gate lies strictly between the ends.
+  // No barrier lies strictly between the ends (the search knows it from
+  // its table): cell() then need not look.
+  void set_clear_between() { clear_between_ = true; }
+
   bool cell(std::uint32_t k, PsiRange<S>& range) const {
-    if (k > i_ && r_.vertex(k).barrier) {
+    if (!clear_between_ && k > i_ && r_.vertex(k).barrier) {
       range.lo = S(2);
       return false;
     }
@@ -411,6 +415,7 @@ class BandPair {
   S f_{};  // the frame's scale: lengths in u_, n_, area and offset are times f_
   S reach_{};  // rounding's reach around a and b (band_numeric.hpp)
   S chord_{};  // |b - a| (floating point only)
+  bool clear_between_ = false;
 };
 
 }  // namespace kerf::fit

@@ -34,8 +34,11 @@ bool circle_through_near_three(Vec2<S> origin, const Vec2<S> pts[3], S eps) {
     const Vec2<S> q = pts[k] - origin;
     const S s = q.norm2() - eps * eps;
     if (!(q.norm2() > S(9) * eps * eps)) return true;
-    z[k] = q * (S(1) / s);
-    e[k] = eps / s;
+    const S inv = S(1) / s;
+    z[k] = q * inv;
+    // In floating point a few ulps off eps / s, within the slack below.
+    if constexpr (std::is_floating_point_v<S>) e[k] = eps * inv;
+    else e[k] = eps / s;
   }
   if constexpr (std::is_floating_point_v<S>) {
     // Quick yes: the line through z[0] and z[2] meets disc 1 (no root).
@@ -54,22 +57,28 @@ bool circle_through_near_three(Vec2<S> origin, const Vec2<S> pts[3], S eps) {
   S lim[3];
   S slack[3];
   S w_len[3];
-  // Each length once (the square roots were most of the guard's time).
-  const S z_len[3] = {z[0].norm(), z[1].norm(), z[2].norm()};
+  // Square roots and divisions were most of the guard's time: the slack
+  // takes |z|'s bound |x| + |y| (only more slack), and a constraint's length
+  // is taken only once its square shows it binds.
+  const S z_len[3] = {M::abs(z[0].x) + M::abs(z[0].y), M::abs(z[1].x) + M::abs(z[1].y),
+                      M::abs(z[2].x) + M::abs(z[2].y)};
   const int pairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
   int active = 0;
   for (const auto& pr : pairs) {
     w[active] = z[pr[0]] - z[pr[1]];
     lim[active] = e[pr[0]] + e[pr[1]];
     slack[active] = S(256) * M::epsilon() * (z_len[pr[0]] + z_len[pr[1]] + lim[active]);
+    const S bound = lim[active] + slack[active];
+    if (!(w[active].norm2() > bound * bound)) continue;
     w_len[active] = w[active].norm();
-    if (w_len[active] > lim[active] + slack[active]) ++active;
+    if (w_len[active] > bound) ++active;
   }
   if (active < 2) return true;  // one arc alone is never empty
   for (int c = 0; c < active; ++c) {
-    const S len = w_len[c];
-    const Vec2<S> u = w[c].perp() * (S(1) / len);  // |beta . w| = 0 along u
-    const S k = lim[c] / len;
+    const S inv = S(1) / w_len[c];
+    const Vec2<S> u = w[c].perp() * inv;  // |beta . w| = 0 along u
+    // (In floating point a few ulps off lim / len, within the slack.)
+    const S k = std::is_floating_point_v<S> ? lim[c] * inv : lim[c] / w_len[c];
     const S co = M::sqrt(S(1) - k * k);
     const Vec2<S> ends[2] = {{u.x * co - u.y * k, u.y * co + u.x * k},
                              {u.x * co + u.y * k, u.y * co - u.x * k}};
