@@ -311,6 +311,11 @@ bool threads_figure(const kerf::job::GcodeFile& g, kerf::weld::WeldOptions o, in
   return out[0] == out[1];
 }
 
+constexpr const char* kUsage =
+    "usage: kerf_bench_weld [--criterion band|vertex|both] [--tol MM] [--no-split] [--jitter F]\n"
+    "                       [--tie-break R] [--no-greedy] [--repeat N] [--dump DIR]\n"
+    "                       [--kerf PATH | --no-process] [--no-threads] [--arcwelder PATH] [FILE...]\n";
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -342,7 +347,10 @@ int main(int argc, char** argv) {
     else if (std::strcmp(argv[k], "--no-threads") == 0) with_threads = false;
     else if (std::strcmp(argv[k], "--arcwelder") == 0 && k + 1 < argc) arcwelder = argv[++k];
     else if (std::strcmp(argv[k], "--repeat") == 0 && k + 1 < argc) repeat = std::max(1, std::atoi(argv[++k]));
-    else files.emplace_back(argv[k]);
+    else if (argv[k][0] == '-') {  // --help, or an option not above: say how
+      std::fprintf(std::strcmp(argv[k], "--help") == 0 ? stdout : stderr, "%s", kUsage);
+      return std::strcmp(argv[k], "--help") == 0 ? 0 : 2;
+    } else files.emplace_back(argv[k]);
   }
   if (files.empty())
     for (const char* f : {"cncjs_jsdc-laser.gcode", "cncjs_tball-engrave.gcode", "cncjs_tball-pocket.gcode",
