@@ -85,12 +85,12 @@ class BandPair {
     return !range.empty();
   }
 
-  // Adds cell k's conditions (i <= k < j): its bulge-side chain, and gate
-  // k + 1 when that gate lies strictly between the ends.
   // No barrier lies strictly between the ends (the search knows it from
   // its table): cell() then need not look.
   void set_clear_between() { clear_between_ = true; }
 
+  // Adds cell k's conditions (i <= k < j): its bulge-side chain, and gate
+  // k + 1 when that gate lies strictly between the ends.
   bool cell(std::uint32_t k, PsiRange<S>& range) const {
     if (!clear_between_ && k > i_ && r_.vertex(k).barrier) {
       range.lo = S(2);
