@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <utility>
 
+#include "weld/arc_samples.hpp"
 #include "weld/fit_memo.hpp"
 #include "kerf/fit/detail/chord.hpp"
 #include "kerf/geom/segment.hpp"
@@ -117,13 +118,13 @@ Written write_piece(const Segment<double>& s, P from, const std::vector<P>& pts,
     if (sweep <= 0) sweep += 2 * 3.14159265358979323846;
     length = r * sweep;
   }
-  const std::size_t n = std::clamp<std::size_t>(static_cast<std::size_t>(std::ceil(4 * length / tol)), 8, 512);
+  const std::size_t n =
+      std::clamp<std::size_t>(static_cast<std::size_t>(std::ceil(4 * length / tol)), 8, ArcSamples::kMaxSteps);
   std::size_t near = a;
+  ArcSamples on_arc(c, r, a0, (s.dir > 0 ? 1 : -1) * sweep, n);
   auto sample = [&](std::size_t k) {
-    const double t = static_cast<double>(k) / static_cast<double>(n);
-    if (!arc) return from + (w.end - from) * t;
-    const double ang = a0 + (s.dir > 0 ? 1 : -1) * sweep * t;
-    return P{c.x + r * std::cos(ang), c.y + r * std::sin(ang)};
+    if (arc) return on_arc.at(k);
+    return from + (w.end - from) * (static_cast<double>(k) / static_cast<double>(n));
   };
   // Samples that cannot raise dev are not computed; the result is the same,
   // bit for bit: `margin` is far above the rounding of a sample and of a
