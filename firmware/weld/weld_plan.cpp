@@ -50,17 +50,31 @@ Rounded round_number(double v, int decimals) {
   return {value, std::move(text)};
 }
 
+// distance_to_line_segment(a, b, p) (kerf/geom/segment.hpp) with the
+// segment's own terms computed once: the same operations, so the same value
+// bit for bit, for the many samples measured against one segment.
+struct SegmentDistance {
+  P a, b, d;
+  double len2, len;
+  SegmentDistance(P from, P to) : a(from), b(to), d(to - from), len2(d.norm2()), len(std::sqrt(len2)) {}
+  double operator()(P p) const {
+    if (len2 == 0) return distance(a, p);
+    const double t = d.dot(p - a);
+    if (t <= 0) return distance(a, p);
+    if (t >= len2) return distance(b, p);
+    return std::fabs(d.cross(p - a)) / len;
+  }
+};
+
 // max(dev, distance from q to the polyline pts[a..b] + widen), exactly. The
 // scan starts at segment `near` (the last sample's nearest: the samples walk
 // along the polyline) and goes outwards; it stops once q is within dev, where
 // the rest of the minimum cannot change the maximum. `near` receives q's
-// nearest segment when the scan went through. `witness` receives the
-// distance from q to segment `seg` of the polyline (pts[seg]..pts[seg + 1];
-// the point pts[a] when seg is b), at most the result minus widen.
+// nearest segment when the scan went through; `seg` the segment of the
+// smallest distance found (b: the point pts[a]).
 double raise_to_polyline(const std::vector<P>& pts, std::size_t a, std::size_t b, P q, double widen,
-                         double dev, std::size_t& near, double& witness, std::size_t& seg) {
+                         double dev, std::size_t& near, std::size_t& seg) {
   double best = distance(pts[a], q);
-  witness = best;
   seg = b;
   if (best + widen <= dev) return dev;
   const std::size_t from = std::clamp(near, a, b - 1);
@@ -77,12 +91,8 @@ double raise_to_polyline(const std::vector<P>& pts, std::size_t a, std::size_t b
     const bool up = from + step < b;
     const bool down = step > 0 && from >= a + step;
     if (!up && !down) break;
-    if ((up && within(from + step)) || (down && within(from - step))) {
-      witness = best;
-      return dev;
-    }
+    if ((up && within(from + step)) || (down && within(from - step))) return dev;
   }
-  witness = best;
   return std::max(dev, best + widen);
 }
 
@@ -121,53 +131,23 @@ Written write_piece(const Segment<double>& s, P from, const std::vector<P>& pts,
   const std::size_t n =
       std::clamp<std::size_t>(static_cast<std::size_t>(std::ceil(4 * length / tol)), 8, ArcSamples::kMaxSteps);
   std::size_t near = a;
-  ArcSamples on_arc(c, r, a0, (s.dir > 0 ? 1 : -1) * sweep, n);
+  const ArcSamples on_arc(c, r, a0, (s.dir > 0 ? 1 : -1) * sweep, arc ? n : 0);
   auto sample = [&](std::size_t k) {
     if (arc) return on_arc.at(k);
     return from + (w.end - from) * (static_cast<double>(k) / static_cast<double>(n));
   };
-  // Samples that cannot raise dev are not computed; the result is the same,
-  // bit for bit: `margin` is far above the rounding of a sample and of a
-  // distance (a few ulps of the coordinates). Sample k lies within `witness`
-  // of segment `seg` of the polyline. Its distance to the segment is convex
-  // along the chord from sample k to sample m, and the piece between them
-  // lies within the chord's sagitta of it (at most r a^2 / 8 for an angle
-  // a, 0 on a line): while the larger of the two ends' distances plus that
-  // stays below dev - widen - margin, no sample between can raise dev. The
-  // last such m is found by galloping and bisection.
-  const double size = std::fabs(from.x) + std::fabs(from.y) + std::fabs(w.end.x) + std::fabs(w.end.y) +
-                      std::fabs(c.x) + std::fabs(c.y) + r + length + 1;
-  const double margin = 1e-6 * tol + 1e-12 * size;
-  double witness = 0;
+  // Every sample is measured: first against the segment nearest the last
+  // one scanned (the samples walk along the polyline), whose distance, if
+  // within dev - widen, settles it as raise_to_polyline would (the same
+  // distance, the same test), so dev is the exact maximum over the samples.
   std::size_t seg = b;
-  std::size_t cached = 0;  // a sample computed by the gallop, 0: none
-  P cached_q{};
+  SegmentDistance last(pts[a], pts[a]);
   for (std::size_t k = 1; k < n; ++k) {
-    const P q = k == cached ? cached_q : sample(k);
-    dev = raise_to_polyline(pts, a, b, q, widen, dev, near, witness, seg);
-    if (witness + widen + margin > dev) continue;
-    auto fine = [&](std::size_t m) {
-      const double angle = sweep * static_cast<double>(m - k) / static_cast<double>(n);
-      if (arc && angle > 1) return false;
-      const double sagitta = arc ? r * angle * angle / 8 * (1 + 1e-9) : 0.0;
-      const P qm = sample(m);
-      if (m == k + 1) {
-        cached = m;
-        cached_q = qm;
-      }
-      const double d = seg == b ? distance(pts[a], qm) : distance_to_line_segment(pts[seg], pts[seg + 1], qm);
-      return std::max(witness, d) + sagitta + widen + margin <= dev;
-    };
-    std::size_t lo = k, hi = k + 1;  // lo fine; hi not, or n
-    while (hi < n && fine(hi)) {
-      lo = hi;
-      hi = std::min(n, k + 2 * (hi - k));
-    }
-    while (hi - lo > 1) {
-      const std::size_t mid = lo + (hi - lo) / 2;
-      (fine(mid) ? lo : hi) = mid;
-    }
-    k = lo;  // samples k + 1 .. lo cannot raise dev
+    const P q = sample(k);
+    if (seg != b && last(q) + widen <= dev) continue;
+    const std::size_t was = seg;
+    dev = raise_to_polyline(pts, a, b, q, widen, dev, near, seg);
+    if (seg != b && seg != was) last = SegmentDistance(pts[seg], pts[seg + 1]);
   }
   w.deviation = dev;
   return w;
