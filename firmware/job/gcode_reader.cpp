@@ -86,11 +86,9 @@ bool split_words(GBlock& b, Scratch& sc, std::string& reason) {
   if (s.find_first_not_of(" \t", i) != std::string::npos && s[i] == '%' &&
       s.find_first_not_of(" \t", i + 1) == std::string::npos)
     return true;  // the tape mark
-  // A parameter or an expression anywhere (outside comments) makes the line
-  // dynamic; most lines have neither character, found at once by memchr.
-  const bool maybe_dynamic = std::memchr(s.data() + i, '#', s.size() - i) != nullptr ||
-                             std::memchr(s.data() + i, '[', s.size() - i) != nullptr;
-  for (std::size_t k = i; maybe_dynamic && k < s.size() && s[k] != ';'; ++k) {
+  const char* rest = s.data() + i;  // a parameter or an expression anywhere? (most lines: neither, two memchr)
+  const bool maybe = std::memchr(rest, '#', s.size() - i) != nullptr || std::memchr(rest, '[', s.size() - i) != nullptr;
+  for (std::size_t k = i; maybe && k < s.size() && s[k] != ';'; ++k) {
     if (s[k] == '(') k = std::min(s.find(')', k), s.size() - 1);
     else if (s[k] == '#' || s[k] == '[') return b.dynamic = true, true;
   }
