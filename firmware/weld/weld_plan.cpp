@@ -139,14 +139,23 @@ Written write_piece(const Segment<double>& s, P from, const std::vector<P>& pts,
     return from + (w.end - from) * (static_cast<double>(k) / static_cast<double>(n));
   };
   // Every sample is measured: first against the segment nearest the last
-  // one scanned (the samples walk along the polyline), whose distance, if
-  // within dev - widen, settles it as raise_to_polyline would (the same
-  // distance, the same test), so dev is the exact maximum over the samples.
+  // one scanned, then the segment after it (the samples walk along the
+  // polyline); a distance within dev - widen settles it as
+  // raise_to_polyline would (the same distance, the same test), so dev is
+  // the exact maximum over the samples.
   std::size_t seg = b;
   SegmentDistance last(pts[a], pts[a]);
   for (std::size_t k = 1; k < n; ++k) {
     const P q = sample(k);
     if (seg != b && last(q) + widen <= dev) continue;
+    if (seg + 1 < b) {  // most often the sample has walked on to the next segment
+      const SegmentDistance next(pts[seg + 1], pts[seg + 2]);
+      if (next(q) + widen <= dev) {
+        last = next;
+        near = ++seg;
+        continue;
+      }
+    }
     const std::size_t was = seg;
     dev = raise_to_polyline(pts, a, b, q, widen, dev, near, seg);
     if (seg != b && seg != was) last = SegmentDistance(pts[seg], pts[seg + 1]);
