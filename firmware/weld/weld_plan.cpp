@@ -138,16 +138,40 @@ Written write_piece(const Segment<double>& s, P from, const std::vector<P>& pts,
     if (arc) return on_arc.at(k);
     return from + (w.end - from) * (static_cast<double>(k) / static_cast<double>(n));
   };
-  // Every sample is measured: first against the segment nearest the last
-  // one scanned, then the segment after it (the samples walk along the
-  // polyline); a distance within dev - widen settles it as
-  // raise_to_polyline would (the same distance, the same test), so dev is
-  // the exact maximum over the samples.
-  std::size_t seg = b;
+  // The samples walk along the polyline: each is measured first against the
+  // segment nearest the last one scanned, then the segment after it; a
+  // distance within dev - widen settles it as raise_to_polyline would (the
+  // same distance, the same test). Where one segment settles sample k and
+  // sample k + kJump with room to spare, the samples between are skipped:
+  // their distance to the segment (convex) is at most the larger of the
+  // two along the chord, and the piece between lies within the chord's
+  // sagitta of it (r a^2 / 8 for an angle a, 0 on a line). `margin` is far
+  // above the rounding of a sample and of a distance (a few ulps of the
+  // coordinates), so they cannot raise dev: it is the maximum over all the
+  // samples, bit for bit. A jump is tried at most once per kJump samples.
+  constexpr std::size_t kJump = 4;
+  const double jump_angle = arc ? sweep * kJump / static_cast<double>(n) : 0.0;
+  const double sagitta = r * jump_angle * jump_angle / 8 * (1 + 1e-9);
+  const double size = std::fabs(from.x) + std::fabs(from.y) + std::fabs(w.end.x) + std::fabs(w.end.y) +
+                      std::fabs(c.x) + std::fabs(c.y) + r + length + 1;
+  const double margin = 1e-6 * tol + 1e-12 * size;
+  const bool jumps = jump_angle <= 1 && kJump < n;
+  std::size_t seg = b, ahead = 0;  // ahead: a sample computed before its turn (q_ahead), 0: none
+  P q_ahead{};
   SegmentDistance last(pts[a], pts[a]);
   for (std::size_t k = 1; k < n; ++k) {
-    const P q = sample(k);
-    if (seg != b && last(q) + widen <= dev) continue;
+    const P q = k == ahead ? q_ahead : sample(k);
+    if (seg != b) {
+      const double d = last(q);
+      if (d + widen <= dev) {
+        if (jumps && ahead <= k && k + kJump < n) {
+          ahead = k + kJump;
+          q_ahead = sample(ahead);
+          if (std::max(d, last(q_ahead)) + sagitta + widen + margin <= dev) k = ahead - 1;
+        }
+        continue;
+      }
+    }
     if (seg + 1 < b) {  // most often the sample has walked on to the next segment
       const SegmentDistance next(pts[seg + 1], pts[seg + 2]);
       if (next(q) + widen <= dev) {
