@@ -7,6 +7,7 @@
 
 #include "weld/arc_samples.hpp"
 #include "weld/fit_memo.hpp"
+#include "weld/segment_distance.hpp"
 #include "kerf/fit/detail/chord.hpp"
 #include "kerf/geom/segment.hpp"
 
@@ -51,22 +52,6 @@ Rounded round_number(double v, int decimals) {
   if (!exact) text = format_number(value, decimals);
   return {value, std::move(text)};
 }
-
-// distance_to_line_segment(a, b, p) (kerf/geom/segment.hpp) with the
-// segment's own terms computed once: the same operations, so the same value
-// bit for bit, for the many samples measured against one segment.
-struct SegmentDistance {
-  P a, b, d;
-  double len2, len;
-  SegmentDistance(P from, P to) : a(from), b(to), d(to - from), len2(d.norm2()), len(std::sqrt(len2)) {}
-  double operator()(P p) const {
-    if (len2 == 0) return distance(a, p);
-    const double t = d.dot(p - a);
-    if (t <= 0) return distance(a, p);
-    if (t >= len2) return distance(b, p);
-    return std::fabs(d.cross(p - a)) / len;
-  }
-};
 
 // max(dev, distance from q to the polyline pts[a..b] + widen), exactly. The
 // scan starts at segment `near` (the last sample's nearest: the samples walk
