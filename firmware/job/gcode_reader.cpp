@@ -86,7 +86,9 @@ bool split_words(GBlock& b, Scratch& sc, std::string& reason) {
   if (s.find_first_not_of(" \t", i) != std::string::npos && s[i] == '%' &&
       s.find_first_not_of(" \t", i + 1) == std::string::npos)
     return true;  // the tape mark
-  for (std::size_t k = i; k < s.size() && s[k] != ';'; ++k) {  // a parameter or an expression anywhere
+  const char* rest = s.data() + i;  // a parameter or an expression anywhere? (most lines: neither, two memchr)
+  const bool maybe = std::memchr(rest, '#', s.size() - i) != nullptr || std::memchr(rest, '[', s.size() - i) != nullptr;
+  for (std::size_t k = i; maybe && k < s.size() && s[k] != ';'; ++k) {
     if (s[k] == '(') k = std::min(s.find(')', k), s.size() - 1);
     else if (s[k] == '#' || s[k] == '[') return b.dynamic = true, true;
   }
@@ -506,8 +508,8 @@ GcodeFile parse_source(std::string text_in, std::string display_name, GcodePart*
     if (b.decimals > f.decimals) f.decimals = b.decimals;
     // The spans get their place in bind_spans; their sizes are kept here.
     append(src->words, words_mapped, sc.words);
-    append(src->pieces, pieces_mapped, sc.comments);
-    append(src->pieces, pieces_mapped, sc.unknown);
+    if (!sc.comments.empty()) append(src->pieces, pieces_mapped, sc.comments);  // most lines have none
+    if (!sc.unknown.empty()) append(src->pieces, pieces_mapped, sc.unknown);
     b.words = {src->words.data(), sc.words.size()};
     b.comments = {src->pieces.data(), sc.comments.size()};
     b.unknown = {src->pieces.data(), sc.unknown.size()};

@@ -1,12 +1,13 @@
 #include "weld/weld_plan.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <utility>
 
+#include "weld/arc_samples.hpp"
 #include "weld/fit_memo.hpp"
+#include "weld/segment_distance.hpp"
 #include "kerf/fit/detail/chord.hpp"
 #include "kerf/geom/segment.hpp"
 
@@ -18,10 +19,12 @@ namespace {
 // "-0" as "0". `exact`, if given, is set when the text reads back as a
 // double that prints as the same text (at most 15 digits, DBL_DIG): the
 // caller may then reuse the text instead of printing the read value again.
+// to_chars prints what printf's "%.*f" prints (both exact, ties to even),
+// at a fifth of the cost; from_chars reads like strtod.
 std::string format_number(double v, int decimals, bool* exact = nullptr) {
-  char buf[64];
-  const int len = std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  std::string s(buf, len > 0 ? static_cast<std::size_t>(len) : 0);
+  char buf[400];  // DBL_MAX with 11 decimals (--decimals 9, + 2) fits
+  const std::to_chars_result printed = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, decimals);
+  std::string s(buf, printed.ec == std::errc() ? static_cast<std::size_t>(printed.ptr - buf) : 0);
   if (exact != nullptr) {
     const std::size_t point = s.find('.');
     const std::size_t whole = (point == std::string::npos ? s.size() : point) - (s[0] == '-' ? 1 : 0);
@@ -44,7 +47,8 @@ struct Rounded {
 Rounded round_number(double v, int decimals) {
   bool exact = false;
   std::string text = format_number(v, decimals, &exact);
-  const double value = std::strtod(text.c_str(), nullptr);
+  double value = 0;
+  std::from_chars(text.data(), text.data() + text.size(), value);
   if (!exact) text = format_number(value, decimals);
   return {value, std::move(text)};
 }
@@ -53,13 +57,11 @@ Rounded round_number(double v, int decimals) {
 // scan starts at segment `near` (the last sample's nearest: the samples walk
 // along the polyline) and goes outwards; it stops once q is within dev, where
 // the rest of the minimum cannot change the maximum. `near` receives q's
-// nearest segment when the scan went through. `witness` receives the
-// distance from q to segment `seg` of the polyline (pts[seg]..pts[seg + 1];
-// the point pts[a] when seg is b), at most the result minus widen.
+// nearest segment when the scan went through; `seg` the segment of the
+// smallest distance found (b: the point pts[a]).
 double raise_to_polyline(const std::vector<P>& pts, std::size_t a, std::size_t b, P q, double widen,
-                         double dev, std::size_t& near, double& witness, std::size_t& seg) {
+                         double dev, std::size_t& near, std::size_t& seg) {
   double best = distance(pts[a], q);
-  witness = best;
   seg = b;
   if (best + widen <= dev) return dev;
   const std::size_t from = std::clamp(near, a, b - 1);
@@ -76,12 +78,8 @@ double raise_to_polyline(const std::vector<P>& pts, std::size_t a, std::size_t b
     const bool up = from + step < b;
     const bool down = step > 0 && from >= a + step;
     if (!up && !down) break;
-    if ((up && within(from + step)) || (down && within(from - step))) {
-      witness = best;
-      return dev;
-    }
+    if ((up && within(from + step)) || (down && within(from - step))) return dev;
   }
-  witness = best;
   return std::max(dev, best + widen);
 }
 
@@ -117,56 +115,59 @@ Written write_piece(const Segment<double>& s, P from, const std::vector<P>& pts,
     if (sweep <= 0) sweep += 2 * 3.14159265358979323846;
     length = r * sweep;
   }
-  const std::size_t n = std::clamp<std::size_t>(static_cast<std::size_t>(std::ceil(4 * length / tol)), 8, 512);
+  const std::size_t n =
+      std::clamp<std::size_t>(static_cast<std::size_t>(std::ceil(4 * length / tol)), 8, ArcSamples::kMaxSteps);
   std::size_t near = a;
+  const ArcSamples on_arc(c, r, a0, (s.dir > 0 ? 1 : -1) * sweep, arc ? n : 0);
   auto sample = [&](std::size_t k) {
-    const double t = static_cast<double>(k) / static_cast<double>(n);
-    if (!arc) return from + (w.end - from) * t;
-    const double ang = a0 + (s.dir > 0 ? 1 : -1) * sweep * t;
-    return P{c.x + r * std::cos(ang), c.y + r * std::sin(ang)};
+    if (arc) return on_arc.at(k);
+    return from + (w.end - from) * (static_cast<double>(k) / static_cast<double>(n));
   };
-  // Samples that cannot raise dev are not computed; the result is the same,
-  // bit for bit: `margin` is far above the rounding of a sample and of a
-  // distance (a few ulps of the coordinates). Sample k lies within `witness`
-  // of segment `seg` of the polyline. Its distance to the segment is convex
-  // along the chord from sample k to sample m, and the piece between them
-  // lies within the chord's sagitta of it (at most r a^2 / 8 for an angle
-  // a, 0 on a line): while the larger of the two ends' distances plus that
-  // stays below dev - widen - margin, no sample between can raise dev. The
-  // last such m is found by galloping and bisection.
+  // The samples walk along the polyline: each is measured first against the
+  // segment nearest the last one scanned, then the segment after it; a
+  // distance within dev - widen settles it as raise_to_polyline would (the
+  // same distance, the same test). Where one segment settles sample k and
+  // sample k + kJump with room to spare, the samples between are skipped:
+  // their distance to the segment (convex) is at most the larger of the
+  // two along the chord, and the piece between lies within the chord's
+  // sagitta of it (r a^2 / 8 for an angle a, 0 on a line). `margin` is far
+  // above the rounding of a sample and of a distance (a few ulps of the
+  // coordinates), so they cannot raise dev: it is the maximum over all the
+  // samples, bit for bit. A jump is tried at most once per kJump samples.
+  constexpr std::size_t kJump = 4;
+  const double jump_angle = arc ? sweep * kJump / static_cast<double>(n) : 0.0;
+  const double sagitta = r * jump_angle * jump_angle / 8 * (1 + 1e-9);
   const double size = std::fabs(from.x) + std::fabs(from.y) + std::fabs(w.end.x) + std::fabs(w.end.y) +
                       std::fabs(c.x) + std::fabs(c.y) + r + length + 1;
   const double margin = 1e-6 * tol + 1e-12 * size;
-  double witness = 0;
-  std::size_t seg = b;
-  std::size_t cached = 0;  // a sample computed by the gallop, 0: none
-  P cached_q{};
+  const bool jumps = jump_angle <= 1 && kJump < n;
+  std::size_t seg = b, ahead = 0;  // ahead: a sample computed before its turn (q_ahead), 0: none
+  P q_ahead{};
+  SegmentDistance last(pts[a], pts[a]);
   for (std::size_t k = 1; k < n; ++k) {
-    const P q = k == cached ? cached_q : sample(k);
-    dev = raise_to_polyline(pts, a, b, q, widen, dev, near, witness, seg);
-    if (witness + widen + margin > dev) continue;
-    auto fine = [&](std::size_t m) {
-      const double angle = sweep * static_cast<double>(m - k) / static_cast<double>(n);
-      if (arc && angle > 1) return false;
-      const double sagitta = arc ? r * angle * angle / 8 * (1 + 1e-9) : 0.0;
-      const P qm = sample(m);
-      if (m == k + 1) {
-        cached = m;
-        cached_q = qm;
+    const P q = k == ahead ? q_ahead : sample(k);
+    if (seg != b) {
+      const double d = last(q);
+      if (d + widen <= dev) {
+        if (jumps && ahead <= k && k + kJump < n) {
+          ahead = k + kJump;
+          q_ahead = sample(ahead);
+          if (std::max(d, last(q_ahead)) + sagitta + widen + margin <= dev) k = ahead - 1;
+        }
+        continue;
       }
-      const double d = seg == b ? distance(pts[a], qm) : distance_to_line_segment(pts[seg], pts[seg + 1], qm);
-      return std::max(witness, d) + sagitta + widen + margin <= dev;
-    };
-    std::size_t lo = k, hi = k + 1;  // lo fine; hi not, or n
-    while (hi < n && fine(hi)) {
-      lo = hi;
-      hi = std::min(n, k + 2 * (hi - k));
     }
-    while (hi - lo > 1) {
-      const std::size_t mid = lo + (hi - lo) / 2;
-      (fine(mid) ? lo : hi) = mid;
+    if (seg + 1 < b) {  // most often the sample has walked on to the next segment
+      const SegmentDistance next(pts[seg + 1], pts[seg + 2]);
+      if (next(q) + widen <= dev) {
+        last = next;
+        near = ++seg;
+        continue;
+      }
     }
-    k = lo;  // samples k + 1 .. lo cannot raise dev
+    const std::size_t was = seg;
+    dev = raise_to_polyline(pts, a, b, q, widen, dev, near, seg);
+    if (seg != b && seg != was) last = SegmentDistance(pts[seg], pts[seg + 1]);
   }
   w.deviation = dev;
   return w;
