@@ -183,12 +183,12 @@ class StartRegion {
     if (n == 0) return;
     S s[kMaxEdges + 1];
     s[0] = h.a * tau_[0] + h.b * lambda_[0] + h.c;
-    for (int t = 1; t < n; ++t) s[t] = h.a * tau_[t] + h.b * lambda_[t] + h.c;
     S low = s[0];
     S high = s[0];
     for (int t = 1; t < n; ++t) {
-      low = min_of(low, s[t]);
-      high = max_of(high, s[t]);
+      s[t] = h.a * tau_[t] + h.b * lambda_[t] + h.c;
+      low = s[t] < low ? s[t] : low;
+      high = s[t] > high ? s[t] : high;
     }
     if (!(low < S(0))) return;  // every vertex inside: h cuts nothing
     if (high < S(0)) {
