@@ -46,8 +46,10 @@ namespace kerf::fit::band_detail {
 template <class S>
 class StartRegion {
  public:
-  // Edges the polygon keeps; past that it is cut down by chords.
-  static constexpr int kMaxEdges = 32;
+  // Edges the polygon keeps; past that it is cut down by chords (16: the
+  // search keeps four regions on the stack, within the 4 KiB that the
+  // Cortex-M build allows a function).
+  static constexpr int kMaxEdges = 16;
 
   std::uint32_t start() const { return start_; }
   int orient() const { return orient_; }
