@@ -75,7 +75,7 @@ struct Oracle {
         if (j > i + kFreshWithin) return false;
         q = &regions.take(*region, i, orient);
       }
-      return q->reach(*region, j) && q->admits(*region, j);
+      return q->reach(*region, j) && q->admits(*region, j, binding[o]);
     }
   }
 

@@ -87,7 +87,11 @@ class StartRegion {
 
   // Does some arc from p_i to p_j of this orientation pass the pair test
   // (with margin)? Call after reach(r, j). No barrier may lie between.
-  bool admits(const BandRegion<S>& r, std::uint32_t j) const {
+  // `binding`, if given, receives after a yes the cells whose conditions
+  // bound the arcs found (kNoCell: the box, a chord or the ends), as the
+  // pair test's run() gives them: the search visits them first in its
+  // next pair test.
+  bool admits(const BandRegion<S>& r, std::uint32_t j, std::uint32_t* binding = nullptr) const {
     if (count_ == 0 || level_ != j) return false;
     const Vec2<S> rb = r.point(j) - a_;
     const S ab = rb.norm2();
@@ -97,15 +101,17 @@ class StartRegion {
     const S cb_ab = S(-2) * e_.dot(rb) / ab;
     S lo = -tau_max_;
     S hi = tau_max_;
+    std::uint32_t lo_cell = kNoCell;
+    std::uint32_t hi_cell = kNoCell;
     auto bound = [&](const Plane& h) {
       // h.a tau + h.b lambda + h.c >= 0 along the line.
       const S k = h.a - h.b * bb_ab;
       const S c = h.c - h.b * cb_ab;
       // -c / k, divided only where it tightens the interval.
       if (k > S(0)) {
-        if (-c > lo * k) lo = -c / k;
+        if (-c > lo * k) lo = -c / k, lo_cell = h.cell;
       } else if (k < S(0)) {
-        if (-c > hi * k) hi = -c / k;
+        if (-c > hi * k) hi = -c / k, hi_cell = h.cell;
       } else if (c < S(0)) {
         hi = lo - S(1);
       }
@@ -116,12 +122,19 @@ class StartRegion {
     const Vec2<S> g = r.forward(j, true);
     bound(with_margin({-f_.cross(g), rb.cross(g), -e_.cross(g)}));
     if (!(hi - lo > kMargin * (Scalar<S>::abs(lo) + Scalar<S>::abs(hi) + S(1)))) return false;
-    return no_gate_beyond_chord(r, j);
+    if (!no_gate_beyond_chord(r, j)) return false;
+    if (binding != nullptr) {
+      binding[0] = lo_cell;
+      binding[1] = hi_cell;
+    }
+    return true;
   }
 
  private:
+  static constexpr std::uint32_t kNoCell = 0xFFFFFFFFu;
   struct Plane {
     S a, b, c;  // a tau + b lambda + c >= 0
+    std::uint32_t cell = kNoCell;  // the cell whose condition it is
   };
   static constexpr S kMargin = S(1) / S(1073741824);  // 2^-30
 
@@ -134,44 +147,44 @@ class StartRegion {
   // h moved inwards by 2^-30 of its terms' size over the box.
   Plane with_margin(Plane h) const {
     const S size = Scalar<S>::abs(h.a) * tau_max_ + Scalar<S>::abs(h.b) * lambda_max_ + Scalar<S>::abs(h.c);
-    return {h.a, h.b, h.c - kMargin * size};
+    return {h.a, h.b, h.c - kMargin * size, h.cell};
   }
 
   // o F(q) >= slack |lambda| (outside, slack = the longest adjacent chain
   // segment squared / 4), or o F(q) <= 0 (inside).
-  void outside(Vec2<S> q, S slack) {
+  void outside(Vec2<S> q, S slack, std::uint32_t cell) {
     const Vec2<S> rq = q - a_;
     const S o = S(orient_);
     // o F(q) - |lambda| slack = o (lambda (A - slack) + tau B + C), as
     // |lambda| = o lambda.
-    clip(with_margin({o * S(-2) * f_.dot(rq), o * (rq.norm2() - slack), o * S(-2) * e_.dot(rq)}));
+    clip(with_margin({o * S(-2) * f_.dot(rq), o * (rq.norm2() - slack), o * S(-2) * e_.dot(rq), cell}));
   }
-  void inside(Vec2<S> q) {
+  void inside(Vec2<S> q, std::uint32_t cell) {
     const Vec2<S> rq = q - a_;
     const S o = S(orient_);
-    clip(with_margin({o * S(2) * f_.dot(rq), -o * rq.norm2(), o * S(2) * e_.dot(rq)}));
+    clip(with_margin({o * S(2) * f_.dot(rq), -o * rq.norm2(), o * S(2) * e_.dot(rq), cell}));
   }
 
   void add_cell(const BandRegion<S>& r, std::uint32_t k) {
-    if (k > start_) inside(r.gate_end(k, orient_));
+    if (k > start_) inside(r.gate_end(k, orient_), k - 1);  // gate k is cell k - 1's
     if (const BandChainSlot<S>* slot = r.cached_slot(k, -orient_)) {
-      add_chain(slot->chain, k > start_);
+      add_chain(slot->chain, k > start_, k);
     } else {
       BandChain<S> own;  // 40 points zeroed: only without a cache
       r.chain(k, -orient_, own);
-      add_chain(own, k > start_);
+      add_chain(own, k > start_, k);
     }
   }
 
   // A chain's points outside, each by its segments' slack. Its first point
   // is the last one of the chain before (`follows`): taken again only when
   // its slack here is larger.
-  void add_chain(const BandChain<S>& c, bool follows) {
+  void add_chain(const BandChain<S>& c, bool follows, std::uint32_t cell) {
     S before = S(0);  // the squared length of the segment before point t
     for (int t = 0; t < c.size && count_ > 0; ++t) {
       const S after = t + 1 < c.size ? (c.pt[t + 1] - c.pt[t]).norm2() : S(0);
       const S slack = max_of(before, after);
-      if (t > 0 || !follows || after > last_slack_) outside(c.pt[t], slack / S(4));
+      if (t > 0 || !follows || after > last_slack_) outside(c.pt[t], slack / S(4), cell);
       before = after;
       if (t + 1 == c.size) last_slack_ = slack;
     }
