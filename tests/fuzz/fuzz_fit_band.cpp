@@ -3,14 +3,17 @@
 // inf, which must be refused, or 1e-300 or 1e300, handled or refused). A line along each edge always lies
 // in the band, so the fit must succeed, and the independent band referee
 // (tests/support/band_checker.hpp: certified band, gates in order) must
-// accept every piece.
+// accept every piece. The search's start regions must admit no pair that
+// the pair test refuses (bridge/start_region_check.hpp).
 #include <cstddef>
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <vector>
 
 #include "bridge/band_bridge.hpp"
+#include "bridge/start_region_check.hpp"
 #include "fuzz_check.hpp"
 #include "fuzz_points.hpp"
 
@@ -55,6 +58,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     return 0;
   }
   FUZZ_CHECK(r.ok(), kerf::to_string(r.status()));
+  {
+    std::vector<kerf::Vec2<double>> p;
+    std::vector<kerf::fit::BandWidth<double>> bw;
+    for (std::size_t k = 0; k < f.pts.size(); ++k) {
+      p.push_back({f.pts[k].x, f.pts[k].y});
+      bw.push_back({w.left[k], w.right[k]});
+    }
+    kerf_test::StartRegionTally tally;
+    FUZZ_CHECK(kerf_test::start_regions_sound(p, bw, 64, tally), tally.wrong.c_str());
+  }
   kerf_fuzz::dump_pieces(core.pieces(r.value().pieces));
   const auto rep = kerf_test::check_band_fit(f.pts, w, core.pieces(r.value().pieces),
                                              kerf_fuzz::slack_for(f.pts));
