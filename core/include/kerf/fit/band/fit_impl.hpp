@@ -79,6 +79,8 @@ struct Oracle {
     }
   }
 
+  // The pair test has just found that i reaches j in orientation o: a
+  // region for i, built up to j, unless one is kept.
   void remember(std::uint32_t i, std::uint32_t j, int o) const {
     if constexpr (!kFloating<S>) {
       (void)i, (void)j, (void)o;
