@@ -21,8 +21,8 @@
 #include <string>
 #include <vector>
 
+#include "band_pair_inputs.hpp"
 #include "io/band_storage.hpp"
-#include "job/gcode_reader.hpp"
 #include "kerf/fit/band.hpp"
 #include "kerf/fit/band/pair.hpp"
 #include "typed_core_helpers.hpp"
@@ -123,38 +123,17 @@ TEST(BandPairShortcuts, SameVerdictsAndRangesOnTheTestCurves) {
 
 TEST(BandPairShortcuts, SameVerdictsAndRangesOnJitterAndZigzags) {
   Tally tally;
-  std::vector<VD> jitter, zigzag;
-  std::uint32_t seed = 12345;
-  auto noise = [&] {
-    seed = seed * 1664525u + 1013904223u;
-    return static_cast<double>(seed >> 8) / 16777216.0 - 0.5;
-  };
-  for (int k = 0; k < 300; ++k) {
-    const double t = 0.02 * k;
-    jitter.push_back({10 * std::cos(t) + 0.004 * noise(), 10 * std::sin(t) + 0.004 * noise()});
-    zigzag.push_back({0.3 * k, (k % 4 < 2 ? 0.05 : -0.05) * (1 + (k % 7))});
-  }
-  check_widths(jitter, 0.01, "jittered circle", tally);
-  check_widths(zigzag, 0.1, "zigzag", tally);
+  check_widths(kerf::test::jittered_circle(12345), 0.01, "jittered circle", tally);
+  check_widths(kerf::test::zigzag(), 0.1, "zigzag", tally);
   EXPECT_GT(tally.valid, 0u);
 }
 
 TEST(BandPairShortcuts, SameVerdictsAndRangesOnCorpusPolylines) {
   Tally tally;
-  const kerf::job::GcodeFile g =
-      kerf::job::read_gcode(std::string(KERF_TEST_DATA_DIR) + "/gcode/cncjs_tball-pocket.gcode");
-  ASSERT_TRUE(g.ok) << g.line << ": " << g.reason;
-  std::size_t taken = 0;
-  for (std::size_t k = 0; k < g.polylines.size() && taken < 4; ++k) {
-    std::vector<VD> p;
-    for (const VD& v : g.polylines[k].points)
-      if (p.empty() || !(p.back() == v)) p.push_back(v);
-    if (p.size() < 40) continue;
-    if (p.size() > 400) p.resize(400);
-    ++taken;
-    expect_same_verdicts(p, {0.025, 0.025}, "tball-pocket polyline " + std::to_string(k + 1), tally);
-  }
-  EXPECT_EQ(taken, 4u);
+  const std::vector<std::vector<VD>> lines = kerf::test::tball_pocket_polylines(4);
+  ASSERT_EQ(lines.size(), 4u);
+  for (std::size_t k = 0; k < lines.size(); ++k)
+    expect_same_verdicts(lines[k], {0.025, 0.025}, "tball-pocket polyline " + std::to_string(k + 1), tally);
   EXPECT_GT(tally.valid, tally.pairs / 10) << tally.valid << " of " << tally.pairs;
 }
 

@@ -7,13 +7,12 @@
 // polylines (tests/support/bridge/start_region_check.hpp).
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
 
+#include "band_pair_inputs.hpp"
 #include "bridge/start_region_check.hpp"
-#include "job/gcode_reader.hpp"
 #include "typed_core_helpers.hpp"
 
 namespace {
@@ -50,39 +49,18 @@ TEST(BandStartRegion, NoFalseYesAndMostAdmittedOnTheTestCurves) {
 }
 
 TEST(BandStartRegion, NoFalseYesOnAJitteredCircleAndAZigzag) {
-  std::vector<VD> jitter, zigzag;
-  std::uint32_t seed = 2511;
-  auto noise = [&] {
-    seed = seed * 1664525u + 1013904223u;
-    return static_cast<double>(seed >> 8) / 16777216.0 - 0.5;
-  };
-  for (int k = 0; k < 300; ++k) {
-    const double t = 0.02 * k;
-    jitter.push_back({10 * std::cos(t) + 0.004 * noise(), 10 * std::sin(t) + 0.004 * noise()});
-    zigzag.push_back({0.3 * k, (k % 4 < 2 ? 0.05 : -0.05) * (1 + (k % 7))});
-  }
   StartRegionTally a, b;
-  expect_sound(jitter, {0.01, 0.01}, "jittered circle", a);
-  expect_sound(zigzag, {0.1, 0.1}, "zigzag", b);
+  expect_sound(kerf::test::jittered_circle(2511), {0.01, 0.01}, "jittered circle", a);
+  expect_sound(kerf::test::zigzag(), {0.1, 0.1}, "zigzag", b);
   expect_most_admitted(a, "jittered circle");
 }
 
 TEST(BandStartRegion, NoFalseYesAndMostAdmittedOnCorpusPolylines) {
-  const kerf::job::GcodeFile g =
-      kerf::job::read_gcode(std::string(KERF_TEST_DATA_DIR) + "/gcode/cncjs_tball-pocket.gcode");
-  ASSERT_TRUE(g.ok) << g.line << ": " << g.reason;
+  const std::vector<std::vector<VD>> lines = kerf::test::tball_pocket_polylines(4);
+  ASSERT_EQ(lines.size(), 4u);
   StartRegionTally t;
-  std::size_t taken = 0;
-  for (std::size_t k = 0; k < g.polylines.size() && taken < 4; ++k) {
-    std::vector<VD> p;
-    for (const VD& v : g.polylines[k].points)
-      if (p.empty() || !(p.back() == v)) p.push_back(v);
-    if (p.size() < 40) continue;
-    if (p.size() > 400) p.resize(400);
-    ++taken;
-    expect_sound(p, {0.025, 0.025}, "tball-pocket polyline " + std::to_string(k + 1), t);
-  }
-  EXPECT_EQ(taken, 4u);
+  for (std::size_t k = 0; k < lines.size(); ++k)
+    expect_sound(lines[k], {0.025, 0.025}, "tball-pocket polyline " + std::to_string(k + 1), t);
   expect_most_admitted(t, "tball-pocket");
 }
 
