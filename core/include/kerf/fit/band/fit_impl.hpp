@@ -58,7 +58,7 @@ struct Oracle {
   mutable std::conditional_t<kFloating<S>, StartRegions<S>, NoStartRegion> regions = {};
   static constexpr std::uint32_t kFreshWithin = 4;
 
-  // Does a start region admit i -> j in orientation o? A new one is started
+  // Does a start region admit i -> j in orientation o? One is started
   // for a start asked about one of its first few j, or (remember()) one
   // that the pair test has just found to reach j: a start that reaches j
   // usually reaches the next ones too (29 in a row on average in

@@ -39,6 +39,7 @@
 #include <type_traits>  // freestanding
 
 #include "kerf/fit/band/numeric.hpp"
+#include "kerf/fit/band/pair.hpp"
 #include "kerf/fit/band/region.hpp"
 
 namespace kerf::fit::band_detail {
@@ -52,9 +53,7 @@ class StartRegion {
   static constexpr int kMaxEdges = 16;
 
   std::uint32_t start() const { return start_; }
-  int orient() const { return orient_; }
   std::uint32_t level() const { return level_; }
-  bool live() const { return count_ > 0; }
 
   // Starts over at start i (i + 1 < the region's size) in orientation
   // `orient`: the box alone, no cell yet.
@@ -131,7 +130,7 @@ class StartRegion {
   }
 
  private:
-  static constexpr std::uint32_t kNoCell = 0xFFFFFFFFu;
+  static constexpr std::uint32_t kNoCell = BandPair<S>::kNoCell;  // what run()'s binding takes
   struct Plane {
     S a, b, c;  // a tau + b lambda + c >= 0
     std::uint32_t cell = kNoCell;  // the cell whose condition it is
@@ -202,8 +201,8 @@ class StartRegion {
     S high = s[0];
     for (int t = 1; t < n; ++t) {
       s[t] = h.a * tau_[t] + h.b * lambda_[t] + h.c;
-      low = s[t] < low ? s[t] : low;
-      high = s[t] > high ? s[t] : high;
+      low = min_of(low, s[t]);
+      high = max_of(high, s[t]);
     }
     if (!(low < S(0))) return;  // every vertex inside: h cuts nothing
     if (high < S(0)) {
@@ -218,7 +217,7 @@ class StartRegion {
     while (s[next(last)] < S(0)) last = next(last);
     const int before = prev(first);
     const int after = next(last);
-    // The new points: where the boundary leaves h on edge `before`, and
+    // The points added: where the boundary leaves h on edge `before`, and
     // enters it on edge `last` (none where a vertex lies on h's line).
     S nt[2], nl[2];
     Plane ne[2];
@@ -316,7 +315,7 @@ class StartRegion {
 };
 
 // A few start regions per orientation, the least recently used started
-// over for a new start: the search asks the nearest start about each j
+// over for another start: the search asks the nearest start about each j
 // first, and when its reach ends, a farther one takes over.
 template <class S>
 class StartRegions {
@@ -325,9 +324,10 @@ class StartRegions {
 
   // The region of start i in `orient`, if kept and not past j.
   StartRegion<S>* find(std::uint32_t i, int orient, std::uint32_t j) {
-    for (int k = 0; k < 2 * kSlots; ++k) {
+    const int base = first_slot(orient);
+    for (int k = base; k < base + kSlots; ++k) {
       StartRegion<S>& q = slot_[k];
-      if (q.start() == i && q.orient() == orient && q.level() <= j) {
+      if (q.start() == i && q.level() <= j) {
         used_[k] = ++clock_;
         return &q;
       }
@@ -337,7 +337,7 @@ class StartRegions {
 
   // A region started over at i (the orientation's least recently used).
   StartRegion<S>& take(const BandRegion<S>& r, std::uint32_t i, int orient) {
-    const int base = orient > 0 ? 0 : kSlots;
+    const int base = first_slot(orient);
     int k = base;
     for (int t = base + 1; t < base + kSlots; ++t)
       if (used_[t] < used_[k]) k = t;
@@ -347,6 +347,8 @@ class StartRegions {
   }
 
  private:
+  static int first_slot(int orient) { return orient > 0 ? 0 : kSlots; }
+
   StartRegion<S> slot_[2 * kSlots] = {};
   std::uint32_t used_[2 * kSlots] = {};
   std::uint32_t clock_ = 0;
